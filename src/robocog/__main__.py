@@ -1,0 +1,7 @@
+"""``python -m robocog`` is the ``robocog`` command."""
+
+import sys
+
+from robocog.cli import main
+
+sys.exit(main())

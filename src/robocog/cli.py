@@ -1,0 +1,70 @@
+"""The ``robocog`` command.
+
+Each subcommand lives in the package that owns it and is imported only when it is run,
+so that ``robocog nar`` starts without loading the planner or the plotting stack. A
+subcommand module provides ``configure(parser)`` to declare its arguments and
+``run(args) -> int`` to do the work.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import sys
+from collections.abc import Sequence
+
+#: name -> (module, one-line help)
+COMMANDS: dict[str, tuple[str, str]] = {
+    "demo": ("robocog.experiments.demo", "run the garbage-collection demo with both minds"),
+    "experiment": ("robocog.experiments.cli", "run one of the papers' case studies"),
+    "nar": ("robocog.nars.shell", "NARS shell speaking ONA's protocol on stdin/stdout"),
+    "agent": ("robocog.bdi.cli", "run an AgentSpeak (Jason) program until it is idle"),
+    "atomese": ("robocog.atomspace.cli", "load Atomese files and evaluate queries"),
+    "plan": ("robocog.planning.cli", "plan pick/place/stack/unstack tasks"),
+    "bridge": ("robocog.bridges.cli", "drive a real robot over ROS 2 or ROS 1"),
+}
+
+
+def _load(name: str):  # noqa: ANN202 - a module object
+    module_name = COMMANDS[name][0]
+    try:
+        return importlib.import_module(module_name)
+    except ModuleNotFoundError as exc:
+        if exc.name and module_name.startswith(exc.name):
+            raise SystemExit(
+                f"robocog {name}: this command is not available in this build"
+            ) from exc
+        raise
+
+
+def build_parser(argv: Sequence[str]) -> argparse.ArgumentParser:
+    """Build the top-level parser; only the chosen subcommand's module is imported."""
+    from robocog import __version__
+
+    parser = argparse.ArgumentParser(
+        prog="robocog",
+        description="A reasoning mind for robots: NARS, AgentSpeak and an AtomSpace planner.",
+    )
+    parser.add_argument("--version", action="version", version=f"robocog {__version__}")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND")
+    chosen = next((a for a in argv if not a.startswith("-")), None)
+    for name, (_module, help_text) in COMMANDS.items():
+        p = sub.add_parser(name, help=help_text, description=help_text)
+        if name == chosen:
+            _load(name).configure(p)
+    return parser
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Entry point of the ``robocog`` console script."""
+    argv = list(sys.argv[1:] if argv is None else argv)
+    parser = build_parser(argv)
+    args = parser.parse_args(argv)
+    if args.command is None:
+        parser.print_help()
+        return 2
+    return int(_load(args.command).run(args) or 0)
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,1 @@
+"""The papers' case studies as reproducible, seeded runs with reports."""

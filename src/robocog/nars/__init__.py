@@ -1,0 +1,6 @@
+"""Non-Axiomatic Reasoning System compatible with OpenNARS for Applications (ONA).
+
+Narsese terms, NAL truth functions, stamps, a bounded concept memory, declarative and
+sensorimotor inference, decisions, and ONA's shell protocol. Imports nothing from the
+robot side of robocog, so it can be used as a library by itself.
+"""
