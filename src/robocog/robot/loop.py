@@ -1,0 +1,100 @@
+"""The sense-decide-act loop that joins a Body and a Mind, and measures every cycle.
+
+One cycle: read the body's percepts, let the mind perceive and decide, execute each
+command on the body and hand its outcome back to the mind. The loop keeps the time the
+mind took (perceive + decide) and the time of the whole cycle, because the first is what
+a reasoner costs and the second is what the robot feels.
+"""
+
+from __future__ import annotations
+
+import statistics
+import time
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+from robocog.robot.commands import Command, Outcome
+from robocog.robot.protocols import Body, Mind
+
+
+def percentile(values: list[float], q: float) -> float:
+    """The q-th percentile (0..100) by linear interpolation; 0.0 for no values."""
+    if not values:
+        return 0.0
+    ordered = sorted(values)
+    k = (len(ordered) - 1) * q / 100.0
+    lo = int(k)
+    hi = min(lo + 1, len(ordered) - 1)
+    return ordered[lo] + (ordered[hi] - ordered[lo]) * (k - lo)
+
+
+@dataclass
+class CycleStats:
+    """Wall-clock figures of the cycles run so far, in seconds."""
+
+    reason: list[float] = field(default_factory=list)
+    cycle: list[float] = field(default_factory=list)
+
+    def summary(self) -> dict[str, float]:
+        """p50/p99/mean of the mind's share and of the whole cycle, in milliseconds."""
+        out: dict[str, float] = {"cycles": float(len(self.cycle))}
+        for name, values in (("reason", self.reason), ("cycle", self.cycle)):
+            out[f"{name}_p50_ms"] = percentile(values, 50) * 1e3
+            out[f"{name}_p99_ms"] = percentile(values, 99) * 1e3
+            out[f"{name}_mean_ms"] = statistics.fmean(values) * 1e3 if values else 0.0
+        return out
+
+
+@dataclass(frozen=True)
+class Step:
+    """What one cycle did: the commands executed and how each ended."""
+
+    actions: list[tuple[Command, Outcome]]
+    reason_seconds: float
+    cycle_seconds: float
+
+
+class Loop:
+    """Runs a mind on a body, one perception-reason-action cycle at a time."""
+
+    def __init__(self, body: Body, mind: Mind) -> None:
+        self.body = body
+        self.mind = mind
+        self.stats = CycleStats()
+        self.cycles = 0
+
+    def step(self) -> Step:
+        """Run one cycle and record its timing."""
+        start = time.perf_counter()
+        percepts = self.body.percepts()
+        self.mind.perceive(percepts)
+        commands = self.mind.decide()
+        reasoned = time.perf_counter()
+        actions: list[tuple[Command, Outcome]] = []
+        for command in commands:
+            outcome = self.body.execute(command)
+            actions.append((command, outcome))
+            self.mind.on_outcome(command, outcome)
+        end = time.perf_counter()
+        self.cycles += 1
+        self.stats.reason.append(reasoned - start)
+        self.stats.cycle.append(end - start)
+        return Step(actions, reasoned - start, end - start)
+
+    def run(
+        self,
+        max_cycles: int,
+        until: Callable[[], bool] | None = None,
+        on_step: Callable[[Step], None] | None = None,
+    ) -> int:
+        """Run at most ``max_cycles`` cycles, stopping early when ``until()`` is true.
+
+        Returns the number of cycles run.
+        """
+        ran = 0
+        while ran < max_cycles and not (until and until()):
+            step = self.step()
+            ran += 1
+            if on_step:
+                on_step(step)
+        return ran

@@ -1,0 +1,80 @@
+"""The loop wires a body to a mind: percepts in, commands out, outcomes back."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from robocog.robot import Body, Command, Forward, Mind, Obstacle, Outcome, Percept, Turn
+from robocog.robot.loop import Loop, percentile
+
+
+class Corridor:
+    """A body with a wall 1 m ahead: forward fails once it is reached."""
+
+    def __init__(self) -> None:
+        self.x = 0.0
+        self.clock = 0.0
+
+    def percepts(self) -> list[Percept]:
+        gap = 1.0 - self.x
+        return [Obstacle("front", gap) if gap < 2.0 else Obstacle("none", 2.0)]
+
+    def execute(self, command: Command) -> Outcome:
+        self.clock += 1.0
+        if isinstance(command, Forward):
+            if self.x + command.distance > 1.0:
+                return Outcome.failure("blocked")
+            self.x += command.distance
+        return Outcome.success()
+
+    def time(self) -> float:
+        return self.clock
+
+
+class Cautious:
+    """Goes forward while the front is clear beyond 0.5 m, else turns."""
+
+    def __init__(self) -> None:
+        self.gap = 2.0
+        self.outcomes: list[tuple[Command, Outcome]] = []
+
+    def perceive(self, percepts: Sequence[Percept]) -> None:
+        for p in percepts:
+            if isinstance(p, Obstacle):
+                self.gap = p.distance
+
+    def decide(self) -> list[Command]:
+        return [Forward(0.4)] if self.gap > 0.5 else [Turn(1.57)]
+
+    def on_outcome(self, command: Command, outcome: Outcome) -> None:
+        self.outcomes.append((command, outcome))
+
+
+def test_body_and_mind_satisfy_the_protocols() -> None:
+    assert isinstance(Corridor(), Body)
+    assert isinstance(Cautious(), Mind)
+
+
+def test_loop_runs_cycles_and_feeds_outcomes_back() -> None:
+    body, mind = Corridor(), Cautious()
+    loop = Loop(body, mind)
+    assert loop.run(5) == 5
+    kinds = [type(c).__name__ for c, _ in mind.outcomes]
+    assert kinds == ["Forward", "Forward", "Turn", "Turn", "Turn"]
+    assert abs(body.x - 0.8) < 1e-9
+    summary = loop.stats.summary()
+    assert summary["cycles"] == 5.0
+    assert summary["cycle_p99_ms"] >= summary["cycle_p50_ms"] >= 0.0
+
+
+def test_loop_stops_when_asked() -> None:
+    body, mind = Corridor(), Cautious()
+    loop = Loop(body, mind)
+    assert loop.run(100, until=lambda: body.x > 0.5) == 2
+
+
+def test_percentile_interpolates() -> None:
+    assert percentile([], 50) == 0.0
+    assert percentile([1.0, 2.0, 3.0, 4.0], 50) == 2.5
+    assert percentile([5.0], 99) == 5.0
+    assert percentile([0.0, 10.0], 90) == 9.0
