@@ -1,0 +1,128 @@
+"""Declarative workload: robocog's NARS against ONA 0.9.2 on the same generated taxonomy.
+
+A random tree of ``--statements`` inheritance links ``<child --> parent>`` is fed in
+top-down order, then ``--questions`` questions each ask for an ancestor ``--depth``
+links up (``<n17 --> n3>?``). Both reasoners run as child processes reading the same
+text on stdin (``robocog nar`` and ``NAR shell``), so wall time and peak resident memory
+are measured the same way (``wait4``). Prints both, the answers each found and the ratio.
+
+    python benchmarks/nars_core.py                        # 1,000 links, 100 questions
+    python benchmarks/nars_core.py --statements 10000 --depth 2 --capacity 30000
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import random
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+
+def taxonomy(n: int, questions: int, depth: int, seed: int) -> tuple[list[str], list[str]]:
+    """Statements of a random tree over ``n + 1`` nodes and questions ``depth`` links up."""
+    rng = random.Random(seed)
+    parent = [-1]
+    for i in range(1, n + 1):
+        parent.append(rng.randrange(max(0, i - 50), i))
+    statements = [f"<n{i} --> n{parent[i]}>." for i in range(1, n + 1)]
+
+    def up(i: int, k: int) -> int:
+        for _ in range(k):
+            i = parent[i]
+            if i < 0:
+                return -1
+        return i
+
+    deep = [i for i in range(1, n + 1) if up(i, depth) >= 0]
+    asked = rng.sample(deep, min(questions, len(deep)))
+    qs = [f"<n{i} --> n{up(i, depth)}>?" for i in asked]
+    return statements, qs
+
+
+def run(cmd: list[str], text: str, timeout: float) -> tuple[float, float, float, str]:
+    """Wall seconds, CPU seconds, peak RSS in MB and stdout of ``cmd`` fed ``text``."""
+    with tempfile.TemporaryFile("w+") as fin, tempfile.TemporaryFile("w+") as fout:
+        fin.write(text)
+        fin.seek(0)
+        t0 = time.perf_counter()
+        p = subprocess.Popen(cmd, stdin=fin, stdout=fout, stderr=subprocess.DEVNULL)
+        deadline = t0 + timeout
+        while True:
+            pid, status, usage = os.wait4(p.pid, os.WNOHANG)
+            if pid:
+                break
+            if time.perf_counter() > deadline:
+                p.kill()
+                pid, status, usage = os.wait4(p.pid, 0)
+                break
+            time.sleep(0.01)
+        p.returncode = os.waitstatus_to_exitcode(status)
+        wall = time.perf_counter() - t0
+        fout.seek(0)
+        cpu = usage.ru_utime + usage.ru_stime
+        return wall, cpu, usage.ru_maxrss / 1024.0, fout.read()
+
+
+def answers(out: str, questions: list[str]) -> int:
+    """Questions for which some ``Answer:`` line gave a belief (at once or later)."""
+    found = {
+        line.split(". ", 1)[0][len("Answer: ") :]
+        for line in out.splitlines()
+        if line.startswith("Answer:") and "None" not in line
+    }
+    return sum(1 for q in questions if q[:-1] in found)
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--statements", type=int, default=1000)
+    ap.add_argument("--questions", type=int, default=100)
+    ap.add_argument("--depth", type=int, default=2, help="links between asked node and answer")
+    ap.add_argument("--capacity", type=int, default=0, help="robocog concepts_max (0: default)")
+    ap.add_argument("--cycles", type=int, default=0, help="extra cycles before the questions")
+    ap.add_argument("--think", type=int, default=0, help="cycles after each question")
+    ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--timeout", type=float, default=600.0)
+    ap.add_argument("--no-ona", action="store_true", help="run robocog only")
+    args = ap.parse_args(argv)
+
+    statements, questions = taxonomy(args.statements, args.questions, args.depth, args.seed)
+    lines = ["*volume=0", *statements]
+    if args.cycles:
+        lines.append(str(args.cycles))
+    for q in questions:
+        lines += [q, str(args.think)] if args.think else [q]
+    text = "\n".join(lines) + "\n"
+
+    ours = [sys.executable, "-m", "robocog", "nar", "--quiet"]
+    if args.capacity:
+        ours += ["--set", f"concepts_max={args.capacity}"]
+    rows = []
+    w, cpu, rss, out = run(ours, text, args.timeout)
+    rows.append(("robocog", w, cpu, rss, answers(out, questions)))
+    ona = shutil.which("NAR")
+    if ona and not args.no_ona:
+        w, cpu, rss, out = run([ona, "shell"], text, args.timeout)
+        rows.append(("ONA 0.9.2", w, cpu, rss, answers(out, questions)))
+
+    print(
+        f"taxonomy: {args.statements} links, {len(questions)} questions {args.depth} links deep"
+        + (f", robocog concepts_max={args.capacity}" if args.capacity else "")
+    )
+    print(f"{'system':<10} {'wall s':>8} {'CPU s':>8} {'RSS MB':>8} {'answered':>9}")
+    for name, w, cpu, rss, n in rows:
+        print(f"{name:<10} {w:8.2f} {cpu:8.2f} {rss:8.1f} {n:5d}/{len(questions)}")
+    if len(rows) == 2:
+        print(
+            f"ratio ONA/robocog: wall {rows[1][1] / rows[0][1]:.2f}, "
+            f"CPU {rows[1][2] / rows[0][2]:.2f} (above 1: robocog faster)"
+        )
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

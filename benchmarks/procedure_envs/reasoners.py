@@ -1,0 +1,374 @@
+"""Reasoners that can drive a procedure-learning environment.
+
+A reasoner takes feeds (Narsese lines, one cycle each, and counts of free cycles) and
+returns the operations it executed while digesting them, in order. Three kinds:
+
+* :class:`OnaShell` runs ONA's ``NAR shell`` as a child process and talks to it through
+  pipes, configured the way ONA's own system tests configure the reasoner (operation
+  names and ids, babbling operations, babbling chance).
+* :class:`RobocogNar` wraps ``robocog.nars.NAR``; it refuses to start, with the reason,
+  when that engine cannot yet execute a learned procedure.
+* :class:`PolicyReasoner` answers each goal with a scripted policy, which gives the
+  environments' tests and the benchmark a perfect and a random baseline.
+"""
+
+from __future__ import annotations
+
+import os
+import queue
+import re
+import shutil
+import subprocess
+import threading
+from collections import deque
+from collections.abc import Callable, Sequence
+from typing import Any, Protocol
+
+from .base import Feed, ProcedureEnv
+
+_EXECUTED = re.compile(r"^(\^\S+) executed with args")
+
+
+class ReasonerUnavailable(RuntimeError):
+    """The reasoner cannot run here; the message says why."""
+
+
+class ReasonerError(RuntimeError):
+    """The reasoner failed during a run (died, timed out, rejected input)."""
+
+
+class Reasoner(Protocol):
+    """What the runner needs from a reasoner."""
+
+    name: str
+
+    def start(self, env: ProcedureEnv, seed: int) -> None:
+        """Prepare a fresh reasoner for ``env`` (operations, babbling, settings)."""
+        ...
+
+    def feed(self, feed: Feed) -> list[str]:
+        """Input the feed in order; return the operations executed meanwhile."""
+        ...
+
+    def close(self) -> None:
+        """Release the reasoner (end a child process)."""
+        ...
+
+
+def setup_commands(env: ProcedureEnv) -> list[str]:
+    """Shell commands that configure a reasoner as ONA's test configures it for ``env``.
+
+    The operations get ONA's ids in the test's order, babbling is limited to them (the
+    shell starts with ten operations registered), and the babbling chance is the test's.
+    """
+    commands = [f"*setopname {i} {op}" for i, op in enumerate(env.operations, start=1)]
+    commands += [f"*babblingops={len(env.operations)}", f"*motorbabbling={env.babbling_chance}"]
+    return commands + list(env.shell_setup)
+
+
+def ona_executable() -> list[str] | None:
+    """The command that starts ONA's binary, or None when ONA is not installed.
+
+    The ``ona`` wheel's ``NAR`` script is a Python wrapper around a binary; the binary
+    is started directly when it can be found, which saves a Python start-up per run.
+    """
+    try:
+        from ona.NAR import NARPKG_PATH  # type: ignore[import-not-found]
+
+        binary = os.path.join(NARPKG_PATH, "NARexe")
+        if os.access(binary, os.X_OK):
+            return [binary]
+    except Exception:  # noqa: BLE001 - any failure to import means "look on PATH"
+        pass
+    found = shutil.which("NAR")
+    return [found] if found else None
+
+
+class OnaShell:
+    """ONA's ``NAR shell`` driven through pipes, one child process per run.
+
+    ONA's stdout is a pipe here, so the child is started under ``stdbuf -oL`` to make it
+    line-buffered. Each feed is written in one go followed by a ``//sync N`` comment; the
+    reply is read (by a reader thread, with a timeout) up to ``Comment: sync N``, and the
+    ``^op executed with args`` lines in it are the executed operations. ``*volume=0``
+    keeps ONA from printing derivations, which would only cost time.
+    """
+
+    name = "ona-shell"
+
+    def __init__(self, timeout: float = 60.0, command: Sequence[str] | None = None) -> None:
+        self.timeout = timeout
+        self.command = list(command) if command else None
+        self._proc: subprocess.Popen[str] | None = None
+        self._lines: queue.Queue[str | None] = queue.Queue()
+        self._tail: deque[str] = deque(maxlen=20)
+        self._sync = 0
+        self._broken = False
+        self._reader: threading.Thread | None = None
+
+    @staticmethod
+    def unavailable_reason() -> str | None:
+        """None when ONA's binary is installed, else why the shell cannot run."""
+        if ona_executable() is None:
+            return "ONA is not installed (pip install ona==0.9.2 provides `NAR`)"
+        return None
+
+    def start(self, env: ProcedureEnv, seed: int) -> None:
+        """Start ``NAR shell`` and configure it as ONA's test configures the reasoner.
+
+        ONA's shell always seeds its own random generator with 666; ``seed`` only
+        affects the environment.
+        """
+        self.close()
+        command = self.command or ona_executable()
+        if command is None:
+            raise ReasonerUnavailable(self.unavailable_reason() or "ONA not found")
+        if shutil.which("stdbuf"):
+            command = ["stdbuf", "-oL", *command]
+        self._proc = subprocess.Popen(
+            [*command, "shell"],
+            stdin=subprocess.PIPE,
+            stdout=subprocess.PIPE,
+            stderr=subprocess.STDOUT,
+            text=True,
+        )
+        self._lines = queue.Queue()
+        self._tail.clear()
+        self._broken = False
+        self._reader = threading.Thread(
+            target=self._read, args=(self._proc, self._lines), daemon=True
+        )
+        self._reader.start()
+        self._exchange(["*volume=0", *setup_commands(env)])
+
+    def feed(self, feed: Feed) -> list[str]:
+        """Send the feed and return the operations ONA executed while processing it."""
+        lines = []
+        for item in feed:
+            if isinstance(item, int):
+                if item > 0:
+                    lines.append(str(item))
+            elif item.strip():
+                lines.append(item.strip())
+        return self._exchange(lines) if lines else []
+
+    def close(self) -> None:
+        """End the child process: politely with ``quit``, by force if it misbehaved."""
+        proc, self._proc = self._proc, None
+        if proc is None:
+            return
+        try:
+            if self._broken:
+                proc.kill()
+            elif proc.stdin and not proc.stdin.closed:
+                proc.stdin.write("quit\n")
+                proc.stdin.close()
+            proc.wait(timeout=5)
+        except (OSError, subprocess.TimeoutExpired):
+            proc.kill()
+            proc.wait()
+        if self._reader is not None:
+            self._reader.join(timeout=5)  # it ends at the child's end of output
+        if proc.stdout and (self._reader is None or not self._reader.is_alive()):
+            proc.stdout.close()
+
+    @staticmethod
+    def _read(proc: subprocess.Popen[str], sink: queue.Queue[str | None]) -> None:
+        """Copy the child's output lines into a queue; None marks its end."""
+        assert proc.stdout is not None
+        try:
+            for line in proc.stdout:
+                sink.put(line.rstrip("\n"))
+        except (OSError, ValueError):
+            pass  # the pipe was closed under us; the end marker follows
+        sink.put(None)
+
+    def _exchange(self, lines: list[str]) -> list[str]:
+        """Write lines plus a sync marker, read the reply up to the marker."""
+        proc = self._proc
+        if proc is None or proc.stdin is None:
+            raise ReasonerError("ONA's shell is not running")
+        self._sync += 1
+        marker = f"sync {self._sync}"
+        try:
+            proc.stdin.write("\n".join([*lines, "//" + marker]) + "\n")
+            proc.stdin.flush()
+        except OSError as exc:
+            raise ReasonerError(self._failure(f"ONA's shell closed its input ({exc})")) from exc
+        executed: list[str] = []
+        while True:
+            try:
+                line = self._lines.get(timeout=self.timeout)
+            except queue.Empty:
+                raise ReasonerError(self._failure(f"no reply within {self.timeout} s")) from None
+            if line is None:
+                raise ReasonerError(self._failure("ONA's shell exited"))
+            self._tail.append(line)
+            if line == "Comment: " + marker:
+                return executed
+            found = _EXECUTED.match(line)
+            if found:
+                executed.append(found.group(1))
+            elif line.startswith("Test failed"):
+                raise ReasonerError(self._failure("ONA rejected an input"))
+
+    def _failure(self, what: str) -> str:
+        """An error message with the last lines ONA printed, to see what went wrong.
+
+        A shell that failed once is not trusted again: it is killed on close.
+        """
+        self._broken = True
+        return what + "; last output:\n  " + "\n  ".join(self._tail)
+
+
+def _set_first(obj: Any, names: Sequence[str], value: Any) -> bool:
+    """Set the first of ``names`` that ``obj`` has; report whether one was set."""
+    for name in names:
+        if obj is not None and hasattr(obj, name):
+            setattr(obj, name, value)
+            return True
+    return False
+
+
+def _clock(nar: Any) -> int | None:
+    """The NAR's current time, whatever the attribute is called, or None."""
+    for name in ("current_time", "time", "currentTime"):
+        value = getattr(nar, name, None)
+        if isinstance(value, int):
+            return value
+    return None
+
+
+class RobocogNar:
+    """robocog's own NAR, configured with the same shell commands as :class:`OnaShell`.
+
+    ``seed`` seeds the NAR's random generator (motor babbling).
+
+    ``add_input`` is expected to cost one cycle per belief or goal, as ONA's shell does;
+    when the engine's clock shows it does not, one cycle is run after each input.
+    """
+
+    name = "robocog"
+    _probe: str | None | bool = False  # False = not probed yet
+    _needs_cycle = False  # add_input does not advance the clock
+
+    def __init__(self, seed: int = 666) -> None:
+        self.seed = seed
+        self.nar: Any = None
+        self._executed: list[str] = []
+        self._cycle_after_input = False
+
+    @classmethod
+    def unavailable_reason(cls) -> str | None:
+        """None when robocog's NAR learns and executes procedures, else the reason.
+
+        The probe is the smallest sensorimotor task: given ``<(a &/ ^left) =/> g>``,
+        the event ``a`` and the goal ``g``, the reasoner must execute ``^left``.
+        """
+        if cls._probe is False:
+            cls._probe = cls._run_probe()
+        return cls._probe  # type: ignore[return-value]
+
+    @classmethod
+    def _run_probe(cls) -> str | None:
+        try:
+            from robocog.nars import NAR  # type: ignore[attr-defined]
+        except ImportError as exc:
+            return f"robocog.nars has no NAR yet ({exc})"
+        fired: list[object] = []
+        try:
+            nar = NAR(seed=1)
+            nar.register_operation("^left", lambda args=None: fired.append(args))
+            _set_first(getattr(nar, "config", None), ("motor_babbling_chance",), 0.0)
+            nar.add_input("<(a &/ ^left) =/> g>.")
+            before = _clock(nar)
+            nar.add_input("a. :|:")
+            cls._needs_cycle = before is not None and _clock(nar) == before
+            nar.add_input("g! :|:")
+            nar.cycles(5)
+        except NotImplementedError as exc:
+            return f"robocog.nars lacks the sensorimotor half ({exc or 'not implemented'})"
+        except Exception as exc:  # noqa: BLE001 - any failure means the engine is not ready
+            return f"robocog.nars failed the procedure probe ({type(exc).__name__}: {exc})"
+        if not fired:
+            return "robocog.nars did not execute ^left for <(a &/ ^left) =/> g>, a. :|:, g! :|:"
+        return None
+
+    def start(self, env: ProcedureEnv, seed: int) -> None:
+        """A fresh NAR with the environment's operations and babbling chance.
+
+        The NAR's own seed is the one given at construction (666 by default, the seed
+        ONA's shell always uses), not the world's ``seed``: both reasoners then draw the
+        same random numbers, and in the deterministic Cartpole an exact port of ONA
+        reproduces ONA's run count for count.
+        """
+        reason = self.unavailable_reason()
+        if reason:
+            raise ReasonerUnavailable(reason)
+        from robocog.nars import NAR  # type: ignore[attr-defined]
+
+        self.nar = NAR(seed=self.seed)
+        self._executed = []
+        try:
+            for command in setup_commands(env):
+                self.nar.add_input(command)
+            for op in env.operations:
+                self.nar.register_operation(op, self._recorder(op))
+        except Exception as exc:  # noqa: BLE001 - report any refusal as a reasoner failure
+            raise ReasonerError(f"robocog's NAR refused the set-up: {exc}") from exc
+        self._cycle_after_input = self._needs_cycle
+
+    def _recorder(self, op: str) -> Callable[..., None]:
+        def record(args: object = None) -> None:
+            self._executed.append(op)
+
+        return record
+
+    def feed(self, feed: Feed) -> list[str]:
+        """Input the lines and run the cycles; return the operations executed."""
+        self._executed = []
+        for item in feed:
+            if isinstance(item, int):
+                if item > 0:
+                    self.nar.cycles(item)
+            else:
+                self.nar.add_input(item)
+                if self._cycle_after_input:
+                    self.nar.cycles(1)
+        return self._executed
+
+    def close(self) -> None:
+        """Drop the NAR."""
+        self.nar = None
+
+
+class PolicyReasoner:
+    """Answers every goal input with ``policy(env)``: an operation name or None.
+
+    It sees the world itself rather than the events, so it is a yardstick, not a
+    learner: a perfect policy shows what the rules allow, a random one what chance gives.
+    """
+
+    def __init__(self, policy: Callable[[ProcedureEnv], str | None], name: str = "policy") -> None:
+        self.policy = policy
+        self.name = name
+        self.env: ProcedureEnv | None = None
+
+    def start(self, env: ProcedureEnv, seed: int) -> None:
+        """Remember the world the policy looks at."""
+        self.env = env
+
+    def feed(self, feed: Feed) -> list[str]:
+        """One decision per goal line in the feed."""
+        assert self.env is not None, "start() first"
+        executed = []
+        for item in feed:
+            if isinstance(item, str) and item.rstrip().endswith(("! :|:", "!")):
+                op = self.policy(self.env)
+                if op:
+                    executed.append(op)
+        return executed
+
+    def close(self) -> None:
+        """Nothing to release."""
+        self.env = None

@@ -1,0 +1,61 @@
+"""Run one environment with one reasoner for a number of steps, timing the whole run."""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
+
+from .base import ProcedureEnv
+
+if TYPE_CHECKING:
+    from .reasoners import Reasoner
+
+
+@dataclass
+class RunResult:
+    """Figures of one run: the environment's metrics, wall time, operations executed."""
+
+    env: str
+    reasoner: str
+    steps: int
+    seed: int
+    metrics: dict[str, float]
+    wall_time: float
+    operations: dict[str, int] = field(default_factory=dict)
+
+    @property
+    def ratio(self) -> float:
+        """The environment's headline figure (see each environment's ``metrics``)."""
+        return float(self.metrics["ratio"])
+
+
+def run(
+    env: ProcedureEnv,
+    reasoner: Reasoner,
+    steps: int,
+    seed: int = 0,
+    on_step: Callable[[int], None] | None = None,
+) -> RunResult:
+    """Reset ``env`` with ``seed``, drive it for ``steps`` steps, and close the reasoner.
+
+    The wall time covers the reasoner's start-up too, as a run of ONA's own test does.
+    ``on_step(k)`` is called after step k (for a progress bar).
+    """
+    env.reset(seed)
+    counts = dict.fromkeys(env.operations, 0)
+    started = time.perf_counter()
+    try:
+        reasoner.start(env, seed)
+        for k in range(1, steps + 1):
+            for feed in env.step():
+                for op in reasoner.feed(feed):
+                    counts[op] = counts.get(op, 0) + 1
+                    env.execute(op)
+            if on_step is not None:
+                on_step(k)
+    finally:
+        reasoner.close()
+    wall = time.perf_counter() - started
+    return RunResult(env.name, reasoner.name, steps, seed, env.metrics(), wall, counts)

@@ -1,0 +1,114 @@
+"""The NARS mind's perception-reason-action cycle on the garbage task, beside ONA's.
+
+Runs NarsMind on seed 000's garbage field through ``robocog.robot.loop.Loop`` and
+reports the p50 and p99 of the mind's share of each cycle (perceive + decide, which is
+what the reasoner costs) and of the whole cycle. In the same run the same mind drives
+the same fields with ONA 0.9.2 (PyPI ``ona``, ``NAR shell`` as a child process) as its
+reasoner, so the ratio compares the reasoners under the same encodings, goals and
+world; ONA's figures include the pipe to its process. Both minds' success rates are
+printed too, since they come out of the same runs.
+
+ONA is driven through ``robocog.minds.ona_shell`` (which gives it the first background
+rule with the brackets its reader needs; see there).
+
+    python benchmarks/robot_loop.py                 # 5 missions each
+    python benchmarks/robot_loop.py --runs 30 --json robot_loop.json
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+import time
+from pathlib import Path
+
+from robocog.minds.nars_mind import NarsMind, NarsSettings, probe
+from robocog.minds.ona_shell import OnaShell, ona_knowledge, unavailable
+from robocog.robot.loop import Loop, percentile
+from robocog.worlds.garbage import GarbageConfig, GarbageField
+
+
+def measure(name: str, make, runs: int, seed: int, config: GarbageConfig) -> dict:  # noqa: ANN001
+    """Missions of one reasoner: cycle-time percentiles over all cycles, and the rate."""
+    reason: list[float] = []
+    cycle: list[float] = []
+    collected = placed = 0
+    start = time.perf_counter()
+    for i in range(runs):
+        world = GarbageField(config, seed=seed + i)
+        mind, close = make(world, seed + i)
+        loop = Loop(world, mind)
+        loop.run(int(config.mission_time / config.frame_seconds) + 10, until=lambda w=world: w.done)
+        close()
+        reason += loop.stats.reason
+        cycle += loop.stats.cycle
+        collected += world.collected()
+        placed += len(world.objects())
+    return {
+        "reasoner": name,
+        "runs": runs,
+        "cycles": len(cycle),
+        "reason_p50_ms": percentile(reason, 50) * 1e3,
+        "reason_p99_ms": percentile(reason, 99) * 1e3,
+        "cycle_p50_ms": percentile(cycle, 50) * 1e3,
+        "cycle_p99_ms": percentile(cycle, 99) * 1e3,
+        "success_rate": collected / placed if placed else None,
+        "wall_seconds": time.perf_counter() - start,
+    }
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--runs", type=int, default=5, help="missions per reasoner")
+    parser.add_argument("--seed", type=int, default=0)
+    parser.add_argument("--light", default="sunny", choices=("sunny", "cloudy", "evening"))
+    parser.add_argument("--json", type=Path, help="write the figures as JSON")
+    args = parser.parse_args(argv)
+    config = GarbageConfig(light=args.light)
+    results = []
+
+    why = probe()
+    if why:
+        print(f"robocog NARS: cannot run yet - {why}")
+    else:
+
+        def make_robocog(world: GarbageField, seed: int):  # noqa: ANN202
+            return NarsMind(world.route, NarsSettings(seed=seed)), lambda: None
+
+        results.append(measure("robocog", make_robocog, args.runs, args.seed, config))
+
+    why_not_ona = unavailable()
+    if why_not_ona is None:
+
+        def make_ona(world: GarbageField, seed: int):  # noqa: ANN202
+            shell = OnaShell()
+            mind = NarsMind(world.route, NarsSettings(seed=seed), ona_knowledge(), nar=shell)  # type: ignore[arg-type]
+            return mind, shell.close
+
+        results.append(measure("ONA 0.9.2", make_ona, args.runs, args.seed, config))
+    else:
+        print(f"ONA: {why_not_ona}")
+
+    print(f"garbage field, {args.light} light, {args.runs} missions per reasoner")
+    print(
+        f"{'reasoner':<12}{'cycles':>8}{'reason p50':>12}{'reason p99':>12}{'cycle p99':>11}{'success':>9}"
+    )
+    for r in results:
+        rate = "-" if r["success_rate"] is None else f"{100 * r['success_rate']:.0f}%"
+        print(
+            f"{r['reasoner']:<12}{r['cycles']:>8}{r['reason_p50_ms']:>10.2f}ms"
+            f"{r['reason_p99_ms']:>10.2f}ms{r['cycle_p99_ms']:>9.2f}ms{rate:>9}"
+        )
+    if len(results) == 2:
+        ratio = results[1]["reason_p99_ms"] / max(1e-9, results[0]["reason_p99_ms"])
+        print(f"p99 ratio ONA / robocog: {ratio:.2f} (above 1: robocog is faster)")
+        goal = "met" if results[0]["reason_p99_ms"] < 50 else "not met"
+        print(f"goal p99 < 50 ms: {goal}")
+    if args.json:
+        args.json.write_text(json.dumps(results, indent=2) + "\n")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,214 @@
+"""Executing and evaluating atoms: queries, rewrites and grounded functions.
+
+``execute`` runs what OpenCog's ``cog-execute!`` runs, with OpenCog's 2021 results:
+
+- GetLink: a SetLink of the groundings (the atom itself for one variable, a ListLink
+  in declaration order for several, ``(SetLink (ListLink))`` for a satisfied pattern
+  without variables);
+- BindLink and QueryLink: the rewrite is instantiated for every grounding and the
+  SetLink of the rewrites is returned;
+- MeetLink: a QueueValue of the groundings;
+- SatisfactionLink: ``(stv 1 1)`` if a grounding exists, else ``(stv 0 1)``;
+- ExecutionOutputLink: the registered function is called with the space and the
+  arguments (the members of the ListLink) and its result is added to the space.
+
+Grounded names are ``py:NAME``; ``scm:NAME`` (the thesis's spelling) is read the same
+way. Only functions registered from Python are ever called: an unregistered name is an
+error, never an import or an eval. The result sets are returned, not added to the space,
+so that running a query does not change the state it was asked about.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
+
+from robocog.atomspace import types as _t
+from robocog.atomspace.atoms import Atom, Link, Node
+from robocog.atomspace.matcher import PatternError, compile_pattern, is_variable_decl, substitute
+from robocog.atomspace.values import FALSE_TV, TRUE_TV, QueueValue, TruthValue, Value
+
+if TYPE_CHECKING:
+    from robocog.atomspace.space import AtomSpace
+
+
+class GroundedError(RuntimeError):
+    """A grounded name that is not registered, or malformed."""
+
+
+_PREFIXES = ("py:", "scm:")
+
+
+def function_name(grounded: str) -> str:
+    """The registry name in ``"py:NAME"`` (or ``"scm: NAME"``)."""
+    for p in _PREFIXES:
+        if grounded.startswith(p):
+            name = grounded[len(p) :].strip()
+            if name:
+                return name
+    raise GroundedError(
+        f"grounded name {grounded!r} must be 'py:NAME' naming a registered Python function"
+    )
+
+
+def call_grounded(space: AtomSpace, node: Atom, args: tuple[Atom, ...]) -> Any:
+    """Call the function a GroundedSchemaNode/GroundedPredicateNode names."""
+    name = function_name(node[1])
+    try:
+        fn = space.lookup_function(name)
+    except KeyError:
+        raise GroundedError(f"no Python function is registered under {name!r}") from None
+    return fn(space, *args)
+
+
+def _arguments(args: Atom) -> tuple[Atom, ...]:
+    return args[1] if args[0] == "ListLink" else (args,)
+
+
+def _executable(atom: Atom) -> bool:
+    return atom[0] == "ExecutionOutputLink" or atom[0] in _t.QUERY_TYPES
+
+
+def execute(space: AtomSpace, atom: Atom) -> Any:
+    """Execute ``atom`` in ``space`` (see the module doc for what each type returns)."""
+    t = atom[0]
+    if t in _t.QUERY_TYPES:
+        return run_query(space, atom)
+    if t == "ExecutionOutputLink":
+        return _execution_output(space, atom)
+    return instantiate(space, atom)
+
+
+def _execution_output(space: AtomSpace, atom: Atom) -> Any:
+    out = atom[1]
+    if len(out) != 2 or out[0][0] != "GroundedSchemaNode":
+        raise GroundedError(f"ExecutionOutputLink needs a GroundedSchemaNode and arguments: {atom}")
+    args = tuple(execute(space, a) if _executable(a) else a for a in _arguments(out[1]))
+    result = call_grounded(space, out[0], args)
+    if isinstance(result, Atom):
+        return space.add(result)
+    if result is None or isinstance(result, Value):
+        return result
+    raise GroundedError(f"{out[0][1]} returned {result!r}, not an atom or a Value")
+
+
+def instantiate(space: AtomSpace, atom: Atom) -> Any:
+    """Add a (grounded) rewrite to the space, running ExecutionOutputLinks inside it."""
+    if atom.__class__ is Node:
+        return space.add(atom)
+    if atom[0] == "ExecutionOutputLink":
+        return _execution_output(space, atom)
+    if atom[0] in _t.QUERY_TYPES:
+        return space.add(atom)
+    kids = []
+    for a in atom[1]:
+        r = instantiate(space, a)
+        if not isinstance(r, Atom):
+            raise GroundedError(f"a rewrite inside {atom[0]} produced {r!r}, not an atom")
+        kids.append(r)
+    return space.add(Link(atom[0], *kids))
+
+
+def _split(link: Atom) -> tuple[Atom | None, Atom, Atom | None]:
+    """(declaration, body, rewrite) of a query link."""
+    t, out = link[0], link[1]
+    if t in ("BindLink", "QueryLink"):
+        if len(out) == 2:
+            return None, out[0], out[1]
+        if len(out) == 3 and is_variable_decl(out[0]):
+            return out[0], out[1], out[2]
+    else:
+        if len(out) == 1:
+            return None, out[0], None
+        if len(out) == 2 and is_variable_decl(out[0]):
+            return out[0], out[1], None
+    raise PatternError(
+        f"malformed {t}: expected [variables] body{' rewrite' if t in ('BindLink', 'QueryLink') else ''}"
+    )
+
+
+def grounding_atom(variables: list[Atom], b: dict[Atom, Atom]) -> Atom:
+    """One grounding as OpenCog returns it: the atom, or a ListLink for several."""
+    if len(variables) == 1:
+        return b[variables[0]]
+    return Link("ListLink", *(b[v] for v in variables))
+
+
+def run_query(space: AtomSpace, link: Atom) -> Any:
+    """Run a GetLink, BindLink, QueryLink, MeetLink or SatisfactionLink."""
+    decl, body, rewrite = _split(link)
+    pattern = compile_pattern(body, decl)
+    t = link[0]
+    if t == "SatisfactionLink":
+        return TRUE_TV if pattern.groundings(space, limit=1) else FALSE_TV
+    found = pattern.groundings(space)
+    if t == "GetLink":
+        return Link("SetLink", *(grounding_atom(pattern.variables, b) for b in found))
+    if t == "MeetLink":
+        return QueueValue(grounding_atom(pattern.variables, b) for b in found)
+    results: list[Atom] = []
+    seen: set[Atom] = set()
+    assert rewrite is not None
+    for b in found:
+        r = instantiate(space, substitute(rewrite, b))
+        if isinstance(r, Atom) and r not in seen:
+            seen.add(r)
+            results.append(r)
+    return Link("SetLink", *results)
+
+
+def _number(atom: Atom) -> float:
+    if atom[0] != "NumberNode":
+        raise PatternError(f"not a number: {atom}")
+    try:
+        return float(atom[1].split()[0])
+    except (ValueError, IndexError):
+        raise PatternError(f"not a number: {atom}") from None
+
+
+def evaluate(space: AtomSpace, atom: Atom) -> TruthValue:
+    """The truth value of an evaluatable atom (crisp for the logical connectives)."""
+    t = atom[0]
+    out = atom[1]
+    if t in ("EqualLink", "IdenticalLink"):
+        vals = [execute(space, a) if t == "EqualLink" and _executable(a) else a for a in out]
+        return TRUE_TV if all(v == vals[0] for v in vals[1:]) else FALSE_TV
+    if t == "NotLink":
+        if len(out) != 1:
+            raise PatternError("NotLink takes one atom")
+        return FALSE_TV if evaluate(space, out[0]).is_true() else TRUE_TV
+    if t == "AndLink":
+        return TRUE_TV if all(evaluate(space, a).is_true() for a in out) else FALSE_TV
+    if t == "OrLink":
+        return TRUE_TV if any(evaluate(space, a).is_true() for a in out) else FALSE_TV
+    if t == "PresentLink":
+        return TRUE_TV if all(a in space for a in out) else FALSE_TV
+    if t == "AbsentLink":
+        return FALSE_TV if any(a in space for a in out) else TRUE_TV
+    if t == "GreaterThanLink":
+        if len(out) != 2:
+            raise PatternError("GreaterThanLink takes two numbers")
+        x, y = (execute(space, a) if _executable(a) else a for a in out)
+        return TRUE_TV if _number(x) > _number(y) else FALSE_TV
+    if t == "SatisfactionLink":
+        return run_query(space, atom)
+    if t == "EvaluationLink" and out and out[0][0] == "GroundedPredicateNode":
+        args = _arguments(out[1]) if len(out) > 1 else ()
+        r = call_grounded(space, out[0], args)
+        if isinstance(r, TruthValue):
+            return r
+        if isinstance(r, bool):
+            return TRUE_TV if r else FALSE_TV
+        raise GroundedError(f"{out[0][1]} returned {r!r}, not a truth value")
+    if t == "EvaluationLink" and out and out[0][0] == "DefinedPredicateNode":
+        for d in space.incoming(out[0], "DefineLink"):
+            if d[1][0] == out[0]:
+                return evaluate(space, d[1][1])
+        raise PatternError(f"{out[0]} is not defined")
+    if atom[0] == "DefinedPredicateNode":
+        for d in space.incoming(atom, "DefineLink"):
+            if d[1][0] == atom:
+                return evaluate(space, d[1][1])
+        raise PatternError(f"{atom} is not defined")
+    if atom in space:
+        return space.get_tv(atom)
+    return FALSE_TV

@@ -1,0 +1,796 @@
+"""The pattern matcher: find every grounding of a pattern's variables in an AtomSpace.
+
+A pattern is compiled once (and cached by the pattern atom) into alternatives, each a
+conjunction of three kinds of clauses, as OpenCog's query engine sorts them:
+
+- mandatory clauses, terms that must be present (PresentLink members, and any
+  non-evaluatable term under the AndLink: the implicit AND of OpenCog);
+- absent clauses (AbsentLink, or NotLink over a non-evaluatable term), which must have
+  no grounding;
+- evaluatable clauses (EqualLink, IdenticalLink, NotLink, GreaterThanLink, an
+  EvaluationLink with a GroundedPredicateNode, nested And/Or of these) that must
+  evaluate to true once their variables are bound.
+
+OrLink and ChoiceLink of clauses split the pattern into alternatives whose groundings
+are united. The search binds mandatory clauses one at a time, always taking next the
+clause with the fewest candidates: a clause whose variables are all bound is a single
+membership test; otherwise the candidates are found by walking up the incoming sets from
+its rarest constant or bound atom (type and position checked at every step), so any
+bound argument is found through the index, never by a scan. Evaluatable and absent
+clauses are checked as soon as their variables are bound, which prunes early.
+Unordered links (SetLink, AndLink, EqualLink, ...) are matched in every order.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable
+from typing import TYPE_CHECKING
+
+from robocog.atomspace import types as _t
+from robocog.atomspace.atoms import Atom, Link, Node, variables_of
+
+if TYPE_CHECKING:
+    from robocog.atomspace.space import AtomSpace
+
+Bindings = dict[Atom, Atom]
+
+
+class PatternError(ValueError):
+    """A pattern the matcher cannot run (bad variable declaration, unused variable)."""
+
+
+# ---------------------------------------------------------------------- terms
+_CONST, _VAR, _LINK, _ULINK = 0, 1, 2, 3
+
+
+class _Term:
+    """A compiled pattern term."""
+
+    __slots__ = ("kind", "atom", "type", "kids", "arity", "allowed", "multi", "fn")
+
+    def __init__(self, kind: int, atom: Atom) -> None:
+        self.kind = kind
+        self.atom = atom
+        self.type = atom[0]
+        self.kids: tuple[_Term, ...] = ()
+        self.arity = 0
+        self.allowed: frozenset[str] | None = None
+        self.multi = False  # may yield more than one binding (unordered with variables)
+        self.fn: Callable[[Atom, Bindings], Bindings | None] | None = None
+
+    def seal(self) -> _Term:
+        """Build the matching closure of a term that yields at most one binding."""
+        if not self.multi:
+            self.fn = _closure(self)
+        return self
+
+
+def _closure(t: _Term) -> Callable[[Atom, Bindings], Bindings | None]:
+    """A function matching one atom against term ``t`` (specialised by its shape, so
+    the matcher's inner loop does no dispatch)."""
+    if t.kind == _CONST:
+        c = t.atom
+
+        def const(a: Atom, b: Bindings) -> Bindings | None:
+            return b if (a is c or a == c) else None
+
+        return const
+    if t.kind == _VAR:
+        var, allowed = t.atom, t.allowed
+
+        def variable(a: Atom, b: Bindings) -> Bindings | None:
+            v = b.get(var)
+            if v is not None:
+                return b if (v is a or v == a) else None
+            if allowed is not None and a[0] not in allowed:
+                return None
+            nb = b.copy()
+            nb[var] = a
+            return nb
+
+        return variable
+    typ, n = t.type, t.arity
+    fns = tuple(k.fn for k in t.kids)
+    if n == 1:
+        (f0,) = fns
+
+        def link1(a: Atom, b: Bindings) -> Bindings | None:
+            if a[0] != typ or a.__class__ is not Link:
+                return None
+            out = a[1]
+            if len(out) != 1:
+                return None
+            return f0(out[0], b)
+
+        return link1
+    if n == 2:
+        f0, f1 = fns
+
+        def link2(a: Atom, b: Bindings) -> Bindings | None:
+            if a[0] != typ or a.__class__ is not Link:
+                return None
+            out = a[1]
+            if len(out) != 2:
+                return None
+            b2 = f0(out[0], b)
+            return None if b2 is None else f1(out[1], b2)
+
+        return link2
+
+    def linkn(a: Atom, b: Bindings) -> Bindings | None:
+        if a[0] != typ or a.__class__ is not Link:
+            return None
+        out = a[1]
+        if len(out) != n:
+            return None
+        for f, x in zip(fns, out):  # noqa: B905 - lengths checked above
+            b = f(x, b)  # type: ignore[assignment]
+            if b is None:
+                return None
+        return b
+
+    return linkn
+
+
+def _has_var_in(atom: Atom, varset: frozenset[Atom]) -> bool:
+    if atom.__class__ is Node:
+        return atom in varset
+    return any(_has_var_in(a, varset) for a in atom[1])
+
+
+def _bind(t: _Term, a: Atom, b: Bindings) -> Bindings | None:
+    v = b.get(t.atom)
+    if v is not None:
+        return b if (v is a or v == a) else None
+    if t.allowed is not None and a[0] not in t.allowed:
+        return None
+    nb = b.copy()
+    nb[t.atom] = a
+    return nb
+
+
+def _match1(t: _Term, a: Atom, b: Bindings) -> Bindings | None:
+    """Match a term that yields at most one binding."""
+    return t.fn(a, b)  # type: ignore[misc]
+
+
+def match(t: _Term, a: Atom, b: Bindings) -> list[Bindings]:
+    """Every extension of ``b`` under which term ``t`` equals atom ``a``."""
+    if not t.multi:
+        r = _match1(t, a, b)
+        return [] if r is None else [r]
+    if a.__class__ is not Link or a[0] != t.type or len(a[1]) != t.arity:
+        return []
+    if t.kind == _LINK:
+        bs = [b]
+        for kt, x in zip(t.kids, a[1], strict=True):
+            bs = [b2 for b1 in bs for b2 in match(kt, x, b1)]
+            if not bs:
+                return []
+        return bs
+    # unordered: give each pattern term a distinct outgoing atom, in every way
+    results: list[Bindings] = []
+    kids = sorted(t.kids, key=lambda k: k.kind != _CONST)
+    _match_unordered(kids, 0, list(a[1]), [False] * len(a[1]), b, results)
+    return results
+
+
+def _match_unordered(
+    kids: list[_Term],
+    i: int,
+    out: list[Atom],
+    used: list[bool],
+    b: Bindings,
+    results: list[Bindings],
+) -> None:
+    if i == len(kids):
+        results.append(b)
+        return
+    kt = kids[i]
+    tried: set[Atom] = set()
+    for j, x in enumerate(out):
+        if used[j] or x in tried:
+            continue
+        tried.add(x)  # equal atoms in a set give the same groundings
+        for b2 in match(kt, x, b):
+            used[j] = True
+            _match_unordered(kids, i + 1, out, used, b2, results)
+            used[j] = False
+
+
+def substitute(atom: Atom, b: Bindings) -> Atom:
+    """``atom`` with every bound variable replaced by its grounding."""
+    if atom.__class__ is Node:
+        return b.get(atom, atom)
+    if atom[0] in _t.QUERY_TYPES:
+        return atom
+    out = atom[1]
+    new = tuple([substitute(x, b) for x in out])
+    if all(x is y for x, y in zip(new, out, strict=True)):
+        return atom
+    if atom[0] in _t.UNORDERED:
+        new = tuple(sorted(new))
+    return tuple.__new__(Link, (atom[0], new))
+
+
+# ---------------------------------------------------------------------- clauses
+class _Clause:
+    """A mandatory or absent clause: its term, variables and index anchors."""
+
+    __slots__ = ("atom", "term", "vars", "anchors", "root_type", "ground")
+
+    def __init__(self, atom: Atom, varset: frozenset[Atom], allowed: dict) -> None:
+        self.atom = atom
+        found: set[Atom] = set()
+        # anchors: (is_var, atom, path) with path = ((link type, position|None), ...)
+        # from the anchor's parent up to the clause root
+        self.anchors: list[tuple[bool, Atom, tuple[tuple[str, int | None], ...]]] = []
+        self.term = _compile(atom, varset, allowed, found, self.anchors, None)
+        self.vars = frozenset(found)
+        self.ground = not found
+        self.root_type = atom[0]
+
+
+def _compile(
+    atom: Atom,
+    varset: frozenset[Atom],
+    allowed: dict,
+    found: set[Atom],
+    anchors: list | None,
+    up: tuple | None,
+) -> _Term:
+    """Compile a term in one pass, collecting its variables and (if asked) anchors."""
+    if atom.__class__ is Node:
+        if atom in varset:
+            found.add(atom)
+            t = _Term(_VAR, atom)
+            t.allowed = allowed.get(atom)
+            if anchors is not None and up is not None:
+                anchors.append((True, atom, up))
+            return t.seal()
+        if anchors is not None and up is not None:
+            anchors.append((False, atom, up))
+        return _Term(_CONST, atom).seal()
+    unordered = atom[0] in _t.UNORDERED
+    mark = len(anchors) if anchors is not None else 0
+    before = len(found)
+    kids = []
+    for i, a in enumerate(atom[1]):
+        step = ((atom[0], None if unordered else i),) + (up or ())
+        kids.append(_compile(a, varset, allowed, found, anchors, step))
+    if len(found) == before and all(k.kind == _CONST for k in kids):
+        # a ground subterm: one anchor for the whole of it
+        if anchors is not None:
+            del anchors[mark:]
+            if up is not None:
+                anchors.append((False, atom, up))
+        return _Term(_CONST, atom).seal()
+    t = _Term(_ULINK if unordered else _LINK, atom)
+    t.kids = tuple(kids)
+    t.arity = len(kids)
+    t.multi = any(k.multi for k in kids) or (unordered and any(k.kind != _CONST for k in kids))
+    return t.seal()
+
+
+def _all_vars(atom: Atom) -> Iterable[Atom]:
+    if atom.__class__ is Node:
+        if atom[0] == "VariableNode":
+            yield atom
+        return
+    for a in atom[1]:
+        yield from _all_vars(a)
+
+
+_EVALUATABLE = frozenset(
+    {
+        "EqualLink",
+        "IdenticalLink",
+        "GreaterThanLink",
+        "NotLink",
+        "SatisfactionLink",
+    }
+)
+
+
+def is_evaluatable(atom: Atom) -> bool:
+    """True for terms the matcher evaluates instead of looking up."""
+    t = atom[0]
+    if t in _EVALUATABLE:
+        return True
+    if (
+        t == "EvaluationLink"
+        and atom[1]
+        and atom[1][0][0]
+        in (
+            "GroundedPredicateNode",
+            "DefinedPredicateNode",
+        )
+    ):
+        return True
+    if t in ("AndLink", "OrLink"):
+        return all(is_evaluatable(a) for a in atom[1])
+    return False
+
+
+class _Alt:
+    """One alternative: a conjunction of mandatory, absent and evaluatable clauses."""
+
+    __slots__ = ("mandatory", "absent", "evals")
+
+    def __init__(self) -> None:
+        self.mandatory: list[Atom] = []
+        self.absent: list[Atom] = []
+        self.evals: list[Atom] = []
+
+    def merged(self, other: _Alt) -> _Alt:
+        new = _Alt()
+        new.mandatory = self.mandatory + other.mandatory
+        new.absent = self.absent + other.absent
+        new.evals = self.evals + other.evals
+        return new
+
+
+def _alternatives(body: Atom) -> list[_Alt]:
+    """The body in disjunctive form: a list of conjunctions."""
+    t = body[0]
+    if t == "AndLink":
+        alts = [_Alt()]
+        for c in body[1]:
+            sub = _alternatives(c)
+            alts = [a.merged(s) for a in alts for s in sub]
+        return alts
+    if t in ("OrLink", "ChoiceLink"):
+        if t == "OrLink" and is_evaluatable(body):
+            alt = _Alt()
+            alt.evals.append(body)
+            return [alt]
+        out: list[_Alt] = []
+        for c in body[1]:
+            out.extend(_alternatives(c))
+        return out
+    alt = _Alt()
+    if t == "PresentLink":
+        alt.mandatory.extend(body[1])
+    elif t == "AbsentLink":
+        alt.absent.extend(body[1])
+    elif t == "NotLink" and len(body[1]) == 1 and not is_evaluatable(body[1][0]):
+        inner = body[1][0]
+        if inner[0] == "PresentLink":
+            alt.absent.extend(inner[1])
+        else:
+            alt.absent.append(inner)
+    elif is_evaluatable(body):
+        alt.evals.append(body)
+    else:
+        alt.mandatory.append(body)
+    return [alt]
+
+
+# ---------------------------------------------------------------------- variables
+def parse_variables(
+    decl: Atom | None, body: Atom
+) -> tuple[list[Atom], dict[Atom, frozenset[str] | None]]:
+    """Variables in declaration order and the types each may take (None = any)."""
+    allowed: dict[Atom, frozenset[str] | None] = {}
+    if decl is None:
+        vs = variables_of(body)
+        return vs, {v: None for v in vs}
+    items: tuple[Atom, ...]
+    if decl[0] in ("VariableList", "VariableSet"):
+        items = decl[1]
+    else:
+        items = (decl,)
+    order: list[Atom] = []
+    for it in items:
+        if it.__class__ is Node and it[0] == "VariableNode":
+            order.append(it)
+            allowed[it] = None
+        elif it[0] == "TypedVariableLink" and len(it[1]) == 2:
+            var, typ = it[1]
+            if var[0] != "VariableNode":
+                raise PatternError(f"TypedVariableLink must name a VariableNode: {it}")
+            order.append(var)
+            allowed[var] = _type_constraint(typ)
+        else:
+            raise PatternError(f"not a variable declaration: {it}")
+    return order, allowed
+
+
+def _type_constraint(typ: Atom) -> frozenset[str]:
+    if typ[0] == "TypeNode":
+        full = _t.resolve(typ[1])
+        if full is None:
+            raise PatternError(f"unknown type {typ[1]!r}")
+        return frozenset({full})
+    if typ[0] == "TypeInhNode":
+        full = _t.resolve(typ[1])
+        if full is None:
+            raise PatternError(f"unknown type {typ[1]!r}")
+        return _t.subtypes(full)
+    if typ[0] == "TypeChoice":
+        out: frozenset[str] = frozenset()
+        for x in typ[1]:
+            out |= _type_constraint(x)
+        return out
+    raise PatternError(f"unsupported type restriction {typ}")
+
+
+def is_variable_decl(atom: Atom) -> bool:
+    """True if ``atom`` reads as a variable declaration."""
+    return (atom.__class__ is Node and atom[0] == "VariableNode") or atom[0] in _t.VARIABLE_DECLS
+
+
+# ---------------------------------------------------------------------- compiled query
+class Pattern:
+    """A compiled pattern: variables, their types and the alternatives to search."""
+
+    __slots__ = ("variables", "allowed", "alts", "body")
+
+    def __init__(self, body: Atom, decl: Atom | None = None) -> None:
+        self.body = body
+        self.variables, self.allowed = parse_variables(decl, body)
+        varset = frozenset(self.variables)
+        self.alts: list[_CompiledAlt] = [
+            _CompiledAlt(a, varset, self.allowed) for a in _alternatives(body)
+        ]
+        used: set[Atom] = set()
+        for ca in self.alts:
+            used |= ca.bound_vars | ca.eval_vars | ca.absent_vars
+        for v in self.variables:
+            if v not in used:
+                raise PatternError(f"the variable {v} does not appear in any clause")
+
+    def groundings(self, space: AtomSpace, limit: int | None = None) -> list[Bindings]:
+        """Every grounding (deduplicated, in the order found)."""
+        alts = self.alts
+        if len(alts) == 1:
+            # within one alternative every grounding is distinct already
+            out: list[Bindings] = []
+            alts[0].solve(space, out, limit)
+            return out
+        seen: set[tuple[Atom, ...]] = set()
+        result: list[Bindings] = []
+        vs = self.variables
+        for ca in alts:
+            found: list[Bindings] = []
+            ca.solve(space, found, None if limit is None else limit - len(result))
+            for b in found:
+                key = tuple(b.get(v) for v in vs)  # type: ignore[misc]
+                if key in seen:
+                    continue
+                seen.add(key)
+                result.append(b)
+                if limit is not None and len(result) >= limit:
+                    return result
+        return result
+
+
+class _CompiledAlt:
+    __slots__ = (
+        "mandatory",
+        "absent",
+        "evals",
+        "bound_vars",
+        "eval_vars",
+        "absent_vars",
+        "enum_vars",
+        "allowed",
+    )
+
+    def __init__(self, alt: _Alt, varset: frozenset[Atom], allowed: dict) -> None:
+        self.allowed = allowed
+        self.mandatory = [_Clause(c, varset, allowed) for c in alt.mandatory]
+        self.bound_vars: set[Atom] = set()
+        for c in self.mandatory:
+            self.bound_vars |= c.vars
+        # absent clauses: variables not bound elsewhere are local to the clause
+        self.evals = [(e, frozenset(v for v in _all_vars(e) if v in varset)) for e in alt.evals]
+        self.eval_vars: set[Atom] = set()
+        for _e, vs in self.evals:
+            self.eval_vars |= vs
+        bindable = self.bound_vars | self.eval_vars
+        self.absent = []
+        self.absent_vars: set[Atom] = set()
+        for a in alt.absent:
+            outer = frozenset(v for v in _all_vars(a) if v in bindable)
+            local = frozenset(v for v in _all_vars(a) if v not in bindable)
+            self.absent.append((_Clause(a, outer | local, {**allowed}), outer))
+            self.absent_vars |= {v for v in local if v in varset}
+        self.enum_vars = [v for v in varset if v in self.eval_vars and v not in self.bound_vars]
+
+    # -- the search -------------------------------------------------------------
+    def solve(self, space: AtomSpace, out: list[Bindings], limit: int | None = None) -> None:
+        """Append every grounding of this alternative to ``out``."""
+        pending = list(range(len(self.evals))) + [-1 - i for i in range(len(self.absent))]
+        b: Bindings = {}
+        if pending:
+            ok, pending = self._check_ready(space, pending, b)
+            if not ok:
+                return
+        try:
+            self._search(space, self.mandatory, b, pending, out, limit)
+        except _Enough:
+            pass
+
+    def _check_ready(
+        self, space: AtomSpace, pending: list[int], b: Bindings
+    ) -> tuple[bool, list[int]]:
+        rest: list[int] = []
+        for i in pending:
+            if i >= 0:
+                atom, vs = self.evals[i]
+                if all(v in b for v in vs):
+                    if not _eval_clause(space, substitute(atom, b)):
+                        return False, rest
+                    continue
+            else:
+                clause, outer = self.absent[-1 - i]
+                if all(v in b for v in outer):
+                    if _exists(space, clause, b):
+                        return False, rest
+                    continue
+            rest.append(i)
+        return True, rest
+
+    def _search(
+        self,
+        space: AtomSpace,
+        remaining: list[_Clause],
+        b: Bindings,
+        pending: list[int],
+        out: list[Bindings],
+        limit: int | None,
+    ) -> None:
+        if not remaining:
+            if pending or self.enum_vars:
+                self._enumerate(space, b, pending, out, limit)
+            else:
+                out.append(b)
+                if limit is not None and len(out) >= limit:
+                    raise _Enough
+            return
+        # pick the clause with the fewest candidates (estimated from the index sizes)
+        if len(remaining) == 1:
+            clause = remaining[0]
+            rest: list[_Clause] = []
+            ground = clause.ground or all(v in b for v in clause.vars)
+        else:
+            best_i, best_n = -1, -1
+            for i, c in enumerate(remaining):
+                if c.ground or all(v in b for v in c.vars):
+                    best_i, best_n = i, -2
+                    break
+                n = _estimate(space, c, b)
+                if best_n < 0 or n < best_n:
+                    best_i, best_n = i, n
+                    if n == 0:
+                        return
+            clause = remaining[best_i]
+            rest = remaining[:best_i] + remaining[best_i + 1 :]
+            ground = best_n == -2
+        if ground:
+            if substitute(clause.atom, b) in space:
+                self._search(space, rest, b, pending, out, limit)
+            return
+        term = clause.term
+        last = not rest and not pending and not self.enum_vars
+        if not term.multi:
+            fn = term.fn
+            for cand in _candidates(space, clause, b):
+                b2 = fn(cand, b)  # type: ignore[misc]
+                if b2 is None:
+                    continue
+                if last:
+                    out.append(b2)
+                    if limit is not None and len(out) >= limit:
+                        raise _Enough
+                    continue
+                if pending:
+                    ok, pend2 = self._check_ready(space, pending, b2)
+                    if not ok:
+                        continue
+                else:
+                    pend2 = pending
+                self._search(space, rest, b2, pend2, out, limit)
+            return
+        for cand in _candidates(space, clause, b):
+            for b2 in match(term, cand, b):
+                if pending:
+                    ok, pend2 = self._check_ready(space, pending, b2)
+                    if not ok:
+                        continue
+                else:
+                    pend2 = pending
+                self._search(space, rest, b2, pend2, out, limit)
+
+    def _enumerate(
+        self,
+        space: AtomSpace,
+        b: Bindings,
+        pending: list[int],
+        out: list[Bindings],
+        limit: int | None,
+    ) -> None:
+        """Ground variables that only evaluatable clauses mention."""
+        todo = [v for v in self.enum_vars if v not in b]
+        if not todo:
+            ok, rest = self._check_ready(space, pending, b)
+            if ok and not rest:
+                out.append(b)
+                if limit is not None and len(out) >= limit:
+                    raise _Enough
+            return
+        v = todo[0]
+        allowed = self.allowed.get(v)
+        choices = _equal_shortcut(space, self.evals, v, b)
+        if choices is None:
+            if allowed is not None:
+                choices = [a for t in allowed for a in space.get_by_type(t)]
+            else:
+                choices = list(space)
+        for a in choices:
+            if allowed is not None and a[0] not in allowed:
+                continue
+            b2 = b.copy()
+            b2[v] = a
+            ok, rest = self._check_ready(space, pending, b2)
+            if ok:
+                self._enumerate(space, b2, rest, out, limit)
+
+
+class _Enough(Exception):
+    """Raised to stop a search once the asked number of groundings is found."""
+
+
+def _equal_shortcut(space: AtomSpace, evals, v: Atom, b: Bindings) -> list[Atom] | None:  # noqa: ANN001
+    """If an EqualLink ties ``v`` to a grounded atom, that atom is the only choice."""
+    for atom, _vs in evals:
+        if atom[0] in ("EqualLink", "IdenticalLink") and len(atom[1]) == 2:
+            x, y = atom[1]
+            other = y if x == v else x if y == v else None
+            if other is None:
+                continue
+            g = substitute(other, b)
+            if not _has_var_in(g, frozenset([v])) and not any(
+                n[0] == "VariableNode" for n in _all_vars(g)
+            ):
+                found = space._find(g)  # the space's own instance: identity holds
+                return [found] if found is not None else []
+    return None
+
+
+def _incoming(space: AtomSpace, atom: Atom):  # noqa: ANN202
+    if space._parent is None:
+        return space._incoming.get(atom, ())
+    return space.incoming(atom)
+
+
+def _estimate(space: AtomSpace, c: _Clause, b: Bindings) -> int:
+    """An upper bound on the candidates of clause ``c``: its rarest anchor's incoming
+    set, or the number of atoms of its type."""
+    best = -1
+    for is_var, x, _path in c.anchors:
+        if is_var:
+            a = b.get(x)
+            if a is None:
+                continue
+        else:
+            a = x
+        n = len(_incoming(space, a))
+        if best < 0 or n < best:
+            best = n
+            if n == 0:
+                return 0
+    if c.root_type == "VariableNode":
+        return len(space)
+    tcount = space.count_type(c.root_type)
+    return tcount if best < 0 or tcount < best else best
+
+
+def _candidates(space: AtomSpace, c: _Clause, b: Bindings):  # noqa: ANN202
+    """Atoms that may ground clause ``c``, found from its rarest anchor upward."""
+    flat = space._parent is None
+    inc_get = space._incoming.get
+    best = None
+    best_n = -1
+    for is_var, x, path in c.anchors:
+        if is_var:
+            a = b.get(x)
+            if a is None:
+                continue
+        else:
+            a = space._atoms.get(x) if flat else space._find(x)
+            if a is None:  # a constant part that is not in the space: nothing matches
+                return ()
+        inc = inc_get(a, ()) if flat else space.incoming(a)
+        n = len(inc)
+        if best_n < 0 or n < best_n:
+            best, best_n = (a, inc, path), n
+            if n == 0:
+                return ()
+    typ = c.root_type
+    if typ == "VariableNode":  # a bare variable clause grounds to any atom
+        return list(space)
+    tcount = space.count_type(typ)
+    if best is None or tcount <= best_n:
+        return space._by_type.get(typ, ()) if flat else space._type_set(typ)
+    a, inc, path = best
+    ltype, pos = path[0]
+    if pos is None:
+        current = [lk for lk in inc if lk[0] == ltype]
+    else:
+        # members of a space are canonical: identity is equality here
+        current = [lk for lk in inc if lk[0] == ltype and len(lk[1]) > pos and lk[1][pos] is a]
+    for ltype, pos in path[1:]:
+        if not current:
+            return ()
+        if pos is None:
+            seen: set[Atom] = set()
+            for x in current:
+                for lk in inc_get(x, ()) if flat else space.incoming(x):
+                    if lk[0] == ltype:
+                        seen.add(lk)
+            current = list(seen)
+        else:
+            nxt = []
+            for x in current:
+                for lk in inc_get(x, ()) if flat else space.incoming(x):
+                    if lk[0] == ltype:
+                        o = lk[1]
+                        if len(o) > pos and o[pos] is x:
+                            nxt.append(lk)
+            current = nxt
+    return current
+
+
+def _exists(space: AtomSpace, clause: _Clause, b: Bindings) -> bool:
+    """True if some grounding of ``clause`` (extending ``b``) is in the space."""
+    if all(v in b for v in clause.vars):
+        return substitute(clause.atom, b) in space
+    for cand in _candidates(space, clause, b):
+        if match(clause.term, cand, b):
+            return True
+    return False
+
+
+# ---------------------------------------------------------------------- evaluation
+def _eval_clause(space: AtomSpace, atom: Atom) -> bool:
+    from robocog.atomspace.execute import evaluate
+
+    return evaluate(space, atom).is_true()
+
+
+_CACHE: dict[tuple[Atom, Atom | None], Pattern] = {}
+_CACHE_MAX = 4096
+
+
+def compile_pattern(body: Atom, decl: Atom | None = None) -> Pattern:
+    """The compiled pattern for ``body`` under ``decl`` (cached)."""
+    key = (body, decl)
+    p = _CACHE.get(key)
+    if p is None:
+        p = Pattern(body, decl)
+        if len(_CACHE) >= _CACHE_MAX:
+            _CACHE.clear()
+        _CACHE[key] = p
+    return p
+
+
+def query(
+    space: AtomSpace,
+    body: Atom,
+    variables: Atom | Iterable[Atom] | None = None,
+    limit: int | None = None,
+) -> list[Bindings]:
+    """Every grounding of ``body`` in ``space``: a list of {variable: atom} dicts.
+
+    ``variables`` is a declaration atom (VariableList, TypedVariableLink, a
+    VariableNode) or an iterable of VariableNodes; by default every variable in the
+    body is free.
+    """
+    decl: Atom | None
+    if variables is None or isinstance(variables, Atom):
+        decl = variables  # type: ignore[assignment]
+    else:
+        decl = Link("VariableList", *variables)
+    return compile_pattern(body, decl).groundings(space, limit)

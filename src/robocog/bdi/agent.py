@@ -1,0 +1,1092 @@
+"""The agent and its reasoning cycle, as Jason defines it.
+
+One call to :meth:`Agent.step` is one reasoning cycle:
+
+1. *sense*: percepts that changed become beliefs annotated ``source(percept)`` (and
+   ``+b``/``-b`` events); one message from the mailbox is processed; timers that are due
+   wake their intentions;
+2. *deliberate*: one event is selected (FIFO), the first applicable plan in program
+   order is found and pushed as an intended means (tail-recursion optimisation pops the
+   finished caller first);
+3. *act*: one finished environment action is fed back, then one intention is selected
+   (round robin) and one formula of its body is executed.
+
+Goal failures generate ``-!g`` events annotated with ``error(...)``, searched down the
+intention as Jason does; belief changes made by a plan are handled in the same
+intention (``intBels = sameFocus``). The selection functions are methods meant to be
+overridden.
+"""
+
+from __future__ import annotations
+
+import functools
+import heapq
+import sys
+from collections import deque
+from collections.abc import Callable, Iterable, Iterator
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from robocog.bdi import plans as P
+from robocog.bdi.actions import ActionFn, ActionHandle, to_python
+from robocog.bdi.beliefs import BeliefBase
+from robocog.bdi.circumstance import Circumstance, Event, IntendedMeans, Intention
+from robocog.bdi.logic import ActionError, holds, solve
+from robocog.bdi.parser import ParseError, Program, Rule, parse_literal, parse_program, parse_term
+from robocog.bdi.terms import (
+    SOURCE_PERCEPT,
+    SOURCE_SELF,
+    Literal,
+    Term,
+    Var,
+    is_ground,
+    term_str,
+)
+from robocog.bdi.unifier import EvalError, deref, resolve, unify, variables
+
+if TYPE_CHECKING:
+    from robocog.bdi.mas import Message, MultiAgentSystem
+
+#: returned by an internal action that suspended its intention itself
+SUSPEND = object()
+#: returned by an internal action that already updated its intention itself
+DONE = object()
+
+Option = tuple  # (Plan, substitution)
+
+
+def _with_source(lit: Literal, src: Literal = SOURCE_SELF) -> Literal:
+    annots = lit.annots
+    if not annots:
+        return Literal.make(lit.functor, lit.args, (src,), lit.neg, lit.ground and src.ground)
+    for a in annots:
+        if a.__class__ is Literal and a.functor == "source":
+            return lit
+    return lit.add_annots((src,))
+
+
+@functools.lru_cache(maxsize=4096)
+def _parse_cached(text: str) -> Literal:
+    return parse_literal(text)
+
+
+def _as_literal(x: str | Literal) -> Literal:
+    return _parse_cached(x) if isinstance(x, str) else x
+
+
+class Agent:
+    """An AgentSpeak agent: beliefs, plans, events and intentions, and its cycle."""
+
+    #: Jason's tail-recursion optimisation (on by default, as in Jason)
+    tail_recursion = True
+
+    def __init__(
+        self,
+        source: str | Program = "",
+        name: str = "agent",
+        *,
+        file: str = "",
+        printer: Callable[[str, str], None] | None = None,
+        warn: Callable[[str, str], None] | None = None,
+    ) -> None:
+        from robocog.bdi import stdlib
+
+        self.name = name
+        self.bb = BeliefBase()
+        self.pl = P.PlanLibrary()
+        self.C = Circumstance()
+        self.cycle = 0
+        self.clock = 0.0  # milliseconds of (virtual) time, advanced by run()
+        self.mas: MultiAgentSystem | None = None
+        self.mailbox: deque[Message] = deque()
+        self.printer = printer or _default_printer
+        self.warner = warn or _default_warner
+        self._actions: dict[str, tuple[ActionFn, bool]] = {}
+        self._internal: dict[str, Callable] = dict(stdlib.LIBRARY)
+        self._feedback: deque[tuple[Intention, bool, str, Literal]] = deque()
+        self._waiting_actions: list[tuple[ActionHandle, Intention]] = []
+        self._timers: list[tuple[float, int, Intention]] = []
+        self._timer_seq = 0
+        self._event_waiters: list[tuple[P.Trigger, Intention, float | None]] = []
+        self._percepts: dict[Literal, None] = {}
+        self._perceived: dict[Literal, None] = {}
+        self._percepts_dirty = False
+        self._asks: dict[str, tuple[Intention, Term]] = {}
+        self._custom_option = type(self).select_option is not Agent.select_option
+        self._has_atomic = False
+        self._custom_event = type(self).select_event is not Agent.select_event
+        self._custom_intention = type(self).select_intention is not Agent.select_intention
+        self.file = file
+        if isinstance(source, Program):
+            self.load_program(source)
+        elif source:
+            self.load(source, file)
+
+    # ------------------------------------------------------------------ building
+    @classmethod
+    def from_file(cls, path: str | Path, name: str | None = None, **kw: Any) -> Agent:
+        """Build an agent from an ``.asl`` file, named after the file unless told."""
+        p = Path(path)
+        return cls(p.read_text(encoding="utf-8"), name or p.stem, file=str(p), **kw)
+
+    def load(self, text: str, source: str = "") -> None:
+        """Parse ``text`` and add its beliefs, rules, initial goals and plans."""
+        self.load_program(parse_program(text, source))
+
+    def load_program(self, prog: Program) -> None:
+        """Add a parsed program: beliefs (with ``+b`` events), rules, goals, plans."""
+        for plan in prog.plans:
+            self.add_plan(plan)
+        # Jason inserts initial beliefs back to front, each at the front of the base
+        for b in reversed(prog.beliefs):
+            if isinstance(b, Rule):
+                self.bb.add_rule(Rule(_with_source(b.head), b.body))
+            else:
+                lit = resolve(b, {})
+                if not is_ground(lit):
+                    self.bb.add_rule(Rule(_with_source(lit), Literal("true")))
+                    continue
+                self.bb.add(_with_source(lit))
+        for b in prog.beliefs:
+            if not isinstance(b, Rule):
+                lit = _with_source(resolve(b, {}))
+                if is_ground(lit):
+                    self.post(Event(P.Trigger("+", P.BELIEF, lit), None))
+        for g in prog.goals:
+            lit = _with_source(resolve(g, {}, {}))
+            self.C.events.append(Event(P.Trigger("+", P.ACHIEVE, lit), None))
+
+    def add_plan(self, plan: P.Plan | str, at_end: bool = True) -> None:
+        """Add a plan (object or source text) to the plan library."""
+        if isinstance(plan, str):
+            from robocog.bdi.parser import parse_plan
+
+            plan = parse_plan(plan)
+        if plan.label is not None and any(
+            a.__class__ is Literal and a.functor == "atomic" for a in plan.label.annots
+        ):
+            self._has_atomic = True
+        self.pl.add(plan, at_end)
+
+    # ------------------------------------------------------------------ Python API
+    def register_action(self, name: str, fn: ActionFn, raw: bool = False) -> None:
+        """Make ``name(...)`` in plan bodies call ``fn``.
+
+        ``fn`` gets the arguments as Python values (or as terms with ``raw=True``) and
+        returns True/None, False or an :class:`ActionHandle` (see ``actions``).
+        """
+        self._actions[name] = (fn, raw)
+
+    def register_internal_action(self, name: str, fn: Callable) -> None:
+        """Add an internal action ``.name``: ``fn(agent, args, s, trail, ctx)``."""
+        self._internal[name if name.startswith(".") else "." + name] = fn
+
+    def internal_action(self, name: str) -> Callable | None:
+        """The implementation of internal action ``name`` (with its leading dot)."""
+        return self._internal.get(name)
+
+    def add_percept(self, percept: str | Literal) -> None:
+        """Perceive ``percept`` from the next cycle on (until removed)."""
+        lit = _as_literal(percept).without_annots()
+        if lit not in self._percepts:
+            self._percepts[lit] = None
+            self._percepts_dirty = True
+
+    def remove_percept(self, percept: str | Literal) -> None:
+        """Stop perceiving ``percept``."""
+        lit = _as_literal(percept).without_annots()
+        if lit in self._percepts:
+            del self._percepts[lit]
+            self._percepts_dirty = True
+
+    def set_percepts(self, percepts: Iterable[str | Literal]) -> None:
+        """Replace all percepts at once (what the sensors report now)."""
+        new = {_as_literal(p).without_annots(): None for p in percepts}
+        if list(new) != list(self._percepts):
+            self._percepts = new
+            self._percepts_dirty = True
+
+    def clear_percepts(self) -> None:
+        """Perceive nothing."""
+        self.set_percepts(())
+
+    def percepts(self) -> list[Literal]:
+        """What the agent is told it perceives."""
+        return list(self._percepts)
+
+    def add_belief(self, belief: str | Literal) -> None:
+        """Add a belief (``source(self)`` unless annotated) and its ``+b`` event."""
+        lit = _with_source(resolve(_as_literal(belief), {}))
+        if self.bb.add(lit) is not None:
+            self.post(Event(P.Trigger("+", P.BELIEF, lit), None))
+
+    def remove_belief(self, belief: str | Literal) -> None:
+        """Remove a belief (its ``source(self)`` unless annotated) and post ``-b``."""
+        lit = _with_source(resolve(_as_literal(belief), {}))
+        gone = self.bb.remove(lit)
+        if gone is not None:
+            self.post(Event(P.Trigger("-", P.BELIEF, gone), None))
+
+    def add_goal(self, goal: str | Literal) -> None:
+        """Post ``+!goal`` as a new (external) goal."""
+        lit = _with_source(resolve(_as_literal(goal), {}, {}))
+        self.post(Event(P.Trigger("+", P.ACHIEVE, lit), None))
+
+    def beliefs(self, functor: str | None = None) -> list[Literal]:
+        """The facts in the belief base (optionally of one functor), newest first."""
+        return [b for b in self.bb if functor is None or b.functor == functor]
+
+    def query(self, formula: str | Term) -> list[dict[str, Term]]:
+        """All solutions of a formula, e.g. ``"at(X) & X \\== door"``, as name -> value."""
+        f = parse_term(formula) if isinstance(formula, str) else formula
+        names = [v for v in variables(f) if v.name != "_"]
+        out = []
+        s: dict = {}
+        for _ in solve(self, f, s, []):
+            out.append({v.name: resolve(v, s) for v in names})
+        return out
+
+    def believes(self, formula: str | Term) -> bool:
+        """True if the formula follows from the beliefs."""
+        f = parse_term(formula) if isinstance(formula, str) else formula
+        return holds(self, f, {}, [])
+
+    # ------------------------------------------------------------------ selection
+    def select_event(self, events: deque[Event]) -> Event | None:
+        """Jason's default: the oldest event. Override to change; remove what you pick."""
+        return events.popleft()
+
+    def select_option(self, options: list[Option]) -> Option | None:
+        """Jason's default: the first applicable plan in program order."""
+        return options[0] if options else None
+
+    def select_intention(self, running: deque[Intention]) -> Intention | None:
+        """Jason's default: round robin (the intention that waited longest)."""
+        return running.popleft()
+
+    # ------------------------------------------------------------------ output
+    def print(self, text: str) -> None:
+        """Output of ``.print``; goes to ``printer(name, text)``."""
+        self.printer(self.name, text)
+
+    def warn(self, text: str) -> None:
+        """A diagnostic; goes to ``warner(name, text)`` (stderr by default)."""
+        self.warner(self.name, text)
+
+    # ------------------------------------------------------------------ running
+    def post(self, ev: Event) -> None:
+        """Add an event (and wake intentions waiting for it with ``.wait``)."""
+        if self._has_atomic and ev.intention is not None and _is_atomic(ev.intention):
+            self.C.atomic_event = ev
+            return
+        if self._event_waiters:
+            self._check_event_waiters(ev.trigger)
+        elif (
+            ev.intention is None
+            and ev.trigger.kind == P.BELIEF
+            and not self._custom_event
+            and not self.pl.has_candidate(ev.trigger)
+        ):
+            return  # it would be discarded when selected, without using a cycle
+        self.C.events.append(ev)
+
+    def is_idle(self) -> bool:
+        """Nothing to do now: no event, no runnable intention, no news to take in."""
+        C = self.C
+        if C.events or C.running or self._feedback or self.mailbox or self._percepts_dirty:
+            return False
+        if C.atomic_intention is not None or C.atomic_event is not None:
+            return False
+        for h, _i in self._waiting_actions:
+            if h.done:
+                return False
+        if self._timers and self._timers[0][0] <= self.clock:
+            return False
+        return True
+
+    def has_pending(self) -> bool:
+        """True while some intention waits for an action outcome, a timer or a reply."""
+        return bool(self.C.pending)
+
+    def next_timer(self) -> float | None:
+        """When the earliest ``.wait`` ends (virtual milliseconds), if any."""
+        return self._timers[0][0] if self._timers else None
+
+    def run(self, max_cycles: int | None = None, advance_clock: bool = True) -> int:
+        """Run cycles until idle (skipping virtual time to pending timers); returns cycles."""
+        n = 0
+        C = self.C
+        events = C.events
+        running = C.running
+        step = self.step
+        while max_cycles is None or n < max_cycles:
+            if events or running or C.atomic_intention is not None:
+                step()
+                n += 1
+                continue
+            if self.is_idle():
+                if advance_clock and self._timers:
+                    self.clock = max(self.clock, self._timers[0][0])
+                    continue
+                break
+            self.step()
+            n += 1
+        return n
+
+    def step(self) -> None:
+        """One reasoning cycle."""
+        self.cycle += 1
+        C = self.C
+        # ---- sense
+        if self._percepts_dirty:
+            self._buf()
+        if self.mailbox:
+            self._process_message(self.mailbox.popleft())
+        if self._timers and self._timers[0][0] <= self.clock:
+            self._wake_timers()
+        # ---- deliberate (an external belief event that no plan handles is discarded
+        # and the next event selected in the same cycle, as in Jason)
+        events = C.events
+        if C.atomic_intention is not None:
+            pass  # an atomic intention runs alone: no event is selected
+        elif C.atomic_event is not None:
+            ev = C.atomic_event
+            C.atomic_event = None
+            self._deliberate(ev)
+        else:
+            while events:
+                ev = self.select_event(events) if self._custom_event else events.popleft()
+                if ev is None or self._deliberate(ev):
+                    break
+        # ---- act
+        if self._feedback or self._waiting_actions:
+            self._process_feedback()
+        if C.atomic_intention is not None:
+            i = C.atomic_intention
+            C.atomic_intention = None
+            self._execute(i)
+            return
+        running = C.running
+        if running:
+            i = self.select_intention(running) if self._custom_intention else running.popleft()
+            if i is not None:
+                self._execute(i)
+
+    # ------------------------------------------------------------------ sense
+    def _buf(self) -> None:
+        self._percepts_dirty = False
+        new = self._percepts
+        old = self._perceived
+        for lit in [p for p in old if p not in new]:
+            gone = self.bb.remove(lit.add_annots((SOURCE_PERCEPT,)))
+            if gone is not None:
+                self.post(Event(P.Trigger("-", P.BELIEF, gone), None))
+        for lit in new:
+            if lit not in old:
+                b = lit.add_annots((SOURCE_PERCEPT,))
+                if self.bb.add(b) is not None:
+                    self.post(Event(P.Trigger("+", P.BELIEF, b), None))
+        self._perceived = dict(new)
+
+    def _process_message(self, msg: Message) -> None:
+        from robocog.bdi.mas import handle_message
+
+        handle_message(self, msg)
+
+    def _wake_timers(self) -> None:
+        while self._timers and self._timers[0][0] <= self.clock:
+            _t, _seq, i = heapq.heappop(self._timers)
+            if self.C.pending.pop(i.id, None) is not None and not i.dropped:
+                self._advance(i)
+
+    def add_timer(self, delay_ms: float, i: Intention) -> None:
+        """Suspend ``i`` and resume it after ``delay_ms`` (used by ``.wait``)."""
+        self._timer_seq += 1
+        heapq.heappush(self._timers, (self.clock + delay_ms, self._timer_seq, i))
+        self.C.pending[i.id] = (i, "wait")
+
+    def wait_event(self, trigger: P.Trigger, i: Intention, timeout: float | None) -> None:
+        """Suspend ``i`` until an event unifying with ``trigger`` happens."""
+        deadline = None if timeout is None else self.clock + timeout
+        self._event_waiters.append((trigger, i, deadline))
+        self.C.pending[i.id] = (i, "wait_event")
+        if deadline is not None:
+            self._timer_seq += 1
+            heapq.heappush(self._timers, (deadline, self._timer_seq, i))
+
+    def _check_event_waiters(self, trig: P.Trigger) -> None:
+        keep = []
+        for entry in self._event_waiters:
+            t, i, _d = entry
+            if (
+                t.op == trig.op
+                and t.kind == trig.kind
+                and i.id in self.C.pending
+                and unify(t.literal, trig.literal, i.top().s, [])
+            ):
+                self.C.pending.pop(i.id, None)
+                self._advance(i)
+            elif i.id in self.C.pending:
+                keep.append(entry)
+        self._event_waiters = keep
+
+    # ------------------------------------------------------------------ deliberate
+    def relevant_plans(self, trigger: P.Trigger) -> list[P.Plan]:
+        """Plans whose trigger unifies with ``trigger``, in program order."""
+        out = []
+        for plan in self.pl.candidates(trigger):
+            if unify(plan.trigger.literal, trigger.literal, {}, []):
+                out.append(plan)
+        return out
+
+    def applicable_options(self, ev: Event) -> list[Option]:
+        """Every (plan, substitution) whose trigger unifies and whose context holds."""
+        out = []
+        for plan in self.pl.candidates(ev.trigger):
+            s: dict = {}
+            trail: list = []
+            if unify(plan.trigger.literal, ev.trigger.literal, s, trail):
+                if plan.context is None or self._context(plan, s, trail):
+                    out.append((plan, s))
+        return out
+
+    def _context(self, plan: P.Plan, s: dict, trail: list) -> bool:
+        try:
+            return holds(self, plan.context, s, trail)
+        except (ActionError, EvalError, RecursionError) as exc:
+            self.warn(f"error in the context of {plan.trigger!r}: {exc}")
+            return False
+
+    def _deliberate(self, ev: Event) -> bool:
+        """Handle one event; False when it was discarded without using the cycle."""
+        trig = ev.trigger
+        cands = self.pl.candidates(trig)
+        option = None
+        if cands:
+            if self._custom_option:
+                option = self.select_option(self.applicable_options(ev))
+            else:
+                lit = trig.literal
+                for plan in cands:
+                    s: dict = {}
+                    trail: list = []
+                    if unify(plan.trigger.literal, lit, s, trail) and (
+                        plan.context is None or self._context(plan, s, trail)
+                    ):
+                        option = (plan, s)
+                        break
+        if option is None:
+            if ev.intention is None and trig.kind == P.BELIEF:
+                return False
+            self._no_plan(ev, "applicable" if cands else "relevant")
+            return True
+        plan, s = option
+        im = IntendedMeans(plan, trig, s, plan.body)
+        i = ev.intention
+        if i is None:
+            i = Intention()
+            i.stack.append(im)
+            self._requeue(i)
+            return True
+        if i.dropped:
+            return True
+        if self.tail_recursion and i.stack:
+            top = i.stack[-1]
+            t1 = top.trigger
+            cur = top.cur
+            if (
+                cur is not None
+                and cur[1] is None
+                and t1.op == "+"
+                and trig.op == "+"
+                and t1.kind != P.BELIEF
+                and trig.kind != P.BELIEF
+                and t1.literal.__class__ is Literal
+                and trig.literal.__class__ is Literal
+                and t1.literal.functor == trig.literal.functor
+                and len(t1.literal.args) == len(trig.literal.args)
+            ):
+                i.stack.pop()
+                im.ret = self._tro_ret(top)
+        i.stack.append(im)
+        self._requeue(i)
+        return True
+
+    def _tro_ret(self, top: IntendedMeans) -> Any:
+        """What the intended means replacing ``top`` must give back to ``top``'s caller."""
+        ret = top.ret
+        if ret is not None and ret[0] == "fixed":
+            return ret
+        val = top.trigger.literal
+        if not val.ground:
+            val = resolve(val, top.s)
+        if is_ground(val):
+            if ret is not None:
+                val = _propagate(val, ret[1])
+            return ("fixed", val)
+        entry = (top.cur[0].term, top.s, top.trigger.literal)
+        return ("chain", [entry] + (ret[1] if ret is not None else []))
+
+    def _no_plan(self, ev: Event, what: str) -> None:
+        trig = ev.trigger
+        if trig.op == "+" and trig.kind != P.BELIEF:
+            msg = f"Found a goal for which there is no {what} plan: {trig!r}"
+            fail_ev = self._failure_event(ev.intention, trig, in_stack=False)
+            if fail_ev is not None:
+                self._annotate_failure(fail_ev, f"no_{what}", msg, trig.literal, 0)
+                self.post(fail_ev)
+            else:
+                self.warn(msg)
+                if ev.intention is not None:
+                    self._drop(ev.intention)
+        elif ev.intention is not None:
+            # a belief change of this intention that no plan handles: carry on
+            if not ev.intention.dropped:
+                self._advance(ev.intention)
+        elif trig.kind != P.BELIEF:
+            self.warn(f"no {what} plan for {trig!r}")
+
+    # ------------------------------------------------------------------ failure
+    def _failure_event(
+        self, i: Intention | None, tevent: P.Trigger, in_stack: bool = True
+    ) -> Event | None:
+        """Jason's search for the ``-!g`` event that handles a failure in ``i``."""
+        pl = self.pl
+        if i is None or not i.stack:
+            if tevent.kind != P.BELIEF and tevent.op == "+":
+                ft = P.Trigger("-", tevent.kind, tevent.literal)
+                if pl.has_candidate(ft):
+                    return Event(ft, i)
+            return None
+        seq: list = [] if in_stack else [(tevent, None)]
+        for im in reversed(i.stack):
+            seq.append((im.trigger, im))
+        last = len(seq) - 1
+        pos = 0
+        if in_stack and tevent.kind != P.BELIEF and tevent.op == "-":
+            # failure inside a failure plan: skip down past the goal it was handling
+            goal = resolve(tevent.literal, i.stack[-1].s)
+            found = False
+            while pos < last and not found:
+                pos += 1
+                while pos < last and _unifies(seq[pos][0].literal, goal, seq[pos][1].s):
+                    pos += 1
+                    found = True
+        t, im = seq[pos]
+        ft = P.Trigger("-", t.kind, t.literal)
+        while not pl.has_candidate(ft) and pos < last:
+            pos += 1
+            t, im = seq[pos]
+            ft = P.Trigger("-", t.kind, t.literal)
+        if t.kind != P.BELIEF and pl.has_candidate(ft):
+            lit = resolve(t.literal, im.s) if im is not None else t.literal
+            return Event(P.Trigger("-", t.kind, lit), i)
+        return None
+
+    def _annotate_failure(self, ev: Event, error: str, msg: str, code: Term, line: int) -> None:
+        annots: list[Term] = [Literal("error", (Literal(error),)), Literal("error_msg", (msg,))]
+        if code is not None:
+            c = code.without_annots() if code.__class__ is Literal else code
+            annots.append(Literal("code", (c,)))
+        if self.file:
+            annots.append(Literal("code_src", (self.file,)))
+        if line:
+            annots.append(Literal("code_line", (line,)))
+        lit = ev.trigger.literal
+        if lit.__class__ is Literal:
+            ev.trigger = P.Trigger(ev.trigger.op, ev.trigger.kind, lit.add_annots(annots))
+
+    def fail_intention(
+        self,
+        i: Intention,
+        error: str = "ia_failed",
+        msg: str = "",
+        extra: Iterable[Term] = (),
+    ) -> None:
+        """Make the current goal of ``i`` fail (Jason's ``generateGoalDeletion``)."""
+        if not i.stack:
+            return
+        im = i.stack[-1]
+        ev = self._failure_event(i, im.trigger)
+        if ev is None:
+            self.warn(f"no failure plan for {im.trigger!r} ({error}{': ' + msg if msg else ''})")
+            self._drop(i)
+            return
+        step = im.cur[0] if im.cur is not None else None
+        code = None
+        line = 0
+        if step is not None:
+            line = step.line
+            if step.term is not None and step.term.__class__ is not tuple:
+                try:
+                    code = resolve(step.term, im.s)
+                except (EvalError, RecursionError):
+                    code = step.term
+        self._annotate_failure(ev, error, msg, code, line)
+        extra = tuple(extra)
+        if extra and ev.trigger.literal.__class__ is Literal:
+            ev.trigger = P.Trigger(
+                ev.trigger.op, ev.trigger.kind, ev.trigger.literal.add_annots(extra)
+            )
+        self.post(ev)
+
+    def _drop(self, i: Intention) -> None:
+        """Forget an intention everywhere it may be waiting."""
+        i.dropped = True
+        C = self.C
+        C.pending.pop(i.id, None)
+        if C.atomic_intention is i:
+            C.atomic_intention = None
+        if C.atomic_event is not None and C.atomic_event.intention is i:
+            C.atomic_event = None
+        if i in C.running:
+            C.running.remove(i)
+        C.keep_events(lambda e: e.intention is not i)
+
+    # ------------------------------------------------------------------ act
+    def _process_feedback(self) -> None:
+        item = None
+        if self._feedback:
+            item = self._feedback.popleft()
+        else:
+            for k, (h, i) in enumerate(self._waiting_actions):
+                if h.done:
+                    del self._waiting_actions[k]
+                    item = (i, bool(h.ok), h.reason, h.action)
+                    break
+        if item is None:
+            return
+        i, ok, reason, _action = item
+        if self.C.pending.pop(i.id, None) is None or i.dropped:
+            return
+        if ok:
+            self._advance(i)
+        else:
+            self.fail_intention(i, "action_failed", reason)
+
+    def execute_action(self, action: Literal) -> Any:
+        """Run an environment action; override to plug in an environment object."""
+        entry = self._actions.get(action.functor)
+        if entry is None:
+            if self.mas is not None and self.mas.environment is not None:
+                return self.mas.environment(self.name, action)
+            raise ActionError(f"no environment action {action.functor}/{len(action.args)}")
+        fn, raw = entry
+        if raw:
+            return fn(*action.args)
+        return fn(*[to_python(a) for a in action.args])
+
+    def _act(self, i: Intention, lit: Literal) -> None:
+        try:
+            result = self.execute_action(lit)
+        except Exception as exc:  # noqa: BLE001 - any failure of user code fails the action
+            self.C.pending[i.id] = (i, "action")
+            self._feedback.append((i, False, str(exc), lit))
+            return
+        self.C.pending[i.id] = (i, "action")
+        if isinstance(result, ActionHandle):
+            result.action = lit
+            self._waiting_actions.append((result, i))
+        else:
+            self._feedback.append((i, result is not False, "", lit))
+
+    def _requeue(self, i: Intention) -> None:
+        """Put ``i`` back among the running intentions (Jason's ``addRunningIntention``)."""
+        if self._has_atomic and _is_atomic(i):
+            self.C.atomic_intention = i
+        else:
+            self.C.running.append(i)
+
+    def _advance(self, i: Intention) -> None:
+        """Jason's ``removeActionReQueue`` followed by ``ClrInt``."""
+        im = i.stack[-1]
+        if im.cur is not None:
+            im.cur = im.cur[1]
+        if im.cur is None:
+            self._clear(i)
+            if not i.stack:
+                return
+        self._requeue(i)
+
+    def _clear(self, i: Intention) -> None:
+        """Pop finished intended means, giving their result back to the caller."""
+        stack = i.stack
+        while stack:
+            top = stack[-1]
+            if top.cur is not None:
+                return
+            stack.pop()
+            trig = top.trigger
+            if trig.op == "-" and trig.kind != P.BELIEF and stack:
+                # a failure plan finished: drop everything down to the failed goal
+                goal = resolve(trig.literal, top.s)
+                im = stack[-1]
+                if im.cur is None or not (
+                    im.cur[0].kind == P.ACHIEVE_STEP and _unifies(im.cur[0].term, goal, im.s)
+                ):
+                    im = stack.pop()
+                while stack and not (
+                    (im.trigger.kind != P.BELIEF and _unifies(im.trigger.literal, goal, im.s))
+                    or (
+                        im.cur is not None
+                        and im.cur[0].kind == P.ACHIEVE_STEP
+                        and _unifies(im.cur[0].term, goal, im.s)
+                    )
+                ):
+                    im = stack.pop()
+                if stack:
+                    caller = stack[-1]
+                    if caller.cur is not None:
+                        unify(caller.cur[0].term, goal, caller.s, [])
+                        caller.cur = caller.cur[1]
+                continue
+            if stack:
+                caller = stack[-1]
+                if caller.cur is not None:
+                    ret = top.ret
+                    if ret is None:
+                        val = resolve(trig.literal, top.s)
+                    elif ret[0] == "fixed":
+                        val = ret[1]
+                    else:
+                        val = _propagate(resolve(trig.literal, top.s), ret[1])
+                    term = caller.cur[0].term
+                    if term.__class__ is Literal and not term.ground:
+                        unify(term, val, caller.s, [])
+                    caller.cur = caller.cur[1]
+
+    def _execute(self, i: Intention) -> None:
+        """Execute one formula of the top intended means of ``i`` (Jason's ExecInt)."""
+        im = i.stack[-1]
+        cur = im.cur
+        if cur is None:
+            self._advance(i)
+            return
+        step = cur[0]
+        k = step.kind
+        s = im.s
+        try:
+            if k == P.INTERNAL:
+                lit = step.term
+                fn = self._internal.get(lit.functor)
+                if fn is None:
+                    raise ActionError(f"unknown internal action {lit.functor}")
+                r = fn(self, lit.args, s, [], (i, im, step))
+                if r is True or r is None:
+                    self._advance(i)
+                elif r is False:
+                    self.fail_intention(i, "ia_failed", "")
+                elif r is SUSPEND or r is DONE:
+                    pass
+                else:
+                    ok = False
+                    for _ in r:
+                        ok = True
+                        break
+                    if ok:
+                        self._advance(i)
+                    else:
+                        self.fail_intention(i, "ia_failed", "")
+            elif k == P.ACHIEVE_STEP:
+                lit = resolve(step.term, s, {})
+                if lit.__class__ is not Literal:
+                    raise ActionError(f"{term_str(lit)} is not a goal", "body_var_without_value")
+                self.post(Event(P.Trigger("+", P.ACHIEVE, _with_source(lit)), i))
+            elif k == P.ADD_BEL or k == P.ADD_BEL_NF or k == P.ADD_BEL_END:
+                self._add_belief_step(i, step, s)
+            elif k == P.DEL_ADD_BEL:
+                self._del_add_step(i, step, s)
+            elif k == P.DEL_BEL or k == P.DEL_BEL_NF:
+                self._del_belief_step(i, step, s)
+            elif k == P.CONSTRAINT:
+                if holds(self, step.term, s, []):
+                    self._advance(i)
+                else:
+                    self.fail_intention(
+                        i, "constraint_failed", f"Constraint {step!r} was not satisfied"
+                    )
+            elif k == P.ACTION:
+                lit = resolve(step.term, s)
+                if lit.__class__ is Var:
+                    raise ActionError(f"variable {lit.name} has no value", "body_var_without_value")
+                if lit.__class__ is not Literal:
+                    raise ActionError(f"{term_str(lit)} is not an action")
+                if lit.functor.startswith("."):
+                    fn = self._internal.get(lit.functor)
+                    if fn is None:
+                        raise ActionError(f"unknown internal action {lit.functor}")
+                    r = fn(self, lit.args, s, [], (i, im, step))
+                    if r is False:
+                        self.fail_intention(i, "ia_failed", "")
+                    elif r is not SUSPEND and r is not DONE:
+                        if r is True or r is None or any(True for _ in r):
+                            self._advance(i)
+                        else:
+                            self.fail_intention(i, "ia_failed", "")
+                else:
+                    self._act(i, lit)
+            elif k == P.TEST_STEP:
+                self._test_step(i, step, s)
+            elif k == P.ACHIEVE_NF:
+                lit = resolve(step.term, s, {})
+                if lit.__class__ is not Literal:
+                    raise ActionError(f"{term_str(lit)} is not a goal", "body_var_without_value")
+                self.post(Event(P.Trigger("+", P.ACHIEVE, _with_source(lit)), None))
+                self._advance(i)
+            elif k == P.IF:
+                self._if_step(i, im, step)
+            elif k == P.WHILE or k == P.WHILE_AGAIN:
+                self._while_step(i, im, step)
+            elif k == P.FOR or k == P.FOR_NEXT:
+                self._for_step(i, im, step)
+            else:
+                raise ActionError(f"cannot execute {step!r}")
+        except ActionError as exc:
+            self.fail_intention(i, exc.error, str(exc), getattr(exc, "annots", ()))
+        except EvalError as exc:
+            self.fail_intention(i, "ia_failed", str(exc))
+        except RecursionError:
+            self.fail_intention(i, "ia_failed", "term nesting too deep")
+
+    # ---- body formulas
+    def _add_belief_step(self, i: Intention, step: P.Step, s: dict) -> None:
+        lit = resolve(step.term, s, {})
+        if lit.__class__ is not Literal:
+            raise ActionError(f"{term_str(lit)} is not a belief", "body_var_without_value")
+        lit = _with_source(lit)
+        added = self.bb.add(lit, at_end=step.kind == P.ADD_BEL_END)
+        if added is None:
+            self._advance(i)
+            return
+        trig = P.Trigger("+", P.BELIEF, lit)
+        if step.kind == P.ADD_BEL_NF:
+            self.post(Event(trig, None))
+            self._advance(i)
+        else:
+            self.post(Event(trig, i))
+
+    def _del_belief_step(self, i: Intention, step: P.Step, s: dict) -> None:
+        lit = resolve(step.term, s)
+        if lit.__class__ is not Literal:
+            raise ActionError(f"{term_str(lit)} is not a belief", "body_var_without_value")
+        lit = _with_source(lit)
+        gone = self._remove_matching(lit, s)
+        if gone is None:
+            self._advance(i)
+            return
+        trig = P.Trigger("-", P.BELIEF, gone)
+        if step.kind == P.DEL_BEL_NF:
+            self.post(Event(trig, None))
+            self._advance(i)
+        else:
+            self.post(Event(trig, i))
+
+    def _remove_matching(self, lit: Literal, s: dict) -> Literal | None:
+        if lit.ground:
+            return self.bb.remove(lit)
+        for b in self.bb.candidates(lit.key):
+            if b.__class__ is not Literal:
+                continue
+            mark: list = []
+            if unify(lit, b, s, mark):
+                exact = resolve(lit, s)
+                if not exact.ground:
+                    exact = Literal(b.functor, b.args, exact.annots, b.neg)
+                return self.bb.remove(exact)
+            for v in mark:
+                del s[v]
+        return None
+
+    def _del_add_step(self, i: Intention, step: P.Step, s: dict) -> None:
+        lit = resolve(step.term, s, {})
+        if lit.__class__ is not Literal:
+            raise ActionError(f"{term_str(lit)} is not a belief", "body_var_without_value")
+        lit = _with_source(lit)
+        gone = self.bb.remove_first(lit.key, lit.annots)
+        if gone is not None:
+            self.post(Event(P.Trigger("-", P.BELIEF, gone), None))
+        added = self.bb.add(lit)
+        if added is None:
+            self._advance(i)
+            return
+        self.post(Event(P.Trigger("+", P.BELIEF, lit), i))
+
+    def _test_step(self, i: Intention, step: P.Step, s: dict) -> None:
+        f = step.term
+        if holds(self, f, s, []):
+            self._advance(i)
+            return
+        lit = deref(f, s)
+        if lit.__class__ is Literal and not lit.functor.startswith("."):
+            lit = _with_source(resolve(lit, s, {}))
+            trig = P.Trigger("+", P.TEST, lit)
+            if self.pl.has_candidate(trig):
+                self.post(Event(trig, i))
+                return
+        self.fail_intention(i, "test_goal_failed", f"Failed to test '{term_str(resolve(f, s))}'")
+
+    def _if_step(self, i: Intention, im: IntendedMeans, step: P.Step) -> None:
+        s = im.s
+        block = None
+        chosen = False
+        for cond, body in step.blocks:
+            if holds(self, cond, s, []):
+                block = body
+                chosen = True
+                break
+        if not chosen:
+            block = step.state
+        rest = im.cur[1]
+        im.cur = (None, P.prepend(block, rest)) if block is not None else (None, rest)
+        self._advance(i)
+
+    def _while_step(self, i: Intention, im: IntendedMeans, step: P.Step) -> None:
+        s = im.s
+        if step.kind == P.WHILE:
+            backup = dict(s)
+            loop = P.Step(P.WHILE_AGAIN, step.term, step.blocks, step.line, backup)
+        else:
+            backup = step.state
+            s.clear()
+            s.update(backup)
+            loop = step
+        rest = im.cur[1]
+        if holds(self, step.term, s, []):
+            im.cur = (None, P.prepend(step.blocks[0], (loop, rest)))
+        else:
+            im.cur = (None, rest)
+        self._advance(i)
+
+    def _for_step(self, i: Intention, im: IntendedMeans, step: P.Step) -> None:
+        s = im.s
+        if step.kind == P.FOR:
+            backup = dict(s)
+            sols: list[dict] = []
+            work = dict(s)
+            for _ in solve(self, step.term, work, []):
+                sols.append(dict(work))
+            state = (iter(sols), backup)
+            loop = P.Step(P.FOR_NEXT, step.term, step.blocks, step.line, state)
+        else:
+            state = step.state
+            loop = step
+        it, backup = state
+        rest = im.cur[1]
+        nxt = next(it, None)
+        s.clear()
+        if nxt is not None:
+            s.update(nxt)
+            im.cur = (None, P.prepend(step.blocks[0], (loop, rest)))
+        else:
+            s.update(backup)
+            im.cur = (None, rest)
+        self._advance(i)
+
+    # ------------------------------------------------------------------ goals
+    def intentions(self) -> list[Intention]:
+        """All live intentions."""
+        return self.C.intentions()
+
+    def drop_goal(self, goal: Literal, how: str, current: Intention | None = None) -> bool:
+        """Jason's ``.succeed_goal``/``.fail_goal``/``.drop_intention`` on every intention
+        that has ``goal`` in its stack; returns True if ``current`` was changed."""
+        touched_current = False
+        for i in self.C.intentions() + ([current] if current is not None else []):
+            if i.dropped or not i.stack:
+                continue
+            for pos in range(len(i.stack) - 1, -1, -1):
+                im = i.stack[pos]
+                t = im.trigger
+                if t.kind == P.ACHIEVE and t.op == "+" and _unifies(goal, t.literal, {}):
+                    break
+            else:
+                continue
+            if i is current:
+                touched_current = True
+            if how == "drop":
+                self._drop(i)
+                continue
+            if how == "fail":
+                del i.stack[pos + 1 :]
+                self._unschedule(i)
+                self.fail_intention(i, "ia_failed", "goal failed by .fail_goal")
+                continue
+            # succeed: remove the goal's plan and continue its caller
+            del i.stack[pos:]
+            self._unschedule(i)
+            if not i.stack:
+                i.dropped = True
+                continue
+            caller = i.stack[-1]
+            if caller.cur is not None:
+                caller.cur = caller.cur[1]
+            if caller.cur is None:
+                self._clear(i)
+            if i.stack:
+                self._requeue(i)
+        # events for the goal (not yet intentions) go too
+        if how != "fail":
+            self.C.keep_events(
+                lambda e: (
+                    not (
+                        e.intention is None
+                        and e.trigger.kind == P.ACHIEVE
+                        and _unifies(goal, e.trigger.literal, {})
+                    )
+                )
+            )
+        return touched_current
+
+    def _unschedule(self, i: Intention) -> None:
+        C = self.C
+        C.pending.pop(i.id, None)
+        if C.atomic_intention is i:
+            C.atomic_intention = None
+        if C.atomic_event is not None and C.atomic_event.intention is i:
+            C.atomic_event = None
+        if i in C.running:
+            C.running.remove(i)
+        C.keep_events(lambda e: e.intention is not i)
+
+
+def _is_atomic(i: Intention) -> bool:
+    for im in i.stack:
+        label = im.plan.label
+        if label is not None and label.annots:
+            for a in label.annots:
+                if a.__class__ is Literal and a.functor == "atomic":
+                    return True
+    return False
+
+
+def _unifies(a: Term, b: Term, s: dict) -> bool:
+    """Test unification without keeping any binding."""
+    trail: list = []
+    ok = unify(a, b, s, trail)
+    for v in trail:
+        del s[v]
+    return ok
+
+
+def _propagate(val: Term, chain: list) -> Term:
+    for step_term, s2, trig_lit in chain:
+        unify(step_term, val, s2, [])
+        val = resolve(trig_lit, s2)
+    return val
+
+
+def _default_printer(name: str, text: str) -> None:
+    sys.stdout.write(f"[{name}] {text}\n")
+
+
+def _default_warner(name: str, text: str) -> None:
+    sys.stderr.write(f"[{name}] {text}\n")
+
+
+def iter_solutions(agent: Agent, f: Term, s: dict) -> Iterator[dict]:
+    """Snapshots of the substitution for each solution of ``f``."""
+    for _ in solve(agent, f, s, []):
+        yield dict(s)
+
+
+__all__ = ["Agent", "ActionHandle", "ParseError", "SUSPEND", "DONE"]

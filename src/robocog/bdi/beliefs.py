@@ -1,0 +1,265 @@
+"""The belief base: facts and rules indexed by predicate, in Jason's order.
+
+Jason adds a new belief at the *front* of its predicate's list, so queries see the
+newest belief first; initial beliefs are inserted back to front, so they are seen in
+program order. A belief that is added again only gains the new annotations; removing a
+belief removes the given annotations and drops the belief once no ``source`` is left.
+Iteration order is fully determined by the order of operations.
+"""
+
+from __future__ import annotations
+
+import itertools
+from collections.abc import Iterator
+from typing import Any
+
+from robocog.bdi.logic import solve
+from robocog.bdi.parser import Rule
+from robocog.bdi.terms import Literal, Term, Var, is_ground, sort_annots
+from robocog.bdi.unifier import rename, undo, unify
+
+_ids = itertools.count()
+
+
+class StoredRule:
+    """A rule in the belief base; its variables are renamed at each use."""
+
+    __slots__ = ("head", "body")
+
+    def __init__(self, head: Literal, body: Term) -> None:
+        self.head = head
+        self.body = body
+
+    def __repr__(self) -> str:
+        return f"{self.head!r} :- {self.body!r}"
+
+
+class BeliefBase:
+    """Facts and rules, indexed by ``(functor, arity, negated)``.
+
+    Ground facts are also indexed by their first argument, so a query such as
+    ``item(I, V)`` with ``I`` bound looks at the facts about ``I`` only (when the
+    predicate has no rule and no fact with variables, which could match anything).
+    """
+
+    def __init__(self) -> None:
+        self._index: dict[tuple, dict] = {}
+        self._first: dict[tuple, dict] = {}
+        self._mixed: dict[tuple, int] = {}
+        self._size = 0
+
+    # ---- the two primitive changes (keep both indexes in step)
+    def _put(self, key: tuple, k: object, value: Literal | StoredRule, at_end: bool) -> None:
+        bucket = self._index.get(key)
+        if bucket is None:
+            bucket = self._index[key] = {}
+        new = k not in bucket
+        if at_end and new and bucket:
+            items = list(bucket.items())
+            bucket.clear()
+            bucket[k] = value
+            bucket.update(items)
+        else:
+            bucket[k] = value
+        if new:
+            self._size += 1
+        if value.__class__ is Literal and value.ground and value.args:
+            sub = self._first.setdefault(key, {}).setdefault(value.args[0], {})
+            if at_end and new and sub:
+                items = list(sub.items())
+                sub.clear()
+                sub[k] = value
+                sub.update(items)
+            else:
+                sub[k] = value
+        elif new:
+            self._mixed[key] = self._mixed.get(key, 0) + 1
+
+    def _del(self, key: tuple, k: object) -> None:
+        bucket = self._index[key]
+        value = bucket.pop(k)
+        self._size -= 1
+        if value.__class__ is Literal and value.ground and value.args:
+            sub = self._first[key][value.args[0]]
+            del sub[k]
+            if not sub:
+                del self._first[key][value.args[0]]
+        else:
+            self._mixed[key] -= 1
+
+    # ---- changes
+    def add(self, lit: Literal, at_end: bool = False) -> Literal | None:
+        """Add ``lit``; returns what was added (annotations new to the base) or ``None``."""
+        key = lit.key
+        if lit.ground:
+            k = lit.args
+            bucket = self._index.get(key)
+            old = bucket.get(k) if bucket else None
+            if old is not None:
+                merged = sort_annots(old.annots + lit.annots)
+                if merged == old.annots:
+                    return None
+                self._put(key, k, Literal(old.functor, old.args, merged, old.neg), False)
+                return lit
+        else:
+            k = ("_var", next(_ids))
+        self._put(key, k, lit, at_end)
+        return lit
+
+    def add_rule(self, rule: Rule | StoredRule, at_end: bool = False) -> None:
+        """Add a rule (rules live with the facts of their head's predicate)."""
+        stored = StoredRule(rule.head, rule.body)
+        self._put(stored.head.key, stored, stored, at_end)
+
+    def find(self, lit: Literal) -> Literal | None:
+        """The stored belief equal to ``lit`` apart from annotations (ground only)."""
+        bucket = self._index.get(lit.key)
+        if not bucket or not lit.ground:
+            return None
+        got = bucket.get(lit.args)
+        return got if got.__class__ is Literal else None
+
+    def _take_annots(self, key: tuple, k: object, old: Literal, annots: tuple) -> Literal | None:
+        """Remove ``annots`` from a stored fact; drop it when no source is left."""
+        if not annots:
+            self._del(key, k)
+            return old
+        keep = tuple(a for a in old.annots if a not in annots)
+        gone = tuple(a for a in old.annots if a in annots)
+        if not gone:
+            return None
+        if any(a.__class__ is Literal and a.functor == "source" for a in keep):
+            self._put(key, k, Literal(old.functor, old.args, keep, old.neg), False)
+        else:
+            self._del(key, k)
+        return Literal(old.functor, old.args, gone, old.neg)
+
+    def remove(self, lit: Literal) -> Literal | None:
+        """Remove ``lit``'s annotations from its belief; returns what was removed."""
+        bucket = self._index.get(lit.key)
+        if not bucket or not lit.ground:
+            return None
+        old = bucket.get(lit.args)
+        if old is None or old.__class__ is not Literal:
+            return None
+        return self._take_annots(lit.key, lit.args, old, lit.annots)
+
+    def remove_first(self, key: tuple, annots: tuple) -> Literal | None:
+        """``-+``'s removal: the newest fact of ``key`` that has all of ``annots``
+        loses them (and goes if no source is left); returns what was removed."""
+        bucket = self._index.get(key)
+        if not bucket:
+            return None
+        for k in reversed(bucket):
+            old = bucket[k]
+            if old.__class__ is not Literal:
+                continue
+            oa = old.annots
+            if all(a in oa for a in annots):
+                return self._take_annots(key, k, old, annots)
+        return None
+
+    def remove_entry(self, stored: Literal) -> bool:
+        """Remove exactly this stored belief, whatever its annotations."""
+        bucket = self._index.get(stored.key)
+        if not bucket:
+            return False
+        for k, v in bucket.items():
+            if v is stored:
+                self._del(stored.key, k)
+                return True
+        return False
+
+    def abolish(self, pattern: Literal) -> list[Literal]:
+        """Remove every fact unifying with ``pattern``; returns them."""
+        bucket = self._index.get(pattern.key)
+        if not bucket:
+            return []
+        gone = []
+        for k, v in list(bucket.items()):
+            if v.__class__ is Literal and unify(pattern, v, {}, []):
+                self._del(pattern.key, k)
+                gone.append(v)
+        return gone
+
+    def clear(self) -> None:
+        """Forget everything."""
+        self._index.clear()
+        self._first.clear()
+        self._mixed.clear()
+        self._size = 0
+
+    # ---- reading
+    def candidates(self, key: tuple) -> tuple:
+        """Facts and rules of one predicate, newest first (a snapshot)."""
+        bucket = self._index.get(key)
+        if not bucket:
+            return ()
+        vals = tuple(bucket.values())
+        return vals[::-1]
+
+    def query(
+        self,
+        pattern: Literal,
+        s: dict,
+        trail: list,
+        agent: Any,
+    ) -> Iterator[None]:
+        """Yield once per fact or rule solution unifying with ``pattern`` (bindings in ``s``)."""
+        key = (pattern.functor, len(pattern.args), pattern.neg)
+        bucket = self._index.get(key)
+        if not bucket:
+            return
+        if pattern.args and not self._mixed.get(key):
+            a0 = pattern.args[0]
+            while a0.__class__ is Var:
+                v = s.get(a0)
+                if v is None:
+                    break
+                a0 = v
+            if a0.__class__ is not Var and is_ground(a0):
+                sub = self._first[key].get(a0)
+                if not sub:
+                    return
+                if pattern.ground and not pattern.annots:
+                    got = sub.get(pattern.args)
+                    if got is not None:
+                        yield None
+                    return
+                cands = tuple(sub.values())[::-1]
+            else:
+                cands = tuple(bucket.values())[::-1]
+        else:
+            cands = tuple(bucket.values())[::-1]
+        mark = len(trail)
+        for b in cands:
+            if b.__class__ is Literal:
+                if not b.ground:
+                    b = rename(b, {})
+                if unify(pattern, b, s, trail):
+                    yield None
+                undo(s, trail, mark)
+            else:
+                m: dict = {}
+                head = rename(b.head, m)
+                body = rename(b.body, m)
+                if unify(pattern, head, s, trail):
+                    yield from solve(agent, body, s, trail)
+                undo(s, trail, mark)
+
+    def __iter__(self) -> Iterator[Literal]:
+        """All facts (not rules), predicate by predicate, newest first."""
+        for bucket in self._index.values():
+            for v in reversed(tuple(bucket.values())):
+                if v.__class__ is Literal:
+                    yield v
+
+    def rules(self) -> Iterator[StoredRule]:
+        """All rules."""
+        for bucket in self._index.values():
+            for v in reversed(tuple(bucket.values())):
+                if v.__class__ is StoredRule:
+                    yield v
+
+    def __len__(self) -> int:
+        return self._size

@@ -1,0 +1,194 @@
+"""Logical consequence: contexts, rule bodies, test goals and conditions.
+
+``solve`` is a Prolog-style generator: it yields once for each solution, with the
+bindings of that solution present in the substitution, and removes them before
+looking for the next one. Solutions come in a fixed order (belief base order, then
+left to right), so an agent is deterministic.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+from robocog.bdi.terms import And, Body, Literal, Not, Or, Rel, Term, Var, compare, term_str
+from robocog.bdi.unifier import EvalError, deref, evaluate, resolve, undo, unify
+
+if TYPE_CHECKING:
+    from robocog.bdi.agent import Agent
+
+
+class ActionError(Exception):
+    """An internal action was called wrongly; becomes an ``ia_failed`` goal failure."""
+
+    def __init__(self, message: str, error: str = "ia_failed") -> None:
+        super().__init__(message)
+        self.error = error
+
+
+def solve(agent: Agent, f: Term, s: dict, trail: list) -> Iterator[None]:
+    """Yield once per way ``f`` follows from the agent's beliefs (bindings left in ``s``)."""
+    c = f.__class__
+    if c is Var:
+        f = deref(f, s)
+        c = f.__class__
+        if c is Var:
+            raise ActionError(f"unbound variable {f.name} used as a formula")
+    if c is Literal:
+        functor = f.functor
+        if functor[0] == ".":
+            yield from _internal(agent, f, s, trail)
+            return
+        if not f.args and not f.neg and not f.annots:
+            if functor == "true":
+                yield None
+                return
+            if functor == "false":
+                return
+        yield from agent.bb.query(f, s, trail, agent)
+        return
+    if c is And:
+        for _ in solve(agent, f.left, s, trail):
+            yield from solve(agent, f.right, s, trail)
+        return
+    if c is Or:
+        yield from solve(agent, f.left, s, trail)
+        yield from solve(agent, f.right, s, trail)
+        return
+    if c is Not:
+        mark = len(trail)
+        for _ in solve(agent, f.arg, s, trail):
+            undo(s, trail, mark)
+            return
+        yield None
+        return
+    if c is Rel:
+        mark = len(trail)
+        if relation(f, s, trail):
+            yield None
+        undo(s, trail, mark)
+        return
+    if c is Body:
+        raise ActionError("a plan body is not a logical formula")
+    raise ActionError(f"{term_str(f)} is not a logical formula")
+
+
+def holds(agent: Agent, f: Term, s: dict, trail: list) -> bool:
+    """First solution of ``f``: its bindings stay in ``s``; False leaves ``s`` unchanged."""
+    c = f.__class__
+    if c is Rel:
+        mark = len(trail)
+        if relation(f, s, trail):
+            return True
+        undo(s, trail, mark)
+        return False
+    if c is And:
+        left = f.left
+        if left.__class__ is Rel or left.__class__ is Not:
+            # a deterministic left side needs no backtracking into it
+            mark = len(trail)
+            if holds(agent, left, s, trail) and holds(agent, f.right, s, trail):
+                return True
+            undo(s, trail, mark)
+            return False
+    elif c is Not:
+        mark = len(trail)
+        if holds(agent, f.arg, s, trail):
+            undo(s, trail, mark)
+            return False
+        return True
+    for _ in solve(agent, f, s, trail):
+        return True
+    return False
+
+
+def relation(f: Rel, s: dict, trail: list) -> bool:
+    """Evaluate a relational expression, binding for ``=`` and ``=..``."""
+    op = f.op
+    try:
+        left = evaluate(f.left, s)
+        right = evaluate(f.right, s)
+    except EvalError as exc:
+        raise ActionError(str(exc)) from exc
+    if op == "=":
+        return unify(left, right, s, trail)
+    if op == "\\=":
+        mark = len(trail)
+        ok = unify(left, right, s, trail)
+        undo(s, trail, mark)
+        return not ok
+    if op == "==":
+        return _equal(left, right, s)
+    if op == "\\==":
+        return not _equal(left, right, s)
+    if op == "=..":
+        return _univ(left, right, s, trail)
+    lc, rc = left.__class__, right.__class__
+    if (lc is int or lc is float) and (rc is int or rc is float):
+        a, b = left, right
+        if op == "<":
+            return a < b
+        if op == "<=":
+            return a <= b
+        if op == ">":
+            return a > b
+        if op == ">=":
+            return a >= b
+    else:
+        left = resolve(left, s)
+        right = resolve(right, s)
+        if left.__class__ is Var or right.__class__ is Var:
+            return False
+        cmp = compare(left, right)
+        if op == "<":
+            return cmp < 0
+        if op == "<=":
+            return cmp <= 0
+        if op == ">":
+            return cmp > 0
+        if op == ">=":
+            return cmp >= 0
+    raise ActionError(f"unknown operator {op}")
+
+
+def _equal(a: Term, b: Term, s: dict) -> bool:
+    a = resolve(a, s)
+    b = resolve(b, s)
+    if a.__class__ is Var or b.__class__ is Var:
+        return a is b
+    if (a.__class__ in (int, float)) != (b.__class__ in (int, float)):
+        return False
+    return a == b
+
+
+def _univ(left: Term, right: Term, s: dict, trail: list) -> bool:
+    from robocog.bdi.terms import NIL, Cons, iter_list, make_list
+
+    left = resolve(left, s)
+    if left.__class__ is Literal:
+        parts = make_list([Literal(left.functor), make_list(left.args), make_list(left.annots)])
+        return unify(parts, right, s, trail)
+    right = resolve(right, s)
+    if right.__class__ is Cons:
+        items = list(iter_list(right))
+        if not items or items[0].__class__ is not Literal:
+            return False
+        args = tuple(iter_list(items[1])) if len(items) > 1 else ()
+        annots = tuple(iter_list(items[2])) if len(items) > 2 else ()
+        lit = Literal(items[0].functor, args, annots)
+        return unify(left, lit, s, trail)
+    return right is NIL and False
+
+
+def _internal(agent: Agent, lit: Literal, s: dict, trail: list) -> Iterator[None]:
+    """An internal action used as a formula (in a context, condition or rule)."""
+    fn = agent.internal_action(lit.functor)
+    if fn is None:
+        raise ActionError(f"unknown internal action {lit.functor}")
+    result = fn(agent, lit.args, s, trail, None)
+    if result is True:
+        yield None
+    elif result is False or result is None:
+        return
+    else:
+        yield from result

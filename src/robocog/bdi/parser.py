@@ -1,0 +1,474 @@
+"""Jason's AgentSpeak syntax read with a lark LALR grammar (``agentspeak.lark``).
+
+The transformer builds terms, plans and compiled bodies while parsing. Variables with
+the same name inside one clause (belief, rule, goal or plan) are the same
+:class:`~robocog.bdi.terms.Var`; ``_`` is a new variable at each occurrence.
+
+Every failure, whatever the input, is a :class:`ParseError` naming the line and column.
+"""
+
+from __future__ import annotations
+
+import threading
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import lark
+from lark import Token, Transformer, v_args
+
+from robocog.bdi import plans as P
+from robocog.bdi.terms import (
+    NIL,
+    And,
+    Arith,
+    Body,
+    Cons,
+    Literal,
+    Not,
+    Or,
+    Rel,
+    Term,
+    Var,
+    sort_annots,
+)
+
+
+class ParseError(ValueError):
+    """Bad AgentSpeak text; ``line`` and ``column`` are 1-based."""
+
+    def __init__(self, message: str, line: int, column: int, source: str = "") -> None:
+        self.line = line
+        self.column = column
+        self.source = source
+        self.reason = message
+        where = f"{source}:" if source else ""
+        super().__init__(f"{where}{line}:{column}: {message}")
+
+
+@dataclass
+class Rule:
+    """``head :- body``: a belief that holds when its body does."""
+
+    head: Literal
+    body: Term
+
+
+@dataclass
+class Program:
+    """What a source file declares, in program order."""
+
+    beliefs: list = field(default_factory=list)  # Literal or Rule, in order
+    goals: list[Literal] = field(default_factory=list)
+    plans: list[P.Plan] = field(default_factory=list)
+
+
+def _unescape(s: str) -> str:
+    out = []
+    i = 0
+    while i < len(s):
+        c = s[i]
+        if c == "\\" and i + 1 < len(s):
+            n = s[i + 1]
+            out.append({"n": "\n", "t": "\t", "r": "\r"}.get(n, n))
+            i += 2
+        else:
+            out.append(c)
+            i += 1
+    return "".join(out)
+
+
+class _Builder(Transformer):
+    """Builds AgentSpeak objects bottom-up while the LALR parser reduces."""
+
+    def __init__(self) -> None:
+        super().__init__(visit_tokens=False)
+        self.vars: dict[str, Var] = {}
+        self.source = ""
+
+    def _clause_done(self) -> None:
+        self.vars = {}
+
+    # ---- items
+    def start(self, items: list) -> list:
+        return items
+
+    def belief(self, items: list) -> tuple:
+        self._clause_done()
+        return ("belief", items[0])
+
+    def rule(self, items: list) -> tuple:
+        self._clause_done()
+        return ("rule", Rule(items[0], items[1]))
+
+    def initial_goal(self, items: list) -> tuple:
+        self._clause_done()
+        return ("goal", items[0])
+
+    def directive(self, items: list) -> tuple:
+        self._clause_done()
+        return ("directive", str(items[0]))
+
+    def directive_body(self, items: list) -> str:
+        return str(items[0])
+
+    @v_args(meta=True)
+    def plan(self, meta, items: list) -> tuple:  # noqa: ANN001 - lark meta
+        self._clause_done()
+        label = None
+        context = None
+        body = None
+        trigger = None
+        for it in items:
+            if isinstance(it, tuple) and it[0] == "label":
+                label = it[1]
+            elif isinstance(it, tuple) and it[0] == "context":
+                context = it[1]
+            elif isinstance(it, tuple) and it[0] == "body":
+                body = it[1]
+            elif isinstance(it, P.Trigger):
+                trigger = it
+        line = getattr(meta, "line", 0) if not getattr(meta, "empty", True) else 0
+        return ("plan", P.Plan(trigger, context, body, label, self.source, line))
+
+    def label(self, items: list) -> tuple:
+        return ("label", items[0])
+
+    def context(self, items: list) -> tuple:
+        ctx = items[0]
+        if ctx.__class__ is Literal and ctx.functor == "true" and not ctx.args:
+            ctx = None
+        return ("context", ctx)
+
+    def plan_body(self, items: list) -> tuple:
+        return ("body", items[0])
+
+    def trigger(self, items: list) -> P.Trigger:
+        op = items[0]
+        kind = items[1] if len(items) == 3 else P.BELIEF
+        lit = items[-1]
+        if isinstance(lit, Token):
+            lit = self._var(str(lit))
+        return P.Trigger(op, kind, lit)
+
+    def trig_op(self, items: list) -> str:
+        return str(items[0])
+
+    def trig_kind(self, items: list) -> str:
+        return str(items[0])
+
+    # ---- bodies
+    def body(self, items: list) -> P.Chain:
+        steps = [s for s in items if s is not None]
+        return P.chain(steps)
+
+    def _step(self, kind: int, meta, term: Term) -> P.Step:  # noqa: ANN001
+        line = meta.line if not getattr(meta, "empty", True) else 0
+        if isinstance(term, Token):
+            term = self._var(str(term))
+        return P.Step(kind, term, line=line)
+
+    @v_args(meta=True)
+    def achieve(self, meta, items: list) -> P.Step:  # noqa: ANN001
+        return self._step(P.ACHIEVE_STEP, meta, items[0])
+
+    @v_args(meta=True)
+    def achieve_nf(self, meta, items: list) -> P.Step:  # noqa: ANN001
+        return self._step(P.ACHIEVE_NF, meta, items[0])
+
+    @v_args(meta=True)
+    def test(self, meta, items: list) -> P.Step:  # noqa: ANN001
+        return self._step(P.TEST_STEP, meta, items[0])
+
+    @v_args(meta=True)
+    def add_bel(self, meta, items: list) -> P.Step:  # noqa: ANN001
+        return self._step(P.ADD_BEL, meta, items[0])
+
+    @v_args(meta=True)
+    def add_bel_nf(self, meta, items: list) -> P.Step:  # noqa: ANN001
+        return self._step(P.ADD_BEL_NF, meta, items[0])
+
+    @v_args(meta=True)
+    def add_bel_end(self, meta, items: list) -> P.Step:  # noqa: ANN001
+        return self._step(P.ADD_BEL_END, meta, items[0])
+
+    @v_args(meta=True)
+    def del_bel(self, meta, items: list) -> P.Step:  # noqa: ANN001
+        return self._step(P.DEL_BEL, meta, items[0])
+
+    @v_args(meta=True)
+    def del_bel_nf(self, meta, items: list) -> P.Step:  # noqa: ANN001
+        return self._step(P.DEL_BEL_NF, meta, items[0])
+
+    @v_args(meta=True)
+    def del_add_bel(self, meta, items: list) -> P.Step:  # noqa: ANN001
+        return self._step(P.DEL_ADD_BEL, meta, items[0])
+
+    @v_args(meta=True)
+    def formula(self, meta, items: list) -> P.Step | None:  # noqa: ANN001
+        t = items[0]
+        c = t.__class__
+        if c is Literal:
+            if t.functor == "true" and not t.args and not t.neg:
+                return None
+            kind = P.INTERNAL if t.functor.startswith(".") else P.ACTION
+            return self._step(kind, meta, t)
+        if c is Var:
+            return self._step(P.ACTION, meta, t)
+        return self._step(P.CONSTRAINT, meta, t)
+
+    @v_args(meta=True)
+    def if_stmt(self, meta, items: list) -> P.Step:  # noqa: ANN001
+        cond, then = items[0], items[1]
+        branches = [(cond, then)]
+        orelse = None
+        for it in items[2:]:
+            if it[0] == "elif":
+                branches.append((it[1], it[2]))
+            else:
+                orelse = it[1]
+        line = meta.line if not getattr(meta, "empty", True) else 0
+        return P.Step(P.IF, cond, tuple(branches), line=line, state=orelse)
+
+    def elif_part(self, items: list) -> tuple:
+        return ("elif", items[0], items[1])
+
+    def else_part(self, items: list) -> tuple:
+        return ("else", items[0])
+
+    @v_args(meta=True)
+    def while_stmt(self, meta, items: list) -> P.Step:  # noqa: ANN001
+        line = meta.line if not getattr(meta, "empty", True) else 0
+        return P.Step(P.WHILE, items[0], (items[1],), line=line)
+
+    @v_args(meta=True)
+    def for_stmt(self, meta, items: list) -> P.Step:  # noqa: ANN001
+        line = meta.line if not getattr(meta, "empty", True) else 0
+        return P.Step(P.FOR, items[0], (items[1],), line=line)
+
+    # ---- formulas
+    def or_(self, items: list) -> Or:
+        return Or(items[0], items[1])
+
+    def and_(self, items: list) -> And:
+        return And(items[0], items[1])
+
+    def not_(self, items: list) -> Not:
+        return Not(items[0])
+
+    def rel(self, items: list) -> Rel:
+        return Rel(items[1], items[0], items[2])
+
+    def relop(self, items: list) -> str:
+        return str(items[0])
+
+    def addop(self, items: list) -> str:
+        return str(items[0])
+
+    def mulop(self, items: list) -> str:
+        return str(items[0])
+
+    def arith(self, items: list) -> Term:
+        if len(items) == 2:
+            left, op, right = items[0], "**", items[1]
+        else:
+            left, op, right = items
+        return Arith(op, left, right)
+
+    def neg(self, items: list) -> Term:
+        x = items[0]
+        if x.__class__ is int or x.__class__ is float:
+            return -x
+        return Arith("-", x)
+
+    # ---- terms
+    def number(self, items: list) -> int | float:
+        s = str(items[0])
+        if "." in s or "e" in s or "E" in s:
+            return float(s)
+        return int(s)
+
+    def string(self, items: list) -> str:
+        return _unescape(str(items[0])[1:-1])
+
+    def _var(self, name: str) -> Var:
+        v = self.vars.get(name)
+        if v is None:
+            v = self.vars[name] = Var(name)
+        return v
+
+    def var(self, items: list) -> Var:
+        return self._var(str(items[0]))
+
+    def unnamed(self, items: list) -> Var:
+        return Var("_")
+
+    def var_annots(self, items: list) -> Var:
+        return self._var(str(items[0]))
+
+    def body_term(self, items: list) -> Body:
+        return Body(tuple(P.chain_steps(items[0])))
+
+    def functor(self, items: list) -> str:
+        s = str(items[0])
+        if s.startswith("'"):
+            s = s[1:-1]
+        return s
+
+    def literal(self, items: list) -> Literal:
+        neg = False
+        i = 0
+        if isinstance(items[0], Token) and items[0].type == "NEG":
+            neg = True
+            i = 1
+        functor = items[i]
+        args: tuple = ()
+        annots: tuple = ()
+        for it in items[i + 1 :]:
+            if isinstance(it, tuple) and it and it[0] == "args":
+                args = it[1]
+            elif isinstance(it, tuple) and it and it[0] == "annots":
+                annots = sort_annots(it[1])
+        lit = Literal(functor, args, annots, neg)
+        if functor.startswith("math.") and not neg and not annots:
+            return Arith("call", lit)
+        return lit
+
+    def args(self, items: list) -> tuple:
+        return ("args", tuple(x for x in items if x is not None))
+
+    def annots(self, items: list) -> tuple:
+        return ("annots", tuple(x for x in items if x is not None))
+
+    def empty_list(self, items: list) -> Term:
+        return NIL
+
+    def list(self, items: list) -> Term:
+        elems = items[0]
+        tail = items[1] if len(items) > 1 else NIL
+        out = tail
+        for e in reversed(elems):
+            out = Cons(e, out)
+        return out
+
+    def list_items(self, items: list) -> list:
+        return items
+
+
+_GRAMMAR = Path(__file__).with_name("agentspeak.lark")
+_lock = threading.Lock()
+_parsers: dict[str, tuple[lark.Lark, _Builder]] = {}
+
+
+def _parser() -> tuple[lark.Lark, _Builder]:
+    got = _parsers.get("lalr")
+    if got is None:
+        builder = _Builder()
+        p = lark.Lark(
+            _GRAMMAR.read_text(encoding="utf-8"),
+            parser="lalr",
+            start=["start", "term_entry"],
+            propagate_positions=True,
+            maybe_placeholders=False,
+            cache=True,
+        )
+        got = _parsers["lalr"] = (p, builder)
+    return got
+
+
+def _position(text: str, pos: int) -> tuple[int, int]:
+    line = text.count("\n", 0, pos) + 1
+    col = pos - (text.rfind("\n", 0, pos) + 1) + 1
+    return line, col
+
+
+def _describe(exc: lark.exceptions.UnexpectedInput) -> str:
+    if isinstance(exc, lark.exceptions.UnexpectedEOF):
+        return "unexpected end of input"
+    if isinstance(exc, lark.exceptions.UnexpectedToken):
+        tok = exc.token
+        if tok.type == "$END":
+            return "unexpected end of input"
+        return f"unexpected {str(tok)!r}"
+    if isinstance(exc, lark.exceptions.UnexpectedCharacters):
+        ch = exc.char if hasattr(exc, "char") else "?"
+        return f"unexpected character {ch!r}"
+    return "syntax error"
+
+
+def _run(start: str, text: str, source: str):  # noqa: ANN202 - parse result
+    if not isinstance(text, str):
+        raise ParseError("source text must be a string", 1, 1, source)
+    with _lock:
+        parser, builder = _parser()
+        builder.vars = {}
+        builder.source = source
+        try:
+            tree = parser.parse(text, start=start)
+            return builder.transform(tree)
+        except lark.exceptions.UnexpectedInput as exc:
+            line, col = getattr(exc, "line", -1), getattr(exc, "column", -1)
+            at_end = isinstance(exc, lark.exceptions.UnexpectedEOF) or (
+                isinstance(exc, lark.exceptions.UnexpectedToken) and exc.token.type == "$END"
+            )
+            if at_end or not isinstance(line, int) or line < 1:
+                line, col = _position(text, len(text))
+            raise ParseError(_describe(exc), line, col, source) from None
+        except RecursionError:
+            raise ParseError("nesting too deep", 1, 1, source) from None
+        except lark.exceptions.VisitError as exc:
+            inner = exc.orig_exc
+            if isinstance(inner, RecursionError):
+                raise ParseError("nesting too deep", 1, 1, source) from None
+            raise ParseError(f"malformed input ({inner})", 1, 1, source) from None
+        except lark.exceptions.LarkError as exc:
+            raise ParseError(f"syntax error ({exc.__class__.__name__})", 1, 1, source) from None
+        except (ValueError, TypeError, AttributeError, IndexError) as exc:
+            raise ParseError(f"malformed input ({exc})", 1, 1, source) from None
+        finally:
+            builder.vars = {}
+
+
+def parse_program(text: str, source: str = "") -> Program:
+    """Parse a whole ``.asl`` program."""
+    items = _run("start", text, source)
+    prog = Program()
+    for kind, value in items:
+        if kind == "belief":
+            prog.beliefs.append(value)
+        elif kind == "rule":
+            prog.beliefs.append(value)
+        elif kind == "goal":
+            prog.goals.append(value)
+        elif kind == "plan":
+            prog.plans.append(value)
+    return prog
+
+
+def parse_file(path: str | Path) -> Program:
+    """Parse a program from a file; the file name is used in error messages."""
+    p = Path(path)
+    return parse_program(p.read_text(encoding="utf-8"), str(p))
+
+
+def parse_term(text: str) -> Term:
+    """Parse one term or logical formula, e.g. ``"p(X) & X > 2"``."""
+    return _run("term_entry", text, "")
+
+
+def parse_literal(text: str) -> Literal:
+    """Parse one literal, e.g. ``"at(room1)[source(percept)]"``."""
+    t = parse_term(text)
+    if t.__class__ is not Literal:
+        raise ParseError(f"not a literal: {text!r}", 1, 1)
+    return t
+
+
+def parse_plan(text: str, source: str = "") -> P.Plan:
+    """Parse one plan (with or without the final dot)."""
+    text = text.strip()
+    if not text.endswith("."):
+        text += "."
+    prog = parse_program(text, source)
+    if len(prog.plans) != 1 or prog.beliefs or prog.goals:
+        raise ParseError("expected exactly one plan", 1, 1, source)
+    return prog.plans[0]

@@ -1,0 +1,243 @@
+"""Triggers, plan bodies and the plan library.
+
+A plan body is compiled once into a chain of immutable cells ``(step, next)`` so that an
+intended means only keeps a pointer into it: starting a plan costs nothing however long
+its body, and ``if``/``while``/``for`` insert their blocks in front of the rest of the
+chain without copying it.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+
+from robocog.bdi.terms import Literal, Term, Var, term_str
+
+# trigger kinds
+BELIEF = ""
+ACHIEVE = "!"
+TEST = "?"
+
+
+class Trigger:
+    """``+!g``, ``-!g``, ``+?g``, ``-?g``, ``+b`` or ``-b``."""
+
+    __slots__ = ("op", "kind", "literal")
+
+    def __init__(self, op: str, kind: str, literal: Term) -> None:
+        self.op = op
+        self.kind = kind
+        self.literal = literal
+
+    @property
+    def is_goal(self) -> bool:
+        """Achievement or test goal (as opposed to a belief change)."""
+        return self.kind != BELIEF
+
+    @property
+    def is_addition(self) -> bool:
+        """``+`` trigger."""
+        return self.op == "+"
+
+    def key(self) -> tuple | None:
+        """Index key in the plan library; ``None`` when the literal is a variable."""
+        lit = self.literal
+        if lit.__class__ is Literal:
+            return (self.op, self.kind, lit.functor, len(lit.args), lit.neg)
+        return None
+
+    def __repr__(self) -> str:
+        return f"{self.op}{self.kind}{term_str(self.literal)}"
+
+
+# body step kinds
+ACTION = 1
+INTERNAL = 2
+ACHIEVE_STEP = 3
+ACHIEVE_NF = 4
+TEST_STEP = 5
+ADD_BEL = 6
+ADD_BEL_NF = 7
+DEL_BEL = 8
+DEL_BEL_NF = 9
+DEL_ADD_BEL = 10
+ADD_BEL_END = 11
+CONSTRAINT = 12
+IF = 13
+WHILE = 14
+FOR = 15
+WHILE_AGAIN = 16
+FOR_NEXT = 17
+
+_PREFIX = {
+    ACHIEVE_STEP: "!",
+    ACHIEVE_NF: "!!",
+    TEST_STEP: "?",
+    ADD_BEL: "+",
+    ADD_BEL_NF: "++",
+    DEL_BEL: "-",
+    DEL_BEL_NF: "--",
+    DEL_ADD_BEL: "-+",
+    ADD_BEL_END: "+>",
+}
+
+
+class Step:
+    """One formula of a plan body.
+
+    ``term`` is the literal or formula; ``blocks`` holds the compiled chains of
+    ``if``/``while``/``for`` (and the conditions of ``elif``); ``line`` is where it was
+    written, for failure annotations.
+    """
+
+    __slots__ = ("kind", "term", "blocks", "line", "state")
+
+    def __init__(
+        self, kind: int, term: Term, blocks: tuple = (), line: int = 0, state: object = None
+    ) -> None:
+        self.kind = kind
+        self.term = term
+        self.blocks = blocks
+        self.line = line
+        self.state = state
+
+    def __repr__(self) -> str:
+        if self.kind in _PREFIX:
+            return _PREFIX[self.kind] + term_str(self.term)
+        if self.kind == IF:
+            return f"if ({term_str(self.term)}) {{ ... }}"
+        if self.kind in (WHILE, WHILE_AGAIN):
+            return f"while ({term_str(self.term)}) {{ ... }}"
+        if self.kind in (FOR, FOR_NEXT):
+            return f"for ({term_str(self.term)}) {{ ... }}"
+        return term_str(self.term)
+
+
+Chain = tuple | None  # (Step, Chain)
+
+
+def chain(steps: Iterable[Step], rest: Chain = None) -> Chain:
+    """Link steps into a body chain ending in ``rest``."""
+    out = rest
+    for st in reversed(list(steps)):
+        out = (st, out)
+    return out
+
+
+def prepend(block: Chain, rest: Chain) -> Chain:
+    """The steps of ``block`` followed by ``rest`` (copies only ``block``'s cells)."""
+    if rest is None:
+        return block
+    items = []
+    while block is not None:
+        items.append(block[0])
+        block = block[1]
+    out = rest
+    for st in reversed(items):
+        out = (st, out)
+    return out
+
+
+def chain_steps(c: Chain) -> list[Step]:
+    """The steps of a chain, in order."""
+    out = []
+    while c is not None:
+        out.append(c[0])
+        c = c[1]
+    return out
+
+
+class Plan:
+    """``@label trigger : context <- body.``"""
+
+    __slots__ = ("label", "trigger", "context", "body", "source", "line", "order")
+
+    def __init__(
+        self,
+        trigger: Trigger,
+        context: Term | None,
+        body: Chain,
+        label: Literal | None = None,
+        source: str = "",
+        line: int = 0,
+    ) -> None:
+        self.label = label
+        self.trigger = trigger
+        self.context = context
+        self.body = body
+        self.source = source
+        self.line = line
+        self.order = 0
+
+    def __repr__(self) -> str:
+        lab = f"@{term_str(self.label)} " if self.label is not None else ""
+        ctx = f" : {term_str(self.context)}" if self.context is not None else ""
+        body = "; ".join(repr(s) for s in chain_steps(self.body)) or "true"
+        return f"{lab}{self.trigger!r}{ctx} <- {body}."
+
+
+class PlanLibrary:
+    """Plans indexed by trigger (operator, kind, functor, arity), kept in program order."""
+
+    def __init__(self) -> None:
+        self._plans: list[Plan] = []
+        self._index: dict[tuple, list[Plan]] = {}
+        self._var_plans: list[Plan] = []
+        self._counter = 0
+        self._labels: dict[str, Plan] = {}
+
+    def add(self, plan: Plan, at_end: bool = True) -> None:
+        """Add a plan (at the end of program order, or at the beginning)."""
+        self._counter += 1
+        plan.order = self._counter if at_end else -self._counter
+        if plan.label is not None:
+            name = plan.label.functor
+            if name in self._labels:
+                self.remove(name)
+            self._labels[name] = plan
+        key = plan.trigger.key()
+        target = self._var_plans if key is None else self._index.setdefault(key, [])
+        if at_end:
+            target.append(plan)
+            self._plans.append(plan)
+        else:
+            target.insert(0, plan)
+            self._plans.insert(0, plan)
+
+    def remove(self, label: str) -> bool:
+        """Remove the plan with this label."""
+        plan = self._labels.pop(label, None)
+        if plan is None:
+            return False
+        self._plans.remove(plan)
+        key = plan.trigger.key()
+        (self._var_plans if key is None else self._index[key]).remove(plan)
+        return True
+
+    def get(self, label: str) -> Plan | None:
+        """The plan with this label, if any."""
+        return self._labels.get(label)
+
+    def candidates(self, trigger: Trigger) -> list[Plan]:
+        """Plans whose trigger may be relevant for ``trigger``, in program order."""
+        key = trigger.key()
+        found = self._index.get(key, ()) if key is not None else ()
+        if not self._var_plans:
+            return found  # type: ignore[return-value]
+        extra = [p for p in self._var_plans if p.trigger.op == trigger.op]
+        extra = [p for p in extra if p.trigger.kind == trigger.kind]
+        return sorted([*found, *extra], key=lambda p: p.order)
+
+    def has_candidate(self, trigger: Trigger) -> bool:
+        """True if some plan may handle ``trigger``."""
+        return bool(self.candidates(trigger))
+
+    def __iter__(self):  # noqa: ANN204 - iterator of plans
+        return iter(self._plans)
+
+    def __len__(self) -> int:
+        return len(self._plans)
+
+
+def is_var_trigger(t: Trigger) -> bool:
+    """True for a trigger such as ``+!G``."""
+    return t.literal.__class__ is Var

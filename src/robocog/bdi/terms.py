@@ -1,0 +1,579 @@
+"""AgentSpeak terms: variables, literals, lists, strings, numbers and expressions.
+
+Numbers are Python ``int``/``float`` and strings are Python ``str``, so the common cases
+cost nothing to build or compare. Atoms are literals without arguments. Literals are
+immutable, hashable and remember whether they are ground, which lets the unifier and
+the substitution skip work on the (very common) ground terms.
+
+Printing follows Jason: integral numbers without ``.0``, strings quoted inside terms,
+lists as ``[1,2]`` and annotations as ``p(a)[source(self)]``.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from collections.abc import Iterable, Iterator
+from typing import Any
+
+Term = Any  # Var | Literal | Cons | Nil | Arith | Rel | And | Or | Not | Body | str | int | float
+
+_fresh = itertools.count(1)
+
+
+class Var:
+    """A logic variable; identity (not the name) distinguishes variables."""
+
+    __slots__ = ("name",)
+
+    def __init__(self, name: str = "_") -> None:
+        self.name = name
+
+    def __repr__(self) -> str:
+        return self.name
+
+
+def fresh_var() -> Var:
+    """A new variable that cannot clash with any variable written in a program."""
+    return Var(f"_{next(_fresh)}")
+
+
+class Literal:
+    """``~functor(args)[annots]``: an atom, a structure, a belief or a goal.
+
+    ``annots`` is a tuple kept sorted in Jason's term order and free of duplicates.
+    """
+
+    __slots__ = ("functor", "args", "annots", "neg", "ground", "_hash")
+
+    def __init__(
+        self,
+        functor: str,
+        args: tuple = (),
+        annots: tuple = (),
+        neg: bool = False,
+    ) -> None:
+        self.functor = functor
+        self.args = args
+        self.annots = annots
+        self.neg = neg
+        g = True
+        for a in args:
+            if not is_ground(a):
+                g = False
+                break
+        if g:
+            for a in annots:
+                if not is_ground(a):
+                    g = False
+                    break
+        self.ground = g
+        self._hash = None
+
+    @classmethod
+    def make(cls, functor: str, args: tuple, annots: tuple, neg: bool, ground: bool) -> Literal:
+        """Build without re-checking groundness (the caller knows it)."""
+        obj = cls.__new__(cls)
+        obj.functor = functor
+        obj.args = args
+        obj.annots = annots
+        obj.neg = neg
+        obj.ground = ground
+        obj._hash = None
+        return obj
+
+    @property
+    def arity(self) -> int:
+        """Number of arguments."""
+        return len(self.args)
+
+    @property
+    def key(self) -> tuple:
+        """Predicate indicator used to index beliefs and plans."""
+        return (self.functor, len(self.args), self.neg)
+
+    def is_atom(self) -> bool:
+        """True for a literal without arguments, annotations or negation."""
+        return not self.args and not self.annots and not self.neg
+
+    def with_annots(self, annots: Iterable[Term]) -> Literal:
+        """A copy with exactly these annotations (sorted, without duplicates)."""
+        return Literal(self.functor, self.args, sort_annots(annots), self.neg)
+
+    def add_annots(self, extra: Iterable[Term]) -> Literal:
+        """A copy with ``extra`` annotations merged in."""
+        extra = tuple(extra)
+        if not extra:
+            return self
+        return Literal(self.functor, self.args, sort_annots(self.annots + extra), self.neg)
+
+    def without_annots(self) -> Literal:
+        """The same literal with no annotations."""
+        if not self.annots:
+            return self
+        return Literal(self.functor, self.args, (), self.neg)
+
+    def annot(self, functor: str) -> Literal | None:
+        """The first annotation with this functor, if any."""
+        for a in self.annots:
+            if isinstance(a, Literal) and a.functor == functor:
+                return a
+        return None
+
+    def sources(self) -> list[Term]:
+        """The arguments of the ``source(_)`` annotations."""
+        return [
+            a.args[0]
+            for a in self.annots
+            if isinstance(a, Literal) and a.functor == "source" and len(a.args) == 1
+        ]
+
+    def __eq__(self, other: object) -> bool:
+        if self is other:
+            return True
+        if other.__class__ is not Literal:
+            return False
+        return (
+            self.functor == other.functor
+            and self.neg == other.neg
+            and self.args == other.args
+            and self.annots == other.annots
+        )
+
+    def __hash__(self) -> int:
+        h = self._hash
+        if h is None:
+            h = hash((self.functor, self.neg, self.args, self.annots))
+            self._hash = h
+        return h
+
+    def __repr__(self) -> str:
+        return term_str(self)
+
+
+class Nil:
+    """The empty list ``[]``."""
+
+    __slots__ = ()
+    ground = True
+
+    def __eq__(self, other: object) -> bool:
+        return other.__class__ is Nil
+
+    def __hash__(self) -> int:
+        return 7
+
+    def __repr__(self) -> str:
+        return "[]"
+
+
+NIL = Nil()
+
+
+class Cons:
+    """A list cell ``[head|tail]``; lists are chains of cells ending in ``NIL`` or a var."""
+
+    __slots__ = ("head", "tail", "ground", "_hash")
+
+    def __init__(self, head: Term, tail: Term) -> None:
+        self.head = head
+        self.tail = tail
+        self.ground = is_ground(head) and is_ground(tail)
+        self._hash = None
+
+    def __eq__(self, other: object) -> bool:
+        a, b = self, other
+        while a.__class__ is Cons and b.__class__ is Cons:
+            if a is b:
+                return True
+            if a.head != b.head:
+                return False
+            a, b = a.tail, b.tail
+        return a == b if a.__class__ is not Cons else False
+
+    def __hash__(self) -> int:
+        h = self._hash
+        if h is None:
+            h = hash(("[]", tuple(iter_list(self)), repr(list_tail(self))))
+            self._hash = h
+        return h
+
+    def __repr__(self) -> str:
+        return term_str(self)
+
+
+def make_list(items: Iterable[Term], tail: Term = NIL) -> Term:
+    """Build a list term from Python items."""
+    out = tail
+    for item in reversed(list(items)):
+        out = Cons(item, out)
+    return out
+
+
+def iter_list(t: Term) -> Iterator[Term]:
+    """The elements of a list term (stops at the tail)."""
+    while t.__class__ is Cons:
+        yield t.head
+        t = t.tail
+
+
+def list_tail(t: Term) -> Term:
+    """What ends a list: ``NIL`` for a proper list, a var or other term otherwise."""
+    while t.__class__ is Cons:
+        t = t.tail
+    return t
+
+
+def is_list(t: Term) -> bool:
+    """True for a proper list (ends in ``[]``)."""
+    return list_tail(t).__class__ is Nil if t.__class__ in (Cons, Nil) else False
+
+
+class Arith:
+    """An arithmetic expression, evaluated when its variables are bound."""
+
+    __slots__ = ("op", "left", "right")
+    ground = False
+
+    def __init__(self, op: str, left: Term, right: Term | None = None) -> None:
+        self.op = op
+        self.left = left
+        self.right = right
+
+    def __repr__(self) -> str:
+        return term_str(self)
+
+
+class Rel:
+    """A relational expression: ``< <= > >= == \\== = \\= =..``."""
+
+    __slots__ = ("op", "left", "right")
+    ground = False
+
+    def __init__(self, op: str, left: Term, right: Term) -> None:
+        self.op = op
+        self.left = left
+        self.right = right
+
+    def __repr__(self) -> str:
+        return term_str(self)
+
+
+class And:
+    """Conjunction ``a & b``."""
+
+    __slots__ = ("left", "right")
+    ground = False
+
+    def __init__(self, left: Term, right: Term) -> None:
+        self.left = left
+        self.right = right
+
+    def __repr__(self) -> str:
+        return term_str(self)
+
+
+class Or:
+    """Disjunction ``a | b``."""
+
+    __slots__ = ("left", "right")
+    ground = False
+
+    def __init__(self, left: Term, right: Term) -> None:
+        self.left = left
+        self.right = right
+
+    def __repr__(self) -> str:
+        return term_str(self)
+
+
+class Not:
+    """Negation as failure ``not a``."""
+
+    __slots__ = ("arg",)
+    ground = False
+
+    def __init__(self, arg: Term) -> None:
+        self.arg = arg
+
+    def __repr__(self) -> str:
+        return term_str(self)
+
+
+class Body:
+    """A plan body written as a term, ``{ +b; !g }``, e.g. the argument of ``.wait``."""
+
+    __slots__ = ("steps",)
+    ground = False
+
+    def __init__(self, steps: tuple) -> None:
+        self.steps = steps
+
+    def __repr__(self) -> str:
+        return term_str(self)
+
+
+def is_ground(t: Term) -> bool:
+    """True if ``t`` contains no variables (and no unevaluated expression)."""
+    c = t.__class__
+    if c is int or c is float or c is str:
+        return True
+    if c is Var:
+        return False
+    return t.ground
+
+
+def atom(name: str) -> Literal:
+    """The atom ``name``."""
+    return Literal(name)
+
+
+TRUE = Literal("true")
+FALSE = Literal("false")
+SELF = Literal("self")
+PERCEPT = Literal("percept")
+SOURCE_SELF = Literal("source", (SELF,))
+SOURCE_PERCEPT = Literal("source", (PERCEPT,))
+
+
+def source(name: str | Term) -> Literal:
+    """The annotation ``source(name)``."""
+    return Literal("source", (Literal(name) if isinstance(name, str) else name,))
+
+
+# ---------------------------------------------------------------------------
+# Jason's standard order of terms (used by .sort, .max, .min, < on non-numbers)
+
+
+def _kind(t: Term) -> int:
+    c = t.__class__
+    if c is int or c is float:
+        return 0
+    if c is Var:
+        return 4
+    if c is str:
+        return 1
+    if c is Cons or c is Nil:
+        return 2
+    return 3
+
+
+def compare(a: Term, b: Term) -> int:
+    """Jason's term order: numbers < strings < lists < literals (by functor, then args)."""
+    ka, kb = _kind(a), _kind(b)
+    if ka != kb:
+        return -1 if ka < kb else 1
+    if ka == 0:
+        return (a > b) - (a < b)
+    if ka == 1:
+        return (a > b) - (a < b)
+    if ka == 2:
+        while a.__class__ is Cons and b.__class__ is Cons:
+            c = compare(a.head, b.head)
+            if c:
+                return c
+            a, b = a.tail, b.tail
+        if a.__class__ is Cons:
+            return 1
+        if b.__class__ is Cons:
+            return -1
+        return 0
+    if ka == 3 and a.__class__ is Literal and b.__class__ is Literal:
+        if a.functor != b.functor:
+            return -1 if a.functor < b.functor else 1
+        if a.neg != b.neg:
+            return 1 if a.neg else -1
+        for x, y in zip(a.args, b.args, strict=False):
+            c = compare(x, y)
+            if c:
+                return c
+        if len(a.args) != len(b.args):
+            return -1 if len(a.args) < len(b.args) else 1
+        for x, y in zip(a.annots, b.annots, strict=False):
+            c = compare(x, y)
+            if c:
+                return c
+        return (len(a.annots) > len(b.annots)) - (len(a.annots) < len(b.annots))
+    sa, sb = term_str(a), term_str(b)
+    return (sa > sb) - (sa < sb)
+
+
+class _Key:
+    __slots__ = ("t",)
+
+    def __init__(self, t: Term) -> None:
+        self.t = t
+
+    def __lt__(self, other: _Key) -> bool:
+        return compare(self.t, other.t) < 0
+
+
+def sort_key(t: Term) -> _Key:
+    """A key for ``sorted`` that follows :func:`compare`."""
+    return _Key(t)
+
+
+def sort_annots(annots: Iterable[Term]) -> tuple:
+    """Annotations in Jason's order, without duplicates."""
+    seen: list[Term] = []
+    for a in annots:
+        if a not in seen:
+            seen.append(a)
+    if len(seen) > 1:
+        seen.sort(key=_Key)
+    return tuple(seen)
+
+
+# ---------------------------------------------------------------------------
+# Printing, as Jason's toString
+
+
+def number_str(x: int | float) -> str:
+    """Jason prints integral numbers without a decimal part, others as Java doubles."""
+    if x.__class__ is int:
+        return str(x)
+    if x != x:
+        return "NaN"
+    if math.isinf(x):
+        return "Infinity" if x > 0 else "-Infinity"
+    if math.isfinite(x) and x == int(x) and abs(x) < 9.2e18:
+        return str(int(x))
+    return java_double_str(x)
+
+
+def java_double_str(x: float) -> str:
+    """``Double.toString``: plain notation in [1e-3, 1e7), scientific otherwise."""
+    if math.isnan(x):
+        return "NaN"
+    if math.isinf(x):
+        return "Infinity" if x > 0 else "-Infinity"
+    ax = abs(x)
+    if ax == 0 or 1e-3 <= ax < 1e7:
+        s = repr(x)
+        if "e" in s or "E" in s:
+            s = f"{x:f}".rstrip("0")
+        if "." not in s:
+            s += ".0"
+        if s.endswith("."):
+            s += "0"
+        return s
+    mantissa, _, exp = f"{x:e}".partition("e")
+    digits = repr(x)
+    # shortest round-trip digits, re-expressed as d.dddE<exp>
+    if "e" in digits:
+        mant, _, e2 = digits.partition("e")
+        exp_i = int(e2)
+    else:
+        exp_i = int(exp)
+        mant = repr(x / (10**exp_i))
+    if "." not in mant:
+        mant += ".0"
+    return f"{mant}E{exp_i}"
+
+
+_PLAIN_ATOM = set("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.")
+
+
+def string_str(s: str) -> str:
+    """A string as Jason prints it inside a term: quoted, with escapes."""
+    return '"' + s.replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n") + '"'
+
+
+def term_str(t: Term) -> str:
+    """Jason's text for a term."""
+    out: list[str] = []
+    _write(t, out)
+    return "".join(out)
+
+
+def _write(t: Term, out: list[str]) -> None:
+    c = t.__class__
+    if c is Literal:
+        if t.neg:
+            out.append("~")
+        out.append(t.functor)
+        if t.args:
+            out.append("(")
+            first = True
+            for a in t.args:
+                if not first:
+                    out.append(",")
+                first = False
+                _write(a, out)
+            out.append(")")
+        if t.annots:
+            out.append("[")
+            first = True
+            for a in t.annots:
+                if not first:
+                    out.append(",")
+                first = False
+                _write(a, out)
+            out.append("]")
+    elif c is int or c is float:
+        out.append(number_str(t))
+    elif c is str:
+        out.append(string_str(t))
+    elif c is Var:
+        out.append(t.name)
+    elif c is Cons or c is Nil:
+        out.append("[")
+        first = True
+        while t.__class__ is Cons:
+            if not first:
+                out.append(",")
+            first = False
+            _write(t.head, out)
+            t = t.tail
+        if t.__class__ is not Nil:
+            out.append("|")
+            _write(t, out)
+        out.append("]")
+    elif c is Arith:
+        if t.op == "call":
+            _write(t.left, out)
+        elif t.right is None:
+            out.append("(" + t.op)
+            _write(t.left, out)
+            out.append(")")
+        else:
+            out.append("(")
+            _write(t.left, out)
+            out.append(t.op if t.op not in ("div", "mod") else f" {t.op} ")
+            _write(t.right, out)
+            out.append(")")
+    elif c is Rel:
+        out.append("(")
+        _write(t.left, out)
+        out.append(t.op)
+        _write(t.right, out)
+        out.append(")")
+    elif c is And:
+        out.append("(")
+        _write(t.left, out)
+        out.append(" & ")
+        _write(t.right, out)
+        out.append(")")
+    elif c is Or:
+        out.append("(")
+        _write(t.left, out)
+        out.append(" | ")
+        _write(t.right, out)
+        out.append(")")
+    elif c is Not:
+        out.append("not (")
+        _write(t.arg, out)
+        out.append(")")
+    elif c is Body:
+        out.append("{ " + "; ".join(str(s) for s in t.steps) + " }")
+    else:
+        out.append(str(t))
+
+
+def print_str(t: Term) -> str:
+    """How ``.print`` shows one argument: strings bare, everything else as a term."""
+    if t.__class__ is str:
+        return t
+    if t.__class__ is Var:
+        return t.name + "<no-value>"
+    return term_str(t)

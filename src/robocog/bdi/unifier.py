@@ -1,0 +1,492 @@
+"""Unification, substitution and arithmetic evaluation.
+
+A substitution is a plain ``dict`` from :class:`Var` to term. Unification binds
+variables in place and records each new binding on a *trail* (a list), so that a
+caller exploring alternatives (the belief base, rules, ``|``) can undo exactly what one
+attempt bound with :func:`undo`. Each intended means owns its own substitution, which is
+what lets one plan be instantiated many times without copying its body.
+
+Annotations follow Jason: ``unify(a, b)`` requires the annotations of ``a`` to be a
+subset of those of ``b`` (so a query ``p[source(percept)]`` finds only perceived ``p``).
+"""
+
+from __future__ import annotations
+
+import math
+
+from robocog.bdi.terms import (
+    NIL,
+    And,
+    Arith,
+    Body,
+    Cons,
+    Literal,
+    Nil,
+    Not,
+    Or,
+    Rel,
+    Term,
+    Var,
+    fresh_var,
+    is_ground,
+    sort_annots,
+)
+
+
+class EvalError(Exception):
+    """An arithmetic expression could not be evaluated (unbound variable, bad type)."""
+
+
+def deref(t: Term, s: dict) -> Term:
+    """Follow variable bindings until a non-variable or an unbound variable."""
+    while t.__class__ is Var:
+        v = s.get(t)
+        if v is None:
+            return t
+        t = v
+    return t
+
+
+def undo(s: dict, trail: list, mark: int) -> None:
+    """Remove the bindings recorded on ``trail`` after position ``mark``."""
+    while len(trail) > mark:
+        del s[trail.pop()]
+
+
+def unify(a: Term, b: Term, s: dict, trail: list) -> bool:
+    """Unify ``a`` with ``b`` under ``s``; on failure some bindings may remain on the trail."""
+    while True:
+        while a.__class__ is Var:
+            v = s.get(a)
+            if v is None:
+                break
+            a = v
+        while b.__class__ is Var:
+            v = s.get(b)
+            if v is None:
+                break
+            b = v
+        ca = a.__class__
+        cb = b.__class__
+        if ca is Var:
+            if a is b:
+                return True
+            s[a] = b
+            trail.append(a)
+            return True
+        if cb is Var:
+            s[b] = a
+            trail.append(b)
+            return True
+        if ca is Literal:
+            if cb is not Literal:
+                if cb is Arith:
+                    return unify(a, evaluate(b, s), s, trail)
+                return False
+            if a is b:
+                return True
+            if a.functor != b.functor or a.neg != b.neg:
+                return False
+            aa = a.args
+            ba = b.args
+            if len(aa) != len(ba):
+                return False
+            if a.ground and b.ground:
+                if aa != ba:
+                    return False
+            else:
+                for x, y in zip(aa, ba, strict=True):
+                    if not unify(x, y, s, trail):
+                        return False
+            if a.annots:
+                return _annots_subset(a.annots, b.annots, s, trail)
+            return True
+        if ca is Cons:
+            if cb is not Cons:
+                return False
+            if a is b:
+                return True
+            if not unify(a.head, b.head, s, trail):
+                return False
+            a = a.tail
+            b = b.tail
+            continue
+        if ca is Arith:
+            a = evaluate(a, s)
+            if a.__class__ is Arith:
+                return False
+            continue
+        if cb is Arith:
+            b = evaluate(b, s)
+            if b.__class__ is Arith:
+                return False
+            continue
+        if ca is int or ca is float:
+            return (cb is int or cb is float) and a == b
+        if ca is str:
+            return cb is str and a == b
+        if ca is Nil:
+            return cb is Nil
+        return a == b
+
+
+def _annots_subset(aa: tuple, ba: tuple, s: dict, trail: list) -> bool:
+    for x in aa:
+        for y in ba:
+            mark = len(trail)
+            if unify(x, y, s, trail):
+                break
+            undo(s, trail, mark)
+        else:
+            return False
+    return True
+
+
+def resolve(t: Term, s: dict, fresh: dict | None = None) -> Term:
+    """Apply ``s`` to ``t`` and evaluate arithmetic whose operands are numbers.
+
+    With ``fresh`` (a dict), variables still unbound are replaced by new variables (the
+    same new variable for each occurrence); this is how terms leave a plan's scope
+    without their variables clashing with another instance of the same plan.
+    """
+    c = t.__class__
+    if c is Var:
+        while True:
+            v = s.get(t)
+            if v is None:
+                break
+            t = v
+            if t.__class__ is not Var:
+                return resolve(t, s, fresh)
+        if fresh is None:
+            return t
+        nv = fresh.get(t)
+        if nv is None:
+            nv = fresh[t] = fresh_var()
+        return nv
+    if c is Literal:
+        if t.ground:
+            return t
+        args = []
+        ground = True
+        for a in t.args:
+            ac = a.__class__
+            if ac is Var:
+                v = s.get(a)
+                while v is not None and v.__class__ is Var:
+                    a = v
+                    v = s.get(a)
+                if v is None:
+                    if fresh is not None:
+                        nv = fresh.get(a)
+                        if nv is None:
+                            nv = fresh[a] = fresh_var()
+                        a = nv
+                    ground = False
+                else:
+                    vc = v.__class__
+                    if vc is int or vc is float or vc is str:
+                        a = v
+                    elif v.ground:
+                        a = v
+                    else:
+                        a = resolve(v, s, fresh)
+                        if ground and not is_ground(a):
+                            ground = False
+            elif ac is int or ac is float or ac is str:
+                pass
+            elif a.ground:
+                pass
+            else:
+                a = resolve(a, s, fresh)
+                if ground and not is_ground(a):
+                    ground = False
+            args.append(a)
+        annots = t.annots
+        if annots:
+            annots = sort_annots([resolve(a, s, fresh) for a in annots])
+            if ground:
+                for a in annots:
+                    if not is_ground(a):
+                        ground = False
+                        break
+        return Literal.make(t.functor, tuple(args), annots, t.neg, ground)
+    if c is int or c is float or c is str:
+        return t
+    if c is Cons:
+        if t.ground:
+            return t
+        items = []
+        while t.__class__ is Cons:
+            items.append(resolve(t.head, s, fresh))
+            t = t.tail
+            while t.__class__ is Var:
+                v = s.get(t)
+                if v is None:
+                    break
+                t = v
+        out = resolve(t, s, fresh) if t.__class__ is not Nil else NIL
+        for item in reversed(items):
+            out = Cons(item, out)
+        return out
+    if c is Arith:
+        return evaluate(t, s, fresh, strict=False)
+    if c is Rel:
+        return Rel(t.op, resolve(t.left, s, fresh), resolve(t.right, s, fresh))
+    if c is And:
+        return And(resolve(t.left, s, fresh), resolve(t.right, s, fresh))
+    if c is Or:
+        return Or(resolve(t.left, s, fresh), resolve(t.right, s, fresh))
+    if c is Not:
+        return Not(resolve(t.arg, s, fresh))
+    if c is Body:
+        return t
+    return t
+
+
+def _to_int(x: float | int) -> int:
+    if x.__class__ is int:
+        return x
+    if not math.isfinite(x):
+        raise EvalError(f"{x} is not a finite number")
+    return int(x)
+
+
+def _norm(x: float | int) -> float | int:
+    """Keep integral results as ``int`` while they fit a Java long, as Jason prints them."""
+    if x.__class__ is int and -(2**63) <= x < 2**63:
+        return x
+    return float(x)
+
+
+def _apply_op(op: str, x, y):  # noqa: ANN001, ANN202 - numbers
+    if op == "+":
+        return _norm(x + y)
+    if op == "-":
+        return _norm(x - y)
+    if op == "*":
+        return _norm(x * y)
+    if op == "/":
+        if y == 0:  # Java doubles: no error, an infinity (or NaN)
+            if x == 0 or x != x:
+                return math.nan
+            return math.copysign(math.inf, x) * (
+                math.copysign(1.0, y) if y.__class__ is float else 1
+            )
+        return x / y
+    if op == "div":
+        xi, yi = _to_int(x), _to_int(y)
+        if yi == 0:
+            raise EvalError("division by zero")
+        q = abs(xi) // abs(yi)
+        return q if (xi >= 0) == (yi >= 0) else -q
+    if op == "mod":
+        xi, yi = _to_int(x), _to_int(y)
+        if yi == 0:
+            raise EvalError("division by zero")
+        r = abs(xi) % abs(yi)
+        return r if xi >= 0 else -r
+    if op == "**":
+        try:
+            r = float(x) ** float(y)
+        except (OverflowError, ZeroDivisionError) as exc:
+            raise EvalError(str(exc)) from exc
+        if isinstance(r, complex):
+            raise EvalError("complex result")
+        if r == int(r) and abs(r) < 2**63 if math.isfinite(r) else False:
+            return int(r)
+        return r
+    raise EvalError(f"unknown operator {op}")
+
+
+def evaluate(t: Term, s: dict, fresh: dict | None = None, strict: bool = True) -> Term:
+    """Evaluate an arithmetic term; non-numeric operands leave an expression behind."""
+    c = t.__class__
+    if c is Var:
+        t = deref(t, s)
+        c = t.__class__
+    if c is int or c is float:
+        return t
+    if c is not Arith:
+        return resolve(t, s, fresh)
+    if t.op == "call":
+        if strict:
+            return _call(t, s, fresh, strict)
+        try:
+            return _call(t, s, fresh, strict)
+        except EvalError:
+            return Arith("call", resolve(t.left, s, fresh))
+    left = t.left
+    lc = left.__class__
+    if lc is Var:
+        v = s.get(left)
+        while v is not None:
+            left = v
+            if v.__class__ is not Var:
+                break
+            v = s.get(v)
+        lc = left.__class__
+    if lc is not int and lc is not float:
+        left = evaluate(left, s, fresh, strict)
+        lc = left.__class__
+    right = t.right
+    if right is None:
+        if lc is int or lc is float:
+            return -left if t.op == "-" else left
+        return Arith(t.op, left)
+    rc = right.__class__
+    if rc is Var:
+        v = s.get(right)
+        while v is not None:
+            right = v
+            if v.__class__ is not Var:
+                break
+            v = s.get(v)
+        rc = right.__class__
+    if rc is not int and rc is not float:
+        right = evaluate(right, s, fresh, strict)
+        rc = right.__class__
+    if (lc is int or lc is float) and (rc is int or rc is float):
+        op = t.op
+        if op == "+":
+            r = left + right
+            if r.__class__ is float or -(2**63) <= r < 2**63:
+                return r
+        elif op == "-":
+            r = left - right
+            if r.__class__ is float or -(2**63) <= r < 2**63:
+                return r
+        if strict:
+            return _apply_op(t.op, left, right)
+        try:
+            return _apply_op(t.op, left, right)
+        except EvalError:
+            return Arith(t.op, left, right)
+    return Arith(t.op, left, right)
+
+
+def _call(t: Arith, s: dict, fresh: dict | None, strict: bool) -> Term:
+    """Jason's arithmetic functions ``math.abs(X)``, ``math.max(X, Y)``, ..."""
+    lit = t.left
+    args = [evaluate(a, s, fresh, strict) for a in lit.args]
+    name = lit.functor[5:]
+    if name in ("sum", "average") and len(args) == 1 and args[0].__class__ in (Cons, Nil):
+        items = []
+        x = args[0]
+        while x.__class__ is Cons:
+            items.append(evaluate(x.head, s))
+            x = x.tail
+        if all(i.__class__ in (int, float) for i in items):
+            if name == "sum":
+                return _norm(sum(items))
+            return sum(items) / len(items) if items else 0
+    if not all(a.__class__ in (int, float) for a in args):
+        return Arith("call", Literal(lit.functor, tuple(args)))
+    fn = _FUNCTIONS.get((name, len(args)))
+    if fn is None:
+        raise EvalError(f"unknown function {lit.functor}/{len(args)}")
+    try:
+        return fn(*args)
+    except (ValueError, OverflowError, ZeroDivisionError) as exc:
+        raise EvalError(f"{lit.functor}: {exc}") from exc
+
+
+def _round(x: float) -> int:
+    return int(math.floor(x + 0.5))
+
+
+_FUNCTIONS = {
+    ("abs", 1): abs,
+    ("sqrt", 1): math.sqrt,
+    ("max", 2): max,
+    ("min", 2): min,
+    ("floor", 1): lambda x: int(math.floor(x)),
+    ("ceil", 1): lambda x: int(math.ceil(x)),
+    ("round", 1): _round,
+    ("log", 1): math.log,
+    ("pow", 2): lambda x, y: _apply_op("**", x, y),
+    ("pi", 0): lambda: math.pi,
+    ("e", 0): lambda: math.e,
+    ("sin", 1): math.sin,
+    ("cos", 1): math.cos,
+    ("tan", 1): math.tan,
+    ("atan", 1): math.atan,
+    ("atan2", 2): math.atan2,
+    ("mod", 2): lambda x, y: _apply_op("mod", x, y),
+    ("signum", 1): lambda x: (x > 0) - (x < 0),
+}
+
+
+def number(t: Term, s: dict) -> int | float:
+    """The numeric value of ``t`` under ``s``, or :class:`EvalError`."""
+    v = evaluate(t, s)
+    if v.__class__ is int or v.__class__ is float:
+        return v
+    raise EvalError(f"{v!r} is not a number")
+
+
+def rename(t: Term, mapping: dict) -> Term:
+    """A copy of ``t`` with each variable replaced by a fresh one (consistently)."""
+    c = t.__class__
+    if c is Var:
+        nv = mapping.get(t)
+        if nv is None:
+            nv = mapping[t] = Var(t.name)
+        return nv
+    if c is Literal:
+        if t.ground:
+            return t
+        return Literal(
+            t.functor,
+            tuple([rename(a, mapping) for a in t.args]),
+            tuple([rename(a, mapping) for a in t.annots]),
+            t.neg,
+        )
+    if c is Cons:
+        if t.ground:
+            return t
+        return Cons(rename(t.head, mapping), rename(t.tail, mapping))
+    if c is Arith:
+        return Arith(
+            t.op, rename(t.left, mapping), None if t.right is None else rename(t.right, mapping)
+        )
+    if c is Rel:
+        return Rel(t.op, rename(t.left, mapping), rename(t.right, mapping))
+    if c is And:
+        return And(rename(t.left, mapping), rename(t.right, mapping))
+    if c is Or:
+        return Or(rename(t.left, mapping), rename(t.right, mapping))
+    if c is Not:
+        return Not(rename(t.arg, mapping))
+    return t
+
+
+def variables(t: Term, out: list | None = None) -> list:
+    """The distinct variables of ``t`` in order of first occurrence."""
+    if out is None:
+        out = []
+    c = t.__class__
+    if c is Var:
+        if t not in out:
+            out.append(t)
+    elif c is Literal:
+        if not t.ground:
+            for a in t.args:
+                variables(a, out)
+            for a in t.annots:
+                variables(a, out)
+    elif c is Cons:
+        while t.__class__ is Cons:
+            variables(t.head, out)
+            t = t.tail
+        variables(t, out)
+    elif c is Arith:
+        variables(t.left, out)
+        if t.right is not None:
+            variables(t.right, out)
+    elif c is Rel or c is And or c is Or:
+        variables(t.left, out)
+        variables(t.right, out)
+    elif c is Not:
+        variables(t.arg, out)
+    return out

@@ -1,0 +1,327 @@
+"""A robot reached through middleware, as a ``Body``.
+
+The middleware side (a ``Link``: ROS 2 over DDS, ROS 1 through a rospy node) only moves
+plain readings in and plain requests out; everything else lives here once: the latest
+percepts with their age, the mapping of Commands onto velocity, navigation goals and the
+gripper, and the halt that the watchdog pulls. The logic never sees a message type.
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+import threading
+import time
+from collections import deque
+from collections.abc import Callable
+from typing import Protocol
+
+from robocog.bridges.config import BridgeConfig
+from robocog.bridges.perception import (
+    BoxReading,
+    PoseReading,
+    ScanReading,
+    detection_of,
+    nearest_obstacle,
+    pose_of,
+)
+from robocog.robot.commands import (
+    Cancel,
+    Command,
+    Drop,
+    Forward,
+    GoTo,
+    Look,
+    Outcome,
+    Pick,
+    Turn,
+)
+from robocog.robot.percepts import Gripper, Percept
+
+log = logging.getLogger("robocog.bridges")
+
+#: what the gripper reports when it holds nothing
+EMPTY_GRIPPER = ("", "open", "empty", "none")
+
+
+class Link(Protocol):
+    """The middleware side of a bridge: starts feeding a ``RobotBody``, sends requests."""
+
+    def start(self, body: RobotBody) -> None:
+        """Connect and begin handing readings to ``body``'s ``on_*`` methods."""
+        ...
+
+    def close(self) -> None:
+        """Disconnect and release every resource (threads, processes, sockets)."""
+        ...
+
+    def send_velocity(self, linear: float, angular: float) -> None:
+        """Publish one velocity command (m/s forward, rad/s counter-clockwise)."""
+        ...
+
+    def send_goal(self, x: float, y: float, yaw: float) -> int:
+        """Send a navigation goal in the map frame; returns a token for its result."""
+        ...
+
+    def cancel_goals(self) -> None:
+        """Cancel every navigation goal under way."""
+        ...
+
+    def send_gripper(self, text: str) -> None:
+        """Send a gripper request: ``pick <target>`` or ``drop``."""
+        ...
+
+
+class RobotBody:
+    """A ``Body`` over a ``Link``: percepts from the latest readings, commands as requests.
+
+    Readings arrive on the link's thread through the ``on_*`` methods; the loop's thread
+    reads them through ``percepts()``. ``halt()`` stops the robot from any thread and
+    makes motion commands end cancelled until ``resume()``.
+    """
+
+    def __init__(self, link: Link, config: BridgeConfig | None = None) -> None:
+        self.link = link
+        self.config = config or BridgeConfig()
+        self._lock = threading.Condition()
+        self._scan: ScanReading | None = None
+        self._boxes: list[BoxReading] = []
+        self._boxes_at = -math.inf
+        self._pose: PoseReading | None = None
+        self._gripper: str | None = None
+        self._texts: deque[str] = deque(maxlen=1000)
+        self._goal_results: dict[int, str] = {}
+        self._last_reading = -math.inf
+        self._generation = 0
+        self._halted: str | None = None
+        self._started = False
+
+    # -- lifecycle -------------------------------------------------------------
+
+    def start(self) -> RobotBody:
+        """Connect the link; readings start arriving."""
+        if not self._started:
+            self.link.start(self)
+            self._started = True
+        return self
+
+    def close(self) -> None:
+        """Stop the robot and disconnect."""
+        if self._started:
+            try:
+                self.link.send_velocity(0.0, 0.0)
+            finally:
+                self.link.close()
+                self._started = False
+
+    def __enter__(self) -> RobotBody:
+        return self.start()
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+    # -- readings, from the link's thread -------------------------------------
+
+    def on_scan(self, scan: ScanReading) -> None:
+        """A laser scan arrived."""
+        with self._lock:
+            self._scan = scan
+            self._touch()
+
+    def on_boxes(self, boxes: list[BoxReading]) -> None:
+        """A detection array arrived (possibly empty: nothing seen)."""
+        with self._lock:
+            self._boxes = list(boxes)
+            self._boxes_at = time.monotonic()
+            self._touch()
+
+    def on_pose(self, pose: PoseReading) -> None:
+        """The robot's pose arrived."""
+        with self._lock:
+            self._pose = pose
+            self._touch()
+
+    def on_gripper(self, state: str) -> None:
+        """The gripper reported what it holds (empty or ``open`` when nothing)."""
+        with self._lock:
+            state = state.strip()
+            self._gripper = None if state.lower() in EMPTY_GRIPPER else state
+            self._touch()
+
+    def on_text(self, text: str) -> None:
+        """Narsese (or other text) for the mind arrived; kept until ``texts()``."""
+        with self._lock:
+            for line in text.splitlines():
+                if line.strip():
+                    self._texts.append(line.strip())
+            self._lock.notify_all()
+
+    def on_goal_result(self, token: int, status: str) -> None:
+        """A navigation goal ended: ``succeeded``, ``aborted``, ``preempted``, ..."""
+        with self._lock:
+            self._goal_results[token] = status
+            self._lock.notify_all()
+
+    def _touch(self) -> None:
+        self._last_reading = time.monotonic()
+        self._generation += 1
+        self._lock.notify_all()
+
+    # -- the Body protocol ------------------------------------------------------
+
+    def time(self) -> float:
+        """Wall-clock time: a real robot lives in it."""
+        return time.time()
+
+    def percept_age(self) -> float:
+        """Seconds since the robot last sent anything (infinite before the first)."""
+        with self._lock:
+            return time.monotonic() - self._last_reading
+
+    def wait_for_readings(self, timeout: float) -> bool:
+        """Block until a new reading arrives or ``timeout`` passes; True if one came."""
+        with self._lock:
+            seen = self._generation
+            return self._lock.wait_for(lambda: self._generation != seen, timeout)
+
+    def texts(self) -> list[str]:
+        """The text lines received since the last call, oldest first."""
+        with self._lock:
+            lines = list(self._texts)
+            self._texts.clear()
+            return lines
+
+    def percepts(self) -> list[Percept]:
+        """The latest obstacle, the detections still fresh, the pose and the gripper."""
+        c = self.config
+        with self._lock:
+            scan, pose, gripper = self._scan, self._pose, self._gripper
+            fresh = time.monotonic() - self._boxes_at <= c.detection_ttl
+            boxes = list(self._boxes) if fresh else []
+        out: list[Percept] = []
+        if scan is not None:
+            out.append(nearest_obstacle(scan, c.obstacle_range, c.front_half_width))
+        out.extend(detection_of(b, c.image_width, c.horizontal_fov) for b in boxes)
+        if pose is not None:
+            out.append(pose_of(pose, c.places, c.place_radius))
+        out.append(Gripper(gripper))
+        return out
+
+    def execute(self, command: Command) -> Outcome:
+        """Carry out one command on the robot; every command ends with an Outcome."""
+        if self._halted is not None and not isinstance(command, Cancel):
+            return Outcome.cancelled(f"robot halted: {self._halted}")
+        match command:
+            case Forward(distance):
+                speed = math.copysign(self.config.linear_speed, distance)
+                return self._move(speed, 0.0, abs(distance) / self.config.linear_speed)
+            case Turn(angle):
+                speed = math.copysign(self.config.angular_speed, angle)
+                return self._move(0.0, speed, abs(angle) / self.config.angular_speed)
+            case GoTo(place):
+                return self._goto(place)
+            case Cancel():
+                self.stop()
+                return Outcome.success()
+            case Pick(target):
+                return self._gripper_request(f"pick {target}", lambda held: held is not None)
+            case Drop():
+                return self._gripper_request("drop", lambda held: held is None)
+            case Look():
+                return Outcome.failure("this robot has no camera to point")
+            case _:
+                return Outcome.failure(f"{type(command).__name__} needs a manipulator bridge")
+
+    # -- halting ---------------------------------------------------------------
+
+    @property
+    def halted(self) -> str | None:
+        """Why the robot is halted, or None when it may move."""
+        return self._halted
+
+    def stop(self) -> None:
+        """Zero velocity and cancel navigation, now."""
+        self.link.send_velocity(0.0, 0.0)
+        self.link.cancel_goals()
+
+    def halt(self, reason: str) -> None:
+        """Stop the robot and refuse motion until ``resume()``; safe from any thread."""
+        with self._lock:
+            self._halted = reason
+            self._lock.notify_all()
+        self.stop()
+
+    def resume(self) -> None:
+        """Allow motion again."""
+        with self._lock:
+            self._halted = None
+
+    # -- command helpers -------------------------------------------------------
+
+    def _move(self, linear: float, angular: float, seconds: float) -> Outcome:
+        if seconds <= 0:
+            return Outcome.success()  # nothing to drive: no velocity goes out
+        seconds = min(seconds, self.config.max_motion_seconds)
+        period = 1.0 / self.config.command_rate
+        end = time.monotonic() + seconds
+        try:
+            while True:
+                if self._halted is not None:
+                    return Outcome.cancelled(f"robot halted: {self._halted}")
+                self.link.send_velocity(linear, angular)
+                left = end - time.monotonic()
+                if left <= 0:
+                    return Outcome.success()
+                with self._lock:
+                    self._lock.wait_for(lambda: self._halted is not None, min(period, left))
+        finally:
+            self.link.send_velocity(0.0, 0.0)
+
+    def _goto(self, place: str) -> Outcome:
+        target = self.config.places.get(place)
+        if target is None:
+            return Outcome.failure(f"unknown place {place!r}")
+        x, y, yaw = target
+        token = self.link.send_goal(x, y, yaw)
+        if self.config.goto_wait <= 0:
+            return Outcome.success()
+        deadline = time.monotonic() + self.config.goto_wait
+        with self._lock:
+            while True:
+                status = self._goal_results.pop(token, None)
+                if status is not None:
+                    return _goal_outcome(status)
+                if self._pose is not None and self._at(self._pose, x, y):
+                    return Outcome.success()
+                if self._halted is not None:
+                    return Outcome.cancelled(f"robot halted: {self._halted}")
+                left = deadline - time.monotonic()
+                if left <= 0:
+                    break
+                self._lock.wait(min(left, 0.1))
+        self.link.cancel_goals()
+        return Outcome.failure(f"did not reach {place} within {self.config.goto_wait:g} s")
+
+    def _at(self, pose: PoseReading, x: float, y: float) -> bool:
+        return math.hypot(pose.x - x, pose.y - y) <= self.config.place_radius
+
+    def _gripper_request(self, text: str, done: Callable[[str | None], bool]) -> Outcome:
+        self.link.send_gripper(text)
+        with self._lock:
+            ok = self._lock.wait_for(
+                lambda: done(self._gripper) or self._halted is not None,
+                self.config.gripper_timeout,
+            )
+            if self._halted is not None:
+                return Outcome.cancelled(f"robot halted: {self._halted}")
+        if ok:
+            return Outcome.success()
+        return Outcome.failure(f"the gripper did not confirm {text!r}")
+
+
+def _goal_outcome(status: str) -> Outcome:
+    if status == "succeeded":
+        return Outcome.success()
+    if status in ("preempted", "recalled", "cancelled"):
+        return Outcome.cancelled(f"navigation goal {status}")
+    return Outcome.failure(f"navigation goal {status}")

@@ -1,0 +1,237 @@
+"""``robocog bridge ros2|ros1 --mind nars|bdi``: drive a real robot with a robocog mind.
+
+The bridge itself knows no engine. The mind is found by name at run time through
+``importlib`` (``robocog.minds``' ``NarsMind`` or ``BdiMind``, or any ``module:factory``),
+so that the Body code in this package never imports an engine and a build without the
+minds still offers the bridge to custom minds.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import inspect
+import logging
+import os
+import signal
+import sys
+from dataclasses import replace
+from pathlib import Path
+from typing import Any
+
+from robocog.bridges.config import BridgeConfig, Topics
+
+log = logging.getLogger("robocog.bridges")
+
+#: --mind name -> (module, class) of the minds robocog ships
+MINDS = {
+    "nars": ("robocog.minds.nars_mind", "NarsMind"),
+    "bdi": ("robocog.minds.bdi_mind", "BdiMind"),
+}
+#: constructor parameters that take the knowledge as a list of lines (Narsese)
+LINE_PARAMETERS = ("knowledge", "background")
+#: constructor parameters that take the program or knowledge as one text (AgentSpeak)
+TEXT_PARAMETERS = ("program", "source", "text")
+
+
+class MindUnavailable(RuntimeError):
+    """The mind asked for cannot be built in this installation."""
+
+
+def configure(parser: argparse.ArgumentParser) -> None:
+    """Declare the bridge's arguments."""
+    parser.add_argument("middleware", choices=("ros2", "ros1"), help="which ROS the robot runs")
+    parser.add_argument(
+        "--mind",
+        default="nars",
+        help="nars, bdi, or module:factory for a mind of your own (default: nars)",
+    )
+    parser.add_argument("--knowledge", type=Path, help="Narsese file given to a NARS mind")
+    parser.add_argument("--program", type=Path, help="AgentSpeak (.asl) program of a BDI mind")
+    parser.add_argument("--config", type=Path, help="TOML file: topics, places, speeds, limits")
+    parser.add_argument(
+        "--place",
+        action="append",
+        default=[],
+        metavar="NAME=X,Y[,THETA]",
+        help="a named place in the map frame (repeatable)",
+    )
+    parser.add_argument(
+        "--topic",
+        action="append",
+        default=[],
+        metavar="KEY=NAME",
+        help="rename a topic, e.g. scan=/front/scan (repeatable)",
+    )
+    parser.add_argument(
+        "--watchdog", type=float, help="stop the robot after this many seconds without percepts"
+    )
+    parser.add_argument(
+        "--goto-wait", type=float, help="seconds a GoTo waits for arrival (0: do not wait)"
+    )
+    parser.add_argument("--duration", type=float, help="end after this many seconds")
+    parser.add_argument(
+        "--domain", type=int, help="ROS 2: the DDS domain (default ROS_DOMAIN_ID or 0)"
+    )
+    parser.add_argument(
+        "--loopback",
+        action="store_true",
+        help="ROS 2: keep DDS traffic on 127.0.0.1 (unless CYCLONEDDS_URI is set)",
+    )
+    parser.add_argument(
+        "--ros1-python",
+        default="/usr/bin/python3",
+        help="ROS 1: the Python that has rospy (default /usr/bin/python3)",
+    )
+    parser.add_argument("-v", "--verbose", action="store_true", help="log every command")
+
+
+def run(args: argparse.Namespace) -> int:
+    """Build the mind and the body, and run until interrupted or ``--duration`` ends."""
+    logging.basicConfig(
+        level=logging.DEBUG if args.verbose else logging.INFO,
+        format="%(asctime)s %(levelname)s %(name)s: %(message)s",
+        stream=sys.stderr,
+    )
+    try:
+        config = build_config(args)
+        mind = build_mind(args.mind, args.knowledge or args.program, list(config.places))
+    except (MindUnavailable, ValueError, OSError) as exc:
+        print(f"robocog bridge: {exc}", file=sys.stderr)
+        return 2
+    from robocog.bridges.body import RobotBody
+    from robocog.bridges.runner import BridgeRunner
+
+    try:
+        link = _make_link(args, config)
+    except ImportError as exc:
+        print(f"robocog bridge: {exc}", file=sys.stderr)
+        return 2
+    body = RobotBody(link, config)
+    runner = BridgeRunner(body, mind)
+
+    def _terminate(_signum: int, _frame: object) -> None:
+        runner.stop()
+
+    signal.signal(signal.SIGTERM, _terminate)
+    try:
+        body.start()
+        log.info("bridge %s up, mind %s", args.middleware, args.mind)
+        code = runner.run(duration=args.duration)
+    except KeyboardInterrupt:
+        code = 0
+    except (RuntimeError, OSError) as exc:
+        print(f"robocog bridge: {exc}", file=sys.stderr)
+        code = 1
+    finally:
+        body.close()
+    summary = runner.stats.summary()
+    log.info(
+        "%d cycles, mind p50 %.2f ms, p99 %.2f ms",
+        runner.cycles,
+        summary["reason_p50_ms"],
+        summary["reason_p99_ms"],
+    )
+    return code
+
+
+def _make_link(args: argparse.Namespace, config: BridgeConfig) -> Any:
+    if args.middleware == "ros2":
+        if args.loopback:
+            from robocog.bridges.ros2.loopback import use_loopback
+
+            if "CYCLONEDDS_URI" not in os.environ:
+                use_loopback()
+        try:
+            from robocog.bridges.ros2.link import Ros2Link
+        except ImportError as exc:
+            raise ImportError(
+                "ROS 2 needs the cyclonedds package: pip install 'robocog[ros2]'"
+            ) from exc
+        return Ros2Link(config, args.domain)
+    from robocog.bridges.ros1.link import Ros1Link
+
+    return Ros1Link(config, python=args.ros1_python)
+
+
+def build_config(args: argparse.Namespace) -> BridgeConfig:
+    """The configuration file, then the command line's places, topics and limits on top."""
+    config = BridgeConfig.from_toml(args.config) if args.config else BridgeConfig()
+    places = dict(config.places)
+    for item in args.place:
+        name, _, coords = item.partition("=")
+        try:
+            values = [float(v) for v in coords.split(",")]
+        except ValueError:
+            values = []
+        if not name or len(values) not in (2, 3):
+            raise ValueError(f"--place {item!r}: expected NAME=X,Y[,THETA]")
+        places[name] = (values[0], values[1], values[2] if len(values) == 3 else 0.0)
+    topics = config.topics
+    for item in args.topic:
+        key, _, name = item.partition("=")
+        if key not in Topics.__dataclass_fields__ or not name:
+            known = ", ".join(Topics.__dataclass_fields__)
+            raise ValueError(f"--topic {item!r}: expected KEY=NAME with KEY one of {known}")
+        topics = replace(topics, **{key: name})
+    changes: dict[str, Any] = {"places": places, "topics": topics}
+    if args.watchdog is not None:
+        changes["watchdog_seconds"] = args.watchdog
+    if args.goto_wait is not None:
+        changes["goto_wait"] = args.goto_wait
+    return replace(config, **changes)
+
+
+def build_mind(name: str, source: Path | None = None, places: list[str] | None = None) -> Any:
+    """The mind called ``name``: ``nars``, ``bdi`` or ``module:factory``.
+
+    The minds are imported by name here, at run time, and never by an import statement:
+    the bridges know no engine. ``source`` is the mind's knowledge (Narsese lines, for a
+    ``knowledge`` parameter) or program (AgentSpeak text, for a ``source`` or ``program``
+    parameter), else the first positional parameter gets its text; a factory with a
+    ``places`` parameter gets the names of the configured places.
+    """
+    if name in MINDS:
+        module_name, attr = MINDS[name]
+    elif ":" in name:
+        module_name, _, attr = name.partition(":")
+    else:
+        raise MindUnavailable(f"unknown mind {name!r}: use nars, bdi or module:factory")
+    try:
+        # by name, not by an import statement: the bridges know no engine
+        module = importlib.import_module(module_name)
+    except ImportError as exc:
+        raise MindUnavailable(f"mind {name!r} is not available: {exc}") from exc
+    factory = getattr(module, attr, None)
+    if factory is None:
+        raise MindUnavailable(f"mind {name!r} is not available: {module_name} has no {attr}")
+    try:
+        params = dict(inspect.signature(factory).parameters)
+    except (TypeError, ValueError):
+        params = {}
+    kwargs: dict[str, Any] = {}
+    if places is not None and "places" in params:
+        kwargs["places"] = list(places)
+    if source is not None:
+        text = source.read_text(encoding="utf-8")
+        line_param = next((p for p in LINE_PARAMETERS if p in params), None)
+        text_param = next((p for p in TEXT_PARAMETERS if p in params), None)
+        if line_param is not None:
+            kwargs[line_param] = [line for line in text.splitlines() if line.strip()]
+        elif text_param is not None:
+            kwargs[text_param] = text
+        else:
+            positional = [
+                p
+                for p in params.values()
+                if p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD) and p.name not in kwargs
+            ]
+            if not positional:
+                raise MindUnavailable(f"mind {name!r} takes no knowledge or program")
+            kwargs[positional[0].name] = text
+    try:
+        return factory(**kwargs)
+    except Exception as exc:  # noqa: BLE001 - an engine may refuse its input in any way
+        raise MindUnavailable(
+            f"mind {name!r} could not start: {type(exc).__name__}: {exc}"
+        ) from exc

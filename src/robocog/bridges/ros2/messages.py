@@ -1,0 +1,214 @@
+"""ROS 2 message layouts as Cyclone DDS types, named as rmw_cyclonedds names them.
+
+A ROS 2 message ``pkg/msg/Name`` travels on DDS as the type ``pkg::msg::dds_::Name_``,
+a final (non-extensible) struct in plain CDR. Declaring the same layouts here, field for
+field and in the same order, is all it takes for real ROS 2 nodes to see this traffic;
+no ROS installation is needed. vision_msgs follows the Humble (4.x) layout, where a
+hypothesis nests ``ObjectHypothesis`` and a box centre is ``vision_msgs/Pose2D``.
+"""
+
+from dataclasses import dataclass, field
+
+import cyclonedds.idl.types as t
+from cyclonedds.idl import IdlStruct
+
+
+def _zeros36() -> list[float]:
+    return [0.0] * 36
+
+
+# -- builtin_interfaces, std_msgs ----------------------------------------------------
+
+
+@dataclass
+class Time(IdlStruct, typename="builtin_interfaces::msg::dds_::Time_"):
+    sec: t.int32 = 0
+    nanosec: t.uint32 = 0
+
+
+@dataclass
+class Header(IdlStruct, typename="std_msgs::msg::dds_::Header_"):
+    stamp: Time = field(default_factory=Time)
+    frame_id: str = ""
+
+
+@dataclass
+class String(IdlStruct, typename="std_msgs::msg::dds_::String_"):
+    data: str = ""
+
+
+# -- geometry_msgs -------------------------------------------------------------------
+
+
+@dataclass
+class Vector3(IdlStruct, typename="geometry_msgs::msg::dds_::Vector3_"):
+    x: t.float64 = 0.0
+    y: t.float64 = 0.0
+    z: t.float64 = 0.0
+
+
+@dataclass
+class Point(IdlStruct, typename="geometry_msgs::msg::dds_::Point_"):
+    x: t.float64 = 0.0
+    y: t.float64 = 0.0
+    z: t.float64 = 0.0
+
+
+@dataclass
+class Quaternion(IdlStruct, typename="geometry_msgs::msg::dds_::Quaternion_"):
+    x: t.float64 = 0.0
+    y: t.float64 = 0.0
+    z: t.float64 = 0.0
+    w: t.float64 = 1.0
+
+
+@dataclass
+class Pose(IdlStruct, typename="geometry_msgs::msg::dds_::Pose_"):
+    position: Point = field(default_factory=Point)
+    orientation: Quaternion = field(default_factory=Quaternion)
+
+
+@dataclass
+class PoseStamped(IdlStruct, typename="geometry_msgs::msg::dds_::PoseStamped_"):
+    header: Header = field(default_factory=Header)
+    pose: Pose = field(default_factory=Pose)
+
+
+@dataclass
+class PoseWithCovariance(IdlStruct, typename="geometry_msgs::msg::dds_::PoseWithCovariance_"):
+    pose: Pose = field(default_factory=Pose)
+    covariance: t.array[t.float64, 36] = field(default_factory=_zeros36)
+
+
+@dataclass
+class PoseWithCovarianceStamped(
+    IdlStruct, typename="geometry_msgs::msg::dds_::PoseWithCovarianceStamped_"
+):
+    header: Header = field(default_factory=Header)
+    pose: PoseWithCovariance = field(default_factory=PoseWithCovariance)
+
+
+@dataclass
+class Twist(IdlStruct, typename="geometry_msgs::msg::dds_::Twist_"):
+    linear: Vector3 = field(default_factory=Vector3)
+    angular: Vector3 = field(default_factory=Vector3)
+
+
+@dataclass
+class TwistWithCovariance(IdlStruct, typename="geometry_msgs::msg::dds_::TwistWithCovariance_"):
+    twist: Twist = field(default_factory=Twist)
+    covariance: t.array[t.float64, 36] = field(default_factory=_zeros36)
+
+
+# -- nav_msgs, sensor_msgs -----------------------------------------------------------
+
+
+@dataclass
+class Odometry(IdlStruct, typename="nav_msgs::msg::dds_::Odometry_"):
+    header: Header = field(default_factory=Header)
+    child_frame_id: str = ""
+    pose: PoseWithCovariance = field(default_factory=PoseWithCovariance)
+    twist: TwistWithCovariance = field(default_factory=TwistWithCovariance)
+
+
+@dataclass
+class LaserScan(IdlStruct, typename="sensor_msgs::msg::dds_::LaserScan_"):
+    header: Header = field(default_factory=Header)
+    angle_min: t.float32 = 0.0
+    angle_max: t.float32 = 0.0
+    angle_increment: t.float32 = 0.0
+    time_increment: t.float32 = 0.0
+    scan_time: t.float32 = 0.0
+    range_min: t.float32 = 0.0
+    range_max: t.float32 = 0.0
+    ranges: t.sequence[t.float32] = field(default_factory=list)
+    intensities: t.sequence[t.float32] = field(default_factory=list)
+
+
+# -- vision_msgs (Humble and later) --------------------------------------------------
+
+
+@dataclass
+class Point2D(IdlStruct, typename="vision_msgs::msg::dds_::Point2D_"):
+    x: t.float64 = 0.0
+    y: t.float64 = 0.0
+
+
+@dataclass
+class Pose2D(IdlStruct, typename="vision_msgs::msg::dds_::Pose2D_"):
+    position: Point2D = field(default_factory=Point2D)
+    theta: t.float64 = 0.0
+
+
+@dataclass
+class BoundingBox2D(IdlStruct, typename="vision_msgs::msg::dds_::BoundingBox2D_"):
+    center: Pose2D = field(default_factory=Pose2D)
+    size_x: t.float64 = 0.0
+    size_y: t.float64 = 0.0
+
+
+@dataclass
+class ObjectHypothesis(IdlStruct, typename="vision_msgs::msg::dds_::ObjectHypothesis_"):
+    class_id: str = ""
+    score: t.float64 = 0.0
+
+
+@dataclass
+class ObjectHypothesisWithPose(
+    IdlStruct, typename="vision_msgs::msg::dds_::ObjectHypothesisWithPose_"
+):
+    hypothesis: ObjectHypothesis = field(default_factory=ObjectHypothesis)
+    pose: PoseWithCovariance = field(default_factory=PoseWithCovariance)
+
+
+@dataclass
+class Detection2D(IdlStruct, typename="vision_msgs::msg::dds_::Detection2D_"):
+    header: Header = field(default_factory=Header)
+    results: t.sequence[ObjectHypothesisWithPose] = field(default_factory=list)
+    bbox: BoundingBox2D = field(default_factory=BoundingBox2D)
+    id: str = ""
+
+
+@dataclass
+class Detection2DArray(IdlStruct, typename="vision_msgs::msg::dds_::Detection2DArray_"):
+    header: Header = field(default_factory=Header)
+    detections: t.sequence[Detection2D] = field(default_factory=list)
+
+
+# -- actions: the cancel service of a ROS 2 action -----------------------------------
+
+
+@dataclass
+class UUID(IdlStruct, typename="unique_identifier_msgs::msg::dds_::UUID_"):
+    uuid: t.array[t.uint8, 16] = field(default_factory=lambda: [0] * 16)
+
+
+@dataclass
+class GoalInfo(IdlStruct, typename="action_msgs::msg::dds_::GoalInfo_"):
+    goal_id: UUID = field(default_factory=UUID)
+    stamp: Time = field(default_factory=Time)
+
+
+@dataclass
+class CancelGoalRequest(IdlStruct, typename="action_msgs::srv::dds_::CancelGoal_Request_"):
+    """rmw_cyclonedds puts a request header (the client's id and a sequence number)
+    before the request itself; a zero goal id and a zero stamp cancel every goal."""
+
+    client_guid: t.uint64 = 0
+    sequence_number: t.int64 = 0
+    goal_info: GoalInfo = field(default_factory=GoalInfo)
+
+
+def stamp_now(now: float) -> Time:
+    """A ROS time from seconds since the epoch."""
+    sec = int(now)
+    return Time(sec, int((now - sec) * 1e9))
+
+
+def topic_name(ros_name: str, prefix: str = "rt") -> str:
+    """The DDS topic of a ROS 2 name: ``/scan`` is ``rt/scan``, a service request
+    ``rq/<name>Request``. A name must be absolute or relative without a ``~``."""
+    name = ros_name.strip()
+    if not name or "~" in name or "//" in name:
+        raise ValueError(f"not a usable ROS 2 topic name: {ros_name!r}")
+    return f"{prefix}/{name.lstrip('/')}"

@@ -1,0 +1,175 @@
+"""The bridge's sense-decide-act loop, with the watchdog that keeps a real robot safe.
+
+A simulator can pause; a robot cannot. So beside the cycle runs a watchdog thread: when
+the robot's readings stop for longer than ``watchdog_seconds`` (a cable, a crashed
+driver, a lost Wi-Fi link) or the mind spends longer than ``mind_timeout`` on one
+decision, the robot is stopped (zero velocity, navigation goal cancelled) and the event
+is logged. When readings come back, the bridge resumes by itself. A mind that raises
+stops the robot the same way; after ``max_mind_failures`` failures in a row the run ends.
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+import threading
+import time
+from collections.abc import Callable
+
+from robocog.bridges.body import RobotBody
+from robocog.robot.loop import CycleStats
+from robocog.robot.protocols import Mind
+
+log = logging.getLogger("robocog.bridges")
+
+#: the method names under which a mind takes text input (Narsese lines), first found wins
+TEXT_METHODS = ("hear", "tell")
+
+
+def text_input_of(mind: Mind) -> Callable[[str], object] | None:
+    """The mind's text input (for the ``/narsese`` topic), or None if it takes none."""
+    for name in TEXT_METHODS:
+        method = getattr(mind, name, None)
+        if callable(method):
+            return method
+    return None
+
+
+class BridgeRunner:
+    """Runs a mind on a ``RobotBody`` until told to stop, guarded by a watchdog."""
+
+    def __init__(self, body: RobotBody, mind: Mind) -> None:
+        self.body = body
+        self.mind = mind
+        self.config = body.config
+        self.stats = CycleStats()
+        self.cycles = 0
+        self.events: list[tuple[float, str]] = []
+        self._stop = threading.Event()
+        self._trip: str | None = None  # "percepts" | "mind" | None
+        self._mind_since: float | None = None
+        self._trip_lock = threading.Lock()
+        self._hear = text_input_of(mind)
+        self._deaf_warned = False
+
+    # -- control -----------------------------------------------------------------
+
+    def stop(self) -> None:
+        """Ask the run to end after the current cycle."""
+        self._stop.set()
+
+    def run(self, duration: float | None = None, max_cycles: int | None = None) -> int:
+        """Run until ``stop()``, ``duration`` seconds or ``max_cycles``; returns an exit code.
+
+        The exit code is 0 for a normal end and 1 when the mind failed too often.
+        The robot is always left stopped.
+        """
+        deadline = None if duration is None else time.monotonic() + duration
+        watchdog = threading.Thread(target=self._watch, name="bridge-watchdog", daemon=True)
+        watchdog.start()
+        failures = 0
+        code = 0
+        try:
+            while not self._stop.is_set():
+                if deadline is not None and time.monotonic() >= deadline:
+                    break
+                if max_cycles is not None and self.cycles >= max_cycles:
+                    break
+                self.body.wait_for_readings(self.config.cycle_period)
+                if self._trip == "percepts":
+                    continue
+                if self.body.percept_age() > self.config.watchdog_seconds:
+                    continue  # nothing (fresh) to decide on yet; the watchdog will act
+                if self._cycle():
+                    failures = 0
+                else:
+                    failures += 1
+                    if failures >= self.config.max_mind_failures:
+                        self._event(f"the mind failed {failures} times in a row; giving up")
+                        code = 1
+                        break
+        finally:
+            self._stop.set()
+            watchdog.join(timeout=1.0)
+            self.body.stop()
+        return code
+
+    # -- one cycle ---------------------------------------------------------------
+
+    def _cycle(self) -> bool:
+        """One perception-reason-action cycle; False when the mind failed."""
+        start = time.perf_counter()
+        try:
+            self._mind_since = time.monotonic()
+            lines = self.body.texts()
+            if self._hear is not None:
+                for line in lines:
+                    self._hear(line)
+            elif lines and not self._deaf_warned:
+                self._deaf_warned = True
+                log.warning("this mind takes no text input; lines from the robot are dropped")
+            percepts = self.body.percepts()
+            self.mind.perceive(percepts)
+            commands = self.mind.decide()
+        except Exception as exc:  # noqa: BLE001 - any failure of the mind stops the robot
+            self._mind_failed(exc)
+            return False
+        finally:
+            self._mind_since = None
+        reasoned = time.perf_counter()
+        if self._trip == "mind":
+            self._clear("the mind answers again; resuming")
+        for command in commands:
+            outcome = self.body.execute(command)
+            log.debug("%s -> %s %s", command, outcome.status.value, outcome.reason)
+            try:
+                self.mind.on_outcome(command, outcome)
+            except Exception as exc:  # noqa: BLE001
+                self._mind_failed(exc)
+                return False
+        end = time.perf_counter()
+        self.cycles += 1
+        self.stats.reason.append(reasoned - start)
+        self.stats.cycle.append(end - start)
+        return True
+
+    def _mind_failed(self, exc: BaseException) -> None:
+        log.error("the mind failed: %s: %s", type(exc).__name__, exc, exc_info=exc)
+        self._halt("mind", f"the mind failed ({type(exc).__name__}: {exc})")
+
+    # -- the watchdog --------------------------------------------------------------
+
+    def _watch(self) -> None:
+        period = min(0.05, self.config.watchdog_seconds / 4)
+        while not self._stop.wait(period):
+            age = self.body.percept_age()
+            since = self._mind_since
+            if since is not None and time.monotonic() - since > self.config.mind_timeout:
+                if self._trip is None:
+                    self._halt("mind", f"the mind took longer than {self.config.mind_timeout:g} s")
+            elif age > self.config.watchdog_seconds:
+                if self._trip != "percepts":
+                    if math.isinf(age):
+                        reason = "no percepts from the robot yet"
+                    else:
+                        limit = self.config.watchdog_seconds
+                        reason = f"no percepts for {limit:g} s (last {age:.2f} s ago)"
+                    self._halt("percepts", reason)
+            elif self._trip == "percepts":
+                self._clear("percepts are back; resuming")
+
+    def _halt(self, kind: str, reason: str) -> None:
+        with self._trip_lock:  # the trip and the body's halt change together
+            self._trip = kind
+            self.body.halt(reason)
+        self._event(f"watchdog: robot stopped: {reason}")
+
+    def _clear(self, message: str) -> None:
+        with self._trip_lock:
+            self._trip = None
+            self.body.resume()
+        self._event(message)
+
+    def _event(self, message: str) -> None:
+        self.events.append((time.time(), message))
+        log.warning("%s", message)

@@ -1,0 +1,165 @@
+"""``robocog experiment NAME``: the papers' case studies as seeded runs with reports.
+
+``robocog experiment garbage|room-exit|assembly [options]``: each case study has its
+own arguments. A study whose module is not in this build says so instead of running.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import sys
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from robocog.worlds.garbage import LIGHTS
+
+if TYPE_CHECKING:
+    from robocog.experiments.garbage import ExperimentResult, MindSpec
+
+#: experiment name -> (module with configure/run, or None for the garbage field here, help)
+EXPERIMENTS: dict[str, tuple[str | None, str]] = {
+    "garbage": (None, "seed 000: NARS and BDI collecting garbage (Table II, Fig. 6)"),
+    "room-exit": ("robocog.experiments.room_exit", "seed 001: the Q.bo leaving a room"),
+    "assembly": ("robocog.experiments.assembly", "seed 004: the manipulator's assemblies"),
+}
+
+
+def configure(parser: argparse.ArgumentParser) -> None:
+    """One sub-command per case study, each with its own arguments."""
+    sub = parser.add_subparsers(dest="experiment", metavar="NAME")
+    for name, (module, help_text) in EXPERIMENTS.items():
+        p = sub.add_parser(name, help=help_text, description=help_text)
+        if module is None:
+            configure_garbage(p)
+            continue
+        try:
+            importlib.import_module(module).configure(p)
+        except Exception as exc:  # not built yet, or broken while being built
+            p.set_defaults(unavailable=f"{type(exc).__name__}: {exc}")
+            p.add_argument("rest", nargs=argparse.REMAINDER, help=argparse.SUPPRESS)
+
+
+def configure_garbage(parser: argparse.ArgumentParser) -> None:
+    """The garbage experiment's arguments."""
+    parser.add_argument(
+        "--runs", type=int, default=30, help="runs per mind (default 30, as Table II)"
+    )
+    parser.add_argument("--seed", type=int, default=0, help="seed of the first run (default 0)")
+    parser.add_argument("--light", choices=LIGHTS, default="sunny", help="lighting (default sunny)")
+    parser.add_argument(
+        "--minds",
+        default="nars,bdi",
+        help="comma-separated: nars, bdi, ona (NARS on ONA 0.9.2, the peer) (default nars,bdi)",
+    )
+    parser.add_argument(
+        "--rounds",
+        type=int,
+        default=8,
+        help="rounds NARS collects before it is asked where trash accumulates (0: skip)",
+    )
+    parser.add_argument("--json", type=Path, metavar="FILE", help="write the results as JSON")
+    parser.add_argument(
+        "--out", type=Path, default=Path("reports/garbage"), metavar="DIR", help="report folder"
+    )
+    parser.add_argument("--no-report", action="store_true", help="skip the markdown and plots")
+
+
+def run(args: argparse.Namespace) -> int:
+    """Run the chosen experiment."""
+    name = getattr(args, "experiment", None)
+    if name is None:
+        print("robocog experiment: name one of " + ", ".join(EXPERIMENTS), file=sys.stderr)
+        return 2
+    if getattr(args, "unavailable", None):
+        print(
+            f"robocog experiment {name}: not available in this build ({args.unavailable})",
+            file=sys.stderr,
+        )
+        return 2
+    module = EXPERIMENTS[name][0]
+    if module is not None:
+        return int(importlib.import_module(module).run(args) or 0)
+    return run_garbage_args(args)
+
+
+def run_garbage_args(args: argparse.Namespace) -> int:
+    """``robocog experiment garbage``: 0 when every mind ran, 1 when some could not."""
+    if args.runs < 1:
+        print("robocog experiment: --runs must be at least 1", file=sys.stderr)
+        return 2
+    from robocog.experiments.garbage import default_minds
+
+    try:
+        specs = default_minds([m.strip() for m in args.minds.split(",") if m.strip()])
+    except ValueError as exc:
+        print(f"robocog experiment: {exc}", file=sys.stderr)
+        return 2
+    result = run_garbage(
+        specs,
+        runs=args.runs,
+        seed=args.seed,
+        light=args.light,
+        rounds=args.rounds,
+        json_path=args.json,
+        out=None if args.no_report else args.out,
+    )
+    return 0 if all(m.ok for m in result.minds.values()) else 1
+
+
+def run_garbage(
+    specs: list[MindSpec],
+    runs: int,
+    seed: int,
+    light: str,
+    rounds: int,
+    json_path: Path | None,
+    out: Path | None,
+) -> ExperimentResult:
+    """Shared by ``experiment garbage`` and ``demo``: run, print the table, write files."""
+    from rich.console import Console
+    from rich.markup import escape
+    from rich.progress import BarColumn, MofNCompleteColumn, Progress, TimeElapsedColumn
+
+    from robocog.experiments.garbage import run_experiment
+    from robocog.experiments.report import mind_status, summary_table, write_json, write_report
+    from robocog.worlds.garbage import GarbageConfig
+
+    console = Console()
+    config = GarbageConfig(light=light)  # type: ignore[arg-type]
+    with Progress(
+        "[progress.description]{task.description}",
+        BarColumn(),
+        MofNCompleteColumn(),
+        TimeElapsedColumn(),
+        console=console,
+        transient=True,
+    ) as progress:
+        task = progress.add_task("garbage runs", total=runs * len(specs))
+        result = run_experiment(
+            specs,
+            runs=runs,
+            seed=seed,
+            config=config,
+            rounds=rounds,
+            advance=lambda: progress.advance(task),
+        )
+    console.print(summary_table(result))
+    for m in result.minds.values():
+        console.print(escape(mind_status(m)))
+    acc = result.accumulation
+    if acc is not None and acc.unavailable is None:
+        console.print(
+            escape(
+                f"{acc.mind}, after {acc.rounds} rounds, ranks the checkpoints by trash seen: "
+                + ", ".join(p for p, *_ in acc.ranking)
+                + f" (hotspots: {', '.join(acc.hotspots)})"
+            )
+        )
+    if json_path is not None:
+        write_json(json_path, result)
+        console.print(escape(f"results: {json_path}"))
+    if out is not None:
+        page = write_report(result, out)
+        console.print(escape(f"report: {page}"))
+    return result

@@ -1,0 +1,255 @@
+"""NarsMind: the reasoner of seed 000 behind the robot contract.
+
+Each frame the percepts become Narsese events (``nars_encoding``), the task goal ``G!``
+is given, and the reasoner runs a few cycles. Operations it executes (``^forward
+^left ^right ^goto ^pick ^drop``) are collected by the callbacks registered on it and
+returned as Commands; each Outcome comes back as the events that follow from it (the
+gripper holding or still open, the robot at the place it went to), so a pick that
+fails leaves its anticipated ``<gripper --> [hold]>`` unfulfilled and the hypothesis
+that predicted it loses evidence (Section V.D).
+
+The operator's knowledge of the checkpoints (Section V.C, step 4) enters as a goal:
+when ``patience`` frames have passed without an operation that succeeded (nothing
+executed, or picks and drops that failed), the mind also asks it to be at the next
+checkpoint of the route, which the background knowledge's ``^goto`` rule can achieve.
+The reasoner then weighs that goal against ``G`` by desire: a pick whose hypothesis
+has lost evidence no longer outweighs moving on. Nothing here picks or moves on by
+itself: the reasoner does.
+"""
+
+from __future__ import annotations
+
+import importlib.resources
+from collections import deque
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
+
+from robocog.minds.nars_encoding import (
+    DEFAULT_FOV,
+    OPERATIONS,
+    command_for,
+    encode,
+    goal_at,
+    gripper_events,
+    recall_questions,
+)
+from robocog.robot.commands import Command, Drop, GoTo, Outcome, Pick
+from robocog.robot.percepts import Detection, Gripper, Obstacle, Percept, Pose
+
+if TYPE_CHECKING:
+    from robocog.nars import NAR
+
+TRASH_QUESTION = "<<({SELF} * {?1}) --> at> =/> <trash --> [see]>>?"
+
+
+class NotReady(RuntimeError):
+    """The reasoner cannot drive the robot yet; the message says what is missing."""
+
+
+def background(name: str = "garbage.nal") -> list[str]:
+    """The lines of a knowledge file shipped with robocog (seed 000 Section V.C.1)."""
+    text = importlib.resources.files("robocog.minds").joinpath("knowledge", name).read_text()
+    return [line for line in text.splitlines() if line.strip()]
+
+
+@dataclass
+class NarsSettings:
+    """How the mind talks to the reasoner; ONA's defaults where ONA has one."""
+
+    seed: int = 0
+    cycles_per_frame: int = 10  # thinking time per frame, also after an execution
+    patience: int = 2  # frames without a successful operation before the route goal
+    instances: bool = True
+    recall: bool = True  # ask what a seen label is, priming what is known about it
+    max_detections: int = 3
+    fov: float = DEFAULT_FOV
+    motor_babbling: bool = False
+    transcript: int = 0  # keep the last N output lines of the reasoner (0: none)
+    overrides: dict[str, object] = field(default_factory=dict)
+
+
+class NarsMind:
+    """A Mind whose decisions are the reasoner's operation executions."""
+
+    name = "NARS"
+
+    def __init__(
+        self,
+        places: Sequence[str] = (),
+        settings: NarsSettings | None = None,
+        knowledge: Sequence[str] | None = None,
+        nar: NAR | None = None,
+    ) -> None:
+        self.settings = settings or NarsSettings()
+        self.places = list(places)
+        self.nar = (
+            nar if nar is not None else NAR(seed=self.settings.seed, **self.settings.overrides)
+        )
+        self.lines: deque[str] = deque(maxlen=self.settings.transcript or 1)
+        if self.settings.transcript:
+            self.nar.output = self.lines.append
+        self._executed: list[tuple[str, str | None]] = []
+        self._frame: list[str] = []
+        self._idle = 0
+        self._last_place: str | None = None
+        self._holding = False
+        self.inputs = 0
+        self.decisions: list[tuple[str, str | None]] = []
+        self._setup(background() if knowledge is None else list(knowledge))
+
+    # ---- wiring ---------------------------------------------------------------
+
+    def _setup(self, knowledge: list[str]) -> None:
+        for slot, op in enumerate(OPERATIONS, start=1):
+            self._input(f"*setopname {slot} {op}")
+        if not self.settings.motor_babbling:
+            self._input("*motorbabbling=false")
+        for op in OPERATIONS:
+            self.nar.register_operation(op, self._callback(op))
+        for line in knowledge:
+            self._input(line)
+
+    def _callback(self, op: str):  # noqa: ANN202 - the reasoner's callback type
+        def execute(args: object = None) -> None:
+            self._executed.append((op, None if args is None else str(args)))
+
+        return execute
+
+    def _input(self, line: str) -> None:
+        try:
+            self.nar.add_input(line)
+        except Exception as exc:  # the reasoner names the line and column
+            raise NotReady(f"the reasoner rejected {line.strip()!r}: {exc}") from exc
+        self.inputs += 1
+
+    # ---- the Mind protocol ----------------------------------------------------
+
+    def perceive(self, percepts: Sequence[Percept]) -> None:
+        """Encode the frame; the place is remembered to know the next checkpoint."""
+        for p in percepts:
+            if isinstance(p, Pose) and p.place:
+                self._last_place = p.place
+            elif isinstance(p, Gripper):
+                self._holding = p.holding is not None
+        self._frame = recall_questions(percepts) if self.settings.recall else []
+        self._frame += encode(
+            percepts,
+            self.settings.fov,
+            self.settings.instances,
+            self.settings.max_detections,
+        )
+
+    def decide(self) -> list[Command]:
+        """Feed the frame and the goals, cycle, and return what the reasoner executed."""
+        for line in self._frame:
+            self._input(line)
+        self._input("G! :|:")
+        if self._idle >= self.settings.patience and not self._holding:
+            nxt = self.next_place()
+            if nxt is not None:
+                self._input(goal_at(nxt))
+        self.nar.cycles(self.settings.cycles_per_frame)
+        executed, self._executed = self._executed, []
+        commands: list[Command] = []
+        for op, args in executed:
+            self.decisions.append((op, args))
+            command = command_for(op, args, [*self.places, "start"])
+            if command is not None:
+                commands.append(command)
+        self._idle += 1  # reset by on_outcome when one of these succeeds
+        return commands
+
+    def on_outcome(self, command: Command, outcome: Outcome) -> None:
+        """Feed back the events that follow from how the command ended."""
+        if outcome.ok:
+            self._idle = 0
+        if isinstance(command, Pick):
+            self._holding = outcome.ok
+            for line in gripper_events(outcome.ok):
+                self._input(line)
+        elif isinstance(command, GoTo) and outcome.ok:
+            place = command.place
+            if place == "next":
+                place = self.next_place() or place
+            if place in self.places:
+                self._last_place = place
+                self._input(f"<({{SELF}} * {{{place}}}) --> at>. :|:")
+        elif isinstance(command, Drop) and outcome.ok:
+            self._holding = False
+            for line in gripper_events(False):
+                self._input(line)
+
+    # ---- the operator's route and the user's questions --------------------------
+
+    def close(self) -> None:
+        """Release the reasoner (a reasoner in another process is ended)."""
+        close = getattr(self.nar, "close", None)
+        if callable(close):
+            close()
+
+    def new_round(self) -> None:
+        """The operator restarts the route: the next checkpoint is the first again."""
+        self._last_place = None
+        self._idle = 0
+
+    def next_place(self) -> str | None:
+        """The checkpoint after the last one visited; ``start`` closes the route."""
+        if not self.places:
+            return None
+        if self._last_place not in self.places:
+            return self.places[0]
+        i = self.places.index(self._last_place)
+        return self.places[i + 1] if i + 1 < len(self.places) else "start"
+
+    def ask(self, question: str) -> tuple[str, float, float] | None:
+        """The reasoner's answer as (statement, frequency, confidence), or None."""
+        answer = self.nar.ask(question)
+        if answer is None:
+            return None
+        return str(answer.term), float(answer.truth.f), float(answer.truth.c)
+
+    def trash_places(self) -> list[tuple[str, float, float, float]]:
+        """Every checkpoint with the evidence for ``<<(SELF at P)> =/> <trash --> [see]>>``,
+        best expectation first: (place, frequency, confidence, expectation)."""
+        ranked = []
+        for place in self.places:
+            ans = self.ask(f"<<({{SELF}} * {{{place}}}) --> at> =/> <trash --> [see]>>?")
+            if ans is None:
+                continue
+            _term, f, c = ans
+            ranked.append((place, f, c, c * (f - 0.5) + 0.5))
+        ranked.sort(key=lambda r: -r[3])
+        return ranked
+
+
+def probe(seed: int = 0, frames: int = 12) -> str | None:
+    """Why NarsMind cannot run yet, or None when the reasoner can drive the robot.
+
+    Loads the background knowledge, then shows the reasoner a checkpoint with a bottle
+    in front and an open gripper while it wants ``G``: a working reasoner picks.
+    """
+    try:
+        mind = NarsMind(["p0", "p1"], NarsSettings(seed=seed))
+    except NotReady as exc:
+        return f"the background knowledge does not load: {exc}"
+    except Exception as exc:  # an engine still being built may fail in any way
+        return f"the reasoner cannot start: {type(exc).__name__}: {exc}"
+    frame: list[Percept] = [
+        Detection("bottle", 0.0, 1.0, 0.9, "bottle1"),
+        Obstacle("none", 2.0),
+        Gripper(None),
+        Pose(0.0, 0.0, 0.0, "p0"),
+    ]
+    try:
+        for _ in range(frames):
+            mind.perceive(frame)
+            for command in mind.decide():
+                if isinstance(command, Pick):
+                    return None
+    except Exception as exc:
+        return f"the reasoner fails while deciding: {type(exc).__name__}: {exc}"
+    return (
+        "the reasoner does not act on its goals yet: shown a bottle at a checkpoint with "
+        "an open gripper while wanting G, it did not execute ^pick"
+    )

@@ -1,0 +1,206 @@
+"""PlannerMind: the AtomSpace planner of seed 004 driving a manipulator through the contract.
+
+The phases of Chapter 4 of the thesis, one mind:
+
+* perception: the ``Tag`` percepts name the objects in view;
+* learning: sentences ("The table is a fixed object.", "The SnapRing1 is on the
+  SnapRing2.") say what the tags cannot, and make the initial scene;
+* request: sentences say what must hold; the planner searches a plan from the scene;
+* execution: the plan's steps become ``PickUp``/``PutDown``/``Stack``/``Unstack``
+  commands, one per cycle. Each step that succeeds moves the mind's scene on; when one
+  fails (a grasp slips), the mind plans again from the scene as it now stands and goes
+  on with the new plan, up to ``max_replans`` times.
+
+Every search is kept (plan, iterations, seconds) so an experiment can set them beside
+the thesis's tables.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+
+from robocog.planning.planner import (
+    Planner,
+    PlanningError,
+    PlanResult,
+    Step,
+    goal_from_english,
+    scene_from_english,
+)
+from robocog.planning.task import Fact
+from robocog.planning.world import Scene, SceneError
+from robocog.robot.commands import Command, Outcome, PickUp, PutDown, Stack, Unstack
+from robocog.robot.percepts import Gripper, Percept, Tag
+
+
+def command_for_step(step: Step) -> Command:
+    """The manipulator Command of one plan step (raises ValueError for an unknown action)."""
+    name, args = step.name.replace("-", ""), step.args
+    if name == "pickup" and len(args) == 1:
+        return PickUp(args[0])
+    if name == "putdown" and len(args) == 1:
+        return PutDown(args[0])
+    if name == "putdown" and len(args) == 2:
+        return PutDown(args[0], args[1])
+    if name == "stack" and len(args) == 2:
+        return Stack(args[0], args[1])
+    if name == "unstack" and len(args) == 2:
+        return Unstack(args[0], args[1])
+    raise ValueError(f"no manipulator command for {step}")
+
+
+@dataclass
+class RequestRecord:
+    """One request: its sentences, every plan searched for it, and what was executed."""
+
+    request: str
+    goal: list[Fact]
+    plans: list[PlanResult] = field(default_factory=list)
+    executed: list[str] = field(default_factory=list)
+    failures: list[str] = field(default_factory=list)
+    status: str = "planning"
+    message: str = ""
+
+    @property
+    def first_plan(self) -> PlanResult | None:
+        """The plan found before any step ran."""
+        return self.plans[0] if self.plans else None
+
+    @property
+    def replans(self) -> int:
+        """How many times the mind planned again after a failed step."""
+        return max(0, len(self.plans) - 1)
+
+    @property
+    def planning_seconds(self) -> float:
+        """Time spent searching, over all plans of this request."""
+        return sum(p.seconds for p in self.plans)
+
+
+class PlannerMind:
+    """Plans from tags and sentences, executes step by step, replans on failure."""
+
+    def __init__(
+        self,
+        facts: str = "",
+        planner: Planner | None = None,
+        mode: str = "astar",
+        max_replans: int = 20,
+    ) -> None:
+        self.facts = facts
+        self.planner = planner or Planner()
+        self.mode = mode
+        self.max_replans = max_replans
+        self.seen: list[str] = []
+        self.holding: str | None = None
+        self.scene: Scene | None = None
+        self.records: list[RequestRecord] = []
+        self._steps: list[Step] = []
+        self._next = 0
+        self._running: Step | None = None
+
+    # -- phases -------------------------------------------------------------------
+
+    def request(self, sentences: str, facts: str | None = None) -> RequestRecord:
+        """Start a request; ``facts`` (learning sentences) rebuild the scene from the tags.
+
+        Without ``facts`` the mind keeps the scene it has been tracking (or builds one
+        from the tags and the facts given at construction). A sentence the planner
+        cannot read ends the request with status ``failed`` and the reason.
+        """
+        record = RequestRecord(sentences, [])
+        self.records.append(record)
+        self._steps, self._next, self._running = [], 0, None
+        try:
+            record.goal = goal_from_english(sentences)
+            if facts is not None:
+                self.facts = facts
+                self.scene = None
+        except (PlanningError, ValueError) as exc:
+            record.status, record.message = "failed", str(exc)
+        return record
+
+    @property
+    def current(self) -> RequestRecord | None:
+        """The latest request."""
+        return self.records[-1] if self.records else None
+
+    @property
+    def busy(self) -> bool:
+        """True while the latest request is being planned or executed."""
+        return self.current is not None and self.current.status in ("planning", "executing")
+
+    # -- Mind ---------------------------------------------------------------------
+
+    def perceive(self, percepts: Sequence[Percept]) -> None:
+        """Tags name the objects in view (perception phase); the gripper says what it holds."""
+        seen = [p.name for p in percepts if isinstance(p, Tag)]
+        if seen:
+            self.seen = list(dict.fromkeys(seen))
+        for p in percepts:
+            if isinstance(p, Gripper):
+                self.holding = p.holding
+
+    def decide(self) -> list[Command]:
+        """Plan if needed, then return the next step's command."""
+        record = self.current
+        if record is None or record.status not in ("planning", "executing"):
+            return []
+        if self.scene is None:
+            try:
+                self.scene = scene_from_english(self.seen, self.facts)
+            except (PlanningError, ValueError) as exc:
+                record.status, record.message = "failed", f"learning phase: {exc}"
+                return []
+        if record.status == "planning" and not self._plan(record):
+            return []
+        if self._next >= len(self._steps):
+            record.status = "reached"
+            return []
+        self._running = self._steps[self._next]
+        try:
+            return [command_for_step(self._running)]
+        except ValueError as exc:
+            record.status, record.message = "failed", str(exc)
+            return []
+
+    def on_outcome(self, command: Command, outcome: Outcome) -> None:
+        """Move the scene on after a step, or plan again from it after a failure."""
+        record = self.current
+        step = self._running
+        self._running = None
+        if record is None or step is None or record.status != "executing":
+            return
+        if outcome.ok:
+            assert self.scene is not None
+            try:
+                self.scene = step.apply(self.scene)
+            except SceneError as exc:
+                record.status, record.message = "failed", f"the scene lost track: {exc}"
+                return
+            record.executed.append(str(step))
+            self._next += 1
+            if self._next >= len(self._steps):
+                record.status = "reached"
+            return
+        record.failures.append(f"{step}: {outcome.reason}")
+        if record.replans >= self.max_replans:
+            record.status, record.message = "failed", f"gave up after {record.replans} replans"
+            return
+        record.status = "planning"
+
+    def _plan(self, record: RequestRecord) -> bool:
+        assert self.scene is not None
+        try:
+            result = self.planner.plan(self.scene, record.goal, mode=self.mode)
+        except PlanningError as exc:
+            record.status, record.message = "failed", str(exc)
+            return False
+        record.plans.append(result)
+        if not result.found:
+            record.status, record.message = "failed", result.message or "no plan"
+            return False
+        self._steps, self._next = list(result.steps), 0
+        record.status = "executing"
+        return True

@@ -1,0 +1,251 @@
+"""Goals and decisions (Algorithm 1 of the NARS robot paper, ONA's Decision.c).
+
+Mixed into :class:`~robocog.nars.nar.NAR`. A goal event looks up the implications whose
+consequence it is, in its concept's per-operation tables; an implication whose
+precondition has just happened yields a desire for its operation. The most desired
+operation above the decision threshold is executed; otherwise the preconditions become
+subgoals one layer down. Motor babbling tries a random operation now and then, unless a
+learned one is already desired enough.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+from . import truth as tf
+from .event import BELIEF, GOAL, Event, Implication
+from .memory import EventQueue
+from .sensorimotor import executable, split_precondition
+from .stamp import fmt, merge, overlap
+from .terms import SEQUENCE, Term, atom, compound
+from .truth import Truth, expectation
+from .unify import apply, unify
+
+if TYPE_CHECKING:
+    from .memory import Concept
+
+
+@dataclass(slots=True)
+class Decision:
+    """An operation to execute and why."""
+
+    desire: float
+    op: Term
+    implication: Implication | None = None
+    precondition: Event | None = None
+    babbled: bool = False
+
+
+def _ground(t: Term) -> bool:
+    return not t.has_indep_var and not t.has_dep_var and not t.has_query_var
+
+
+class DecisionMixin:
+    """Goal processing for :class:`NAR`."""
+
+    def _init_goals(self) -> None:
+        cfg = self.config  # type: ignore[attr-defined]
+        self.goal_layers = [
+            EventQueue(cfg.cycling_goal_events_max) for _ in range(cfg.cycling_goal_events_layers)
+        ]
+
+    def _add_goal(self, g: Event, priority: float, layer: int) -> None:
+        layer = min(layer, len(self.goal_layers) - 1)
+        for q in self.goal_layers:
+            if q.contains(g):
+                return
+        self.goal_layers[layer].push(g, priority)
+
+    # ------------------------------------------------------------------ cycle
+    def _process_goals(self) -> None:
+        for layer, q in enumerate(self.goal_layers):
+            popped = q.pop()
+            if popped is None:
+                continue
+            priority, g = popped
+            if self._shows(priority):  # type: ignore[attr-defined]
+                self._print("Selected: " + g.line(priority))  # type: ignore[attr-defined]
+            d = self._goal(g, priority, layer)
+            if d is not None:
+                self._execute(d)
+                return
+
+    def _goal(self, g: Event, priority: float, layer: int) -> Decision | None:
+        cfg = self.config  # type: ignore[attr-defined]
+        now = self.time  # type: ignore[attr-defined]
+        gp = Event(g.term, GOAL, tf.projection(g.truth, g.occurrence_time, now), g.stamp, now, now)
+        if g.term.op == SEQUENCE:
+            self._decompose_sequence(gp, priority, layer)
+            return None
+        if g.term.is_op and executable(g.term):
+            if expectation(gp.truth) >= cfg.decision_threshold and _ground(g.term):
+                return Decision(expectation(gp.truth), g.term)
+            return None
+        mem = self.memory  # type: ignore[attr-defined]
+        c = mem.conceptualize(g.term, now)
+        c.goal_spike = gp
+        best = self._suggest(gp, c)
+        if best is not None and best.desire >= cfg.decision_threshold:
+            return best
+        self._subgoals(gp, c, priority, layer)
+        return None
+
+    def _decompose_sequence(self, g: Event, priority: float, layer: int) -> None:
+        """Goal ``(a &/ b)``: want the first component not yet fulfilled."""
+        cfg = self.config  # type: ignore[attr-defined]
+        now = self.time  # type: ignore[attr-defined]
+        comps: list[Term] = []
+        t = g.term
+        while t.op == SEQUENCE:
+            comps.insert(0, t.args[1])
+            t = t.args[0]
+        comps.insert(0, t)
+        truth = g.truth
+        stamp = g.stamp
+        for comp in comps:
+            c = self.memory.find(comp)  # type: ignore[attr-defined]
+            spike = c.belief_spike if c is not None else None
+            if spike is not None:
+                pt = tf.projection(spike.truth, spike.occurrence_time, now)
+                if expectation(pt) >= cfg.condition_threshold and not overlap(stamp, spike.stamp):
+                    truth = tf.goal_deduction(truth, pt)
+                    stamp = merge(stamp, spike.stamp, cfg.stamp_size)
+                    continue
+            if comp is comps[0]:
+                truth = tf.structural_deduction(truth)
+            sub = Event(comp, GOAL, truth, stamp, now, now)
+            self._add_goal(sub, priority * expectation(truth), layer + 1)
+            return
+
+    def _preconditions(self, pre: Term) -> list[Event]:
+        """Recent belief events that fulfil precondition ``pre`` (unifying variables)."""
+        mem = self.memory  # type: ignore[attr-defined]
+        if _ground(pre):
+            c = mem.find(pre)
+            return [c.belief_spike] if c is not None and c.belief_spike is not None else []
+        out = []
+        for c in self.time_index:  # type: ignore[attr-defined]
+            if c.belief_spike is not None and _ground(c.term) and unify(pre, c.term) is not None:
+                out.append(c.belief_spike)
+        return out
+
+    def _goal_concepts(self, g: Event, c: Concept) -> list[tuple[Concept, dict[Term, Term]]]:
+        """The goal's concept and those whose (general) term the goal instantiates."""
+        out: list[tuple[Concept, dict[Term, Term]]] = [(c, {})]
+        seen = {c}
+        for table in self.table_index.values():  # type: ignore[attr-defined]
+            for post in table:
+                if post in seen or not post.term.has_var:
+                    continue
+                b = unify(post.term, g.term)
+                if b is not None:
+                    seen.add(post)
+                    out.append((post, b))
+        return out
+
+    def _suggest(self, g: Event, c: Concept) -> Decision | None:
+        """Decision_Suggest: babbling or the best learned candidate."""
+        cfg = self.config  # type: ignore[attr-defined]
+        nops = len(self.op_names)  # type: ignore[attr-defined]
+        babble: Decision | None = None
+        r = self.rand()  # type: ignore[attr-defined]
+        if r < int(cfg.motor_babbling_chance * 32767) and nops:
+            k = 1 + self.rand() % min(cfg.babbling_ops, nops)  # type: ignore[attr-defined]
+            babble = Decision(1.0, atom(self.op_names[k - 1]), babbled=True)  # type: ignore[attr-defined]
+        best = self._best_candidate(g, c)
+        if babble is not None and (
+            best is None or best.desire <= cfg.motor_babbling_suppression_threshold
+        ):
+            return babble
+        return best
+
+    def _best_candidate(self, g: Event, c: Concept) -> Decision | None:
+        cfg = self.config  # type: ignore[attr-defined]
+        now = self.time  # type: ignore[attr-defined]
+        best: Decision | None = None
+        for post, bind in self._goal_concepts(g, c):
+            tables = post.precondition_beliefs
+            if tables is None:
+                continue
+            for opi in range(1, len(tables)):
+                for imp in tables[opi].items:
+                    subj = apply(imp.term.args[0], bind) if bind else imp.term.args[0]
+                    pre, op = split_precondition(subj)
+                    if op is None:
+                        continue
+                    gd = tf.goal_deduction(g.truth, imp.truth)
+                    for spike in self._preconditions(pre):
+                        b2 = unify(pre, spike.term) or {}
+                        op_g = apply(op, b2)
+                        if not _ground(op_g) or not executable(op_g):
+                            continue
+                        pt = tf.projection(spike.truth, spike.occurrence_time, now)
+                        desire = expectation(tf.deduction(gd, pt))
+                        if best is None or desire > best.desire:
+                            best = Decision(desire, op_g, imp, spike)
+        if best is not None and best.desire < cfg.decision_threshold:
+            return best  # reported to babbling suppression; not executed
+        return best
+
+    def _subgoals(self, g: Event, c: Concept, priority: float, layer: int) -> None:
+        cfg = self.config  # type: ignore[attr-defined]
+        now = self.time  # type: ignore[attr-defined]
+        for post, bind in self._goal_concepts(g, c):
+            tables = post.precondition_beliefs
+            if tables is None:
+                continue
+            for opi in range(len(tables)):
+                for imp in tables[opi].items:
+                    if overlap(imp.stamp, g.stamp):
+                        continue
+                    subj = apply(imp.term.args[0], bind) if bind else imp.term.args[0]
+                    pre, _op = split_precondition(subj)
+                    if not _ground(pre) and pre.has_indep_var:
+                        continue
+                    t = tf.goal_deduction(g.truth, imp.truth)
+                    if t.c < cfg.min_confidence:
+                        continue
+                    sub = Event(pre, GOAL, t, merge(g.stamp, imp.stamp, cfg.stamp_size), now, now)
+                    self._add_goal(sub, priority * expectation(t), layer + 1)
+
+    # -------------------------------------------------------------- execution
+    def _execute(self, d: Decision) -> None:
+        for q in self.goal_layers:
+            q.clear()
+        if d.implication is not None and d.precondition is not None:
+            imp, pre = d.implication, d.precondition
+            self._print(  # type: ignore[attr-defined]
+                f"decision expectation={d.desire:f} implication: {imp.term}. "
+                f"Stamp={fmt(imp.stamp)} Truth: frequency={imp.truth.f:f} "
+                f"confidence={imp.truth.c:f} dt={imp.dt:f} precondition: {pre.term}. :|: "
+                f"Stamp={fmt(pre.stamp)} Truth: frequency={pre.truth.f:f} "
+                f"confidence={pre.truth.c:f} occurrenceTime={pre.occurrence_time}"
+            )
+        op = d.op
+        if op.op is None:
+            name, arg, shown = op.name, None, ""
+        else:
+            name, arg = op.args[1].name, op.args[0]
+            shown = str(arg)
+        self._print(f"{name} executed with args {shown}")  # type: ignore[attr-defined]
+        fn = self.operations.get(name)  # type: ignore[attr-defined]
+        if fn is not None:
+            fn(arg)
+        for cb in self._execution_cbs:  # type: ignore[attr-defined]
+            cb(name, arg)
+        e = Event(
+            op,
+            BELIEF,
+            Truth(1.0, 0.9),
+            (self.stamp_base,),  # type: ignore[attr-defined]
+            self.time,  # type: ignore[attr-defined]
+            self.time,  # type: ignore[attr-defined]
+            is_input=True,
+        )
+        self.stamp_base += 1  # type: ignore[attr-defined]
+        self._add_event(e, 1.0, is_input=True)  # type: ignore[attr-defined]
+        self.cycles(1)  # type: ignore[attr-defined]
+
+
+__all__ = ["Decision", "DecisionMixin", "compound"]

@@ -1,0 +1,118 @@
+"""Declarative (NAL 1-6) inference on one selected event and one concept's belief.
+
+The rule table does the syllogisms; the special inferences add what structural
+matching cannot: detachment through ``==>``/``<=>`` and conjunction elimination with
+unification, which is how ``<<$1 --> penguin> ==> ...>`` meets ``<pingu --> penguin>``.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from . import truth as tf
+from .rules import (
+    RuleTable,
+    hol_component_invalid,
+    introduce_conjunction_variables,
+    introduce_implication_variables,
+)
+from .stamp import Stamp
+from .terms import CONJUNCTION, EQUIVALENCE, IMPLICATION, TEMPORAL_IMPLICATION, Term, compound
+from .truth import Truth
+from .unify import apply, unify
+
+if TYPE_CHECKING:
+    from .nar import NAR
+
+
+class Derivation:
+    """Where the conclusions of one premise pair go, with their shared context."""
+
+    __slots__ = ("nar", "occurrence", "stamp", "parent_priority", "concept_priority")
+
+    def __init__(
+        self,
+        nar: NAR,
+        occurrence: int,
+        stamp: Stamp,
+        parent_priority: float,
+        concept_priority: float,
+    ) -> None:
+        self.nar = nar
+        self.occurrence = occurrence
+        self.stamp = stamp
+        self.parent_priority = parent_priority
+        self.concept_priority = concept_priority
+
+    def emit(self, term: Term, t: Truth, var_intro: bool = False) -> None:
+        """Hand one conclusion to memory, introducing variables where the rule asks."""
+        if var_intro and term.op in (IMPLICATION, EQUIVALENCE, TEMPORAL_IMPLICATION):
+            for ext in (True, False):
+                v = introduce_implication_variables(term, ext)
+                if v is not None and v is not term and not hol_component_invalid(v):
+                    if v.op in (IMPLICATION, EQUIVALENCE) and not v.has_indep_var:
+                        continue
+                    self._derive(v, t)
+            return
+        if var_intro and term.op == CONJUNCTION:
+            for ext in (True, False):
+                v = introduce_conjunction_variables(term, ext)
+                if v is not None and v is not term and not hol_component_invalid(v):
+                    self._derive(v, t)
+            return
+        self._derive(term, t)
+
+    def _derive(self, term: Term, t: Truth) -> None:
+        self.nar._derived(
+            term,
+            t,
+            self.stamp,
+            self.occurrence,
+            self.concept_priority * self.parent_priority * tf.expectation(t),
+        )
+
+
+def apply_single(table: RuleTable, term: Term, t: Truth, d: Derivation) -> None:
+    """Single-premise rules on ``term``."""
+    emit = d.emit
+    for r in table.single_rules(term.op):
+        r.apply(term, term, t, t, emit)  # type: ignore[misc]
+
+
+def apply_double(table: RuleTable, t1: Term, t2: Term, v1: Truth, v2: Truth, d: Derivation) -> None:
+    """Two-premise rules in both premise orders (truth arguments follow the pattern)."""
+    emit = d.emit
+    for r in table.double_rules(t1.op, t2.op):
+        r.apply(t1, t2, v1, v2, emit)  # type: ignore[misc]
+    for r in table.double_rules(t2.op, t1.op):
+        r.apply(t2, t1, v2, v1, emit)  # type: ignore[misc]
+
+
+def special(term1: Term, term2: Term, v1: Truth, v2: Truth, d: Derivation) -> None:
+    """Detachment and elimination through implications and conjunctions, with unification."""
+    op = term2.op
+    if op in (IMPLICATION, EQUIVALENCE):
+        is_impl = op == IMPLICATION
+        subj, pred = term2.args
+        s = unify(subj, term1)
+        if s is not None:
+            c = apply(pred, s)
+            d.emit(c, tf.deduction(v2, v1) if is_impl else tf.analogy(v2, v1))
+        if is_impl and subj.op == CONJUNCTION:
+            first, rest = subj.args
+            s = unify(first, term1)
+            if s is None:
+                first, rest = rest, first
+                s = unify(first, term1)
+            if s is not None:
+                c = apply(compound(IMPLICATION, (rest, pred)), s)
+                d.emit(c, tf.deduction(v2, v1))
+        s = unify(pred, term1)
+        if s is not None:
+            c = apply(subj, s)
+            d.emit(c, tf.abduction(v2, v1) if is_impl else tf.analogy(v2, v1))
+    elif op == CONJUNCTION:
+        subj, pred = term2.args
+        s = unify(subj, term1)
+        if s is not None:
+            d.emit(apply(pred, s), tf.anonymous_analogy(v2, v1))

@@ -1,0 +1,227 @@
+"""Bounded concept memory with an inverted atom index.
+
+Concepts are kept in a dict (term -> concept) bounded by ``concepts_max``; when it is
+full the least *useful* concepts (recently and often used ones are useful) are evicted
+in a small batch, so the amortised cost of making room stays constant. The atom index
+maps every name to the concepts whose term mentions it; it has no cap on the number of
+names (ONA stops at 255 atoms), and is cleaned when a concept leaves.
+"""
+
+from __future__ import annotations
+
+import heapq
+from collections.abc import Iterator
+
+from .event import ETERNAL, Event
+from .table import Table
+from .terms import Term
+
+
+class Concept:
+    """Everything the reasoner knows about one term."""
+
+    __slots__ = (
+        "id",
+        "term",
+        "use_count",
+        "last_used",
+        "belief",
+        "belief_spike",
+        "predicted_belief",
+        "goal_spike",
+        "precondition_beliefs",
+        "implication_links",
+        "priority",
+        "last_selection_time",
+        "process_id",
+    )
+
+    def __init__(self, cid: int, term: Term, now: int, operations: int, table_size: int) -> None:
+        self.id = cid
+        self.term = term
+        self.use_count = 1
+        self.last_used = now
+        self.belief: Event | None = None
+        self.belief_spike: Event | None = None
+        self.predicted_belief: Event | None = None
+        self.goal_spike: Event | None = None
+        # index 0: implications without operation; i: those whose subject ends in op i
+        # (made on first use: most concepts never hold an implication)
+        self.precondition_beliefs: list[Table] | None = None
+        self.implication_links: Table | None = None
+        self.priority = 0.0
+        self.last_selection_time = 0
+        self.process_id = 0
+
+    def use(self, now: int, eternal_input: bool, boost: int) -> None:
+        """Record a use (input eternal beliefs count as very many uses)."""
+        self.use_count += boost if eternal_input else 1
+        self.last_used = now
+
+    def tables(self, operations: int, size: int) -> list[Table]:
+        """The precondition tables, made on first use."""
+        if self.precondition_beliefs is None:
+            self.precondition_beliefs = [Table(size) for _ in range(operations + 1)]
+        return self.precondition_beliefs
+
+    def usefulness(self, now: int) -> float:
+        """u/(u+1) with u = uses per cycle since the last use."""
+        u = self.use_count / (now - self.last_used + 1)
+        return u / (u + 1.0)
+
+
+def _key(e: Event) -> tuple[object, ...]:
+    return (e.term, e.type, e.truth, e.stamp, e.occurrence_time)
+
+
+class EventQueue:
+    """Bounded max-priority queue of events (ONA's cycling events)."""
+
+    __slots__ = ("items", "capacity", "keys")
+
+    def __init__(self, capacity: int) -> None:
+        self.items: list[list[object]] = []  # [priority, event]
+        self.capacity = capacity
+        self.keys: dict[tuple[object, ...], int] = {}
+
+    def __len__(self) -> int:
+        return len(self.items)
+
+    def contains(self, e: Event) -> bool:
+        """True if an equal event is queued."""
+        return _key(e) in self.keys
+
+    def _forget(self, e: Event) -> None:
+        k = _key(e)
+        n = self.keys.get(k, 0) - 1
+        if n <= 0:
+            self.keys.pop(k, None)
+        else:
+            self.keys[k] = n
+
+    def push(self, e: Event, priority: float) -> bool:
+        """Add ``e``; a full queue evicts its weakest item or rejects a weaker newcomer."""
+        items = self.items
+        if len(items) >= self.capacity:
+            i_min = min(range(len(items)), key=lambda i: items[i][0])  # type: ignore[arg-type,return-value]
+            if priority < items[i_min][0]:  # type: ignore[operator]
+                return False
+            self._forget(items[i_min][1])  # type: ignore[arg-type]
+            items[i_min] = [priority, e]
+        else:
+            items.append([priority, e])
+        k = _key(e)
+        self.keys[k] = self.keys.get(k, 0) + 1
+        return True
+
+    def pop(self) -> tuple[float, Event] | None:
+        """Remove and return the highest-priority event."""
+        items = self.items
+        if not items:
+            return None
+        i_max = max(range(len(items)), key=lambda i: items[i][0])  # type: ignore[arg-type,return-value]
+        p, e = items.pop(i_max)
+        self._forget(e)  # type: ignore[arg-type]
+        return p, e  # type: ignore[return-value]
+
+    def decay(self, factor: float) -> None:
+        """Forget a little: every priority times ``factor``."""
+        for x in self.items:
+            x[0] *= factor  # type: ignore[operator]
+
+    def clear(self) -> None:
+        """Drop every item."""
+        self.items.clear()
+        self.keys.clear()
+
+
+class Memory:
+    """Concepts, the atom index and the event queues of one reasoner."""
+
+    def __init__(self, capacity: int, operations: int, table_size: int, events_max: int) -> None:
+        self.capacity = capacity
+        self.operations = operations
+        self.table_size = table_size
+        self.concepts: dict[Term, Concept] = {}
+        self.atom_index: dict[Term, dict[Concept, None]] = {}
+        self.belief_events = EventQueue(events_max)
+        self.next_concept_id = 1
+        self.evictions = 0
+
+    def __len__(self) -> int:
+        return len(self.concepts)
+
+    def __iter__(self) -> Iterator[Concept]:
+        return iter(self.concepts.values())
+
+    def find(self, term: Term) -> Concept | None:
+        """The concept of ``term`` if it exists."""
+        return self.concepts.get(term)
+
+    def conceptualize(self, term: Term, now: int) -> Concept:
+        """The concept of ``term``, made (evicting the least useful if full) if missing."""
+        c = self.concepts.get(term)
+        if c is not None:
+            return c
+        if len(self.concepts) >= self.capacity:
+            self._evict(now)
+        c = Concept(self.next_concept_id, term, now, self.operations, self.table_size)
+        self.next_concept_id += 1
+        self.concepts[term] = c
+        for a in _index_atoms(term):
+            self.atom_index.setdefault(a, {})[c] = None
+        return c
+
+    def _evict(self, now: int) -> None:
+        batch = max(1, self.capacity // 16)
+
+        def key(c: Concept) -> float:
+            u = c.use_count / (now - c.last_used + 1)
+            return u / (u + 1.0)
+
+        for c in heapq.nsmallest(batch, self.concepts.values(), key=key):
+            self.remove(c)
+            self.evictions += 1
+
+    def remove(self, c: Concept) -> None:
+        """Forget concept ``c`` and its index entries."""
+        self.concepts.pop(c.term, None)
+        for a in _index_atoms(c.term):
+            d = self.atom_index.get(a)
+            if d is not None:
+                d.pop(c, None)
+                if not d:
+                    del self.atom_index[a]
+
+    def related(self, term: Term) -> Iterator[Concept]:
+        """The concept of ``term``, then every concept sharing a name with it (ONA's order).
+
+        Lazy, so a caller needing the first 80 does not pay for 10,000; the caller must
+        not add concepts while iterating.
+        """
+        seen: set[int] = set()
+        own = self.concepts.get(term)
+        if own is not None:
+            seen.add(own.id)
+            yield own
+        for a in _index_atoms(term):
+            d = self.atom_index.get(a)
+            if d:
+                for c in d:
+                    if c.id not in seen:
+                        seen.add(c.id)
+                        yield c
+
+
+def _index_atoms(term: Term) -> list[Term]:
+    """Distinct non-variable atoms of ``term`` in ONA's array (breadth-first) order."""
+    out: dict[Term, None] = {}
+    for a in term.level_order_atoms():
+        if not a.is_var:
+            out[a] = None
+    return list(out)
+
+
+def is_eternal(e: Event | None) -> bool:
+    """True for an eternal event."""
+    return e is not None and e.occurrence_time == ETERNAL

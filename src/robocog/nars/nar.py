@@ -1,0 +1,747 @@
+"""The reasoner: input, the inference cycle, question answering and persistence.
+
+``NAR`` is the public face of the package. It keeps ONA's order of work per cycle
+(select the strongest belief event, infer with the concepts sharing a name with it,
+forget a little) and ONA's output lines, so a transcript can be compared with ONA's.
+"""
+
+from __future__ import annotations
+
+import heapq
+import itertools
+import math
+import os
+import pickle
+import tempfile
+from collections.abc import Callable
+from pathlib import Path
+
+from . import truth as tf
+from .config import Config
+from .decision import DecisionMixin
+from .event import BELIEF, ETERNAL, GOAL, Event, Implication, revise_events
+from .inference import Derivation, apply_double, apply_single, special
+from .memory import Concept, Memory
+from .narsese import NarseseError, Sentence, parse_sentence
+from .rules import RuleTable, rejected
+from .sensorimotor import SensorimotorMixin
+from .stamp import fmt, has_duplicate, merge, overlap
+from .terms import F_COMPOSED, TEMPORAL_IMPLICATION, Term, atom
+from .truth import Truth, expectation
+from .unify import unify
+
+SAVE_FORMAT = "robocog-nar-1"
+PENDING_QUESTIONS = 32
+DEFAULT_OPERATIONS = (
+    "^left",
+    "^right",
+    "^up",
+    "^down",
+    "^say",
+    "^pick",
+    "^drop",
+    "^go",
+    "^activate",
+    "^deactivate",
+)
+
+_RULE_TABLES: dict[int, RuleTable] = {}
+
+
+def _rule_table(level: int) -> RuleTable:
+    t = _RULE_TABLES.get(level)
+    if t is None:
+        t = _RULE_TABLES[level] = RuleTable(level)
+    return t
+
+
+class NAR(SensorimotorMixin, DecisionMixin):
+    """A Non-Axiomatic Reasoner with ONA's behaviour and a bounded memory."""
+
+    def __init__(self, seed: int = 666, **config_overrides: object) -> None:
+        self.config = Config()
+        self.config.update(**config_overrides)
+        self.seed = seed
+        self._rand_state = seed
+        self._answer_cbs: list[Callable[[Event], None]] = []
+        self._derivation_cbs: list[Callable[[Event], None]] = []
+        self._execution_cbs: list[Callable[[str, Term | None], None]] = []
+        self.output: Callable[[str], None] | None = None
+        self.operations: dict[str, Callable[[Term | None], object] | None] = {}
+        self.reset()
+
+    # ------------------------------------------------------------------ state
+    def reset(self) -> None:
+        """Forget everything (ONA's ``*reset``); the random generator is not reseeded."""
+        c = self.config
+        self.memory = Memory(
+            c.concepts_max, c.operations_max, c.table_size, c.cycling_belief_events_max
+        )
+        self.time = 1
+        self.stamp_base = 1
+        self.concept_threshold = 0.0
+        self.matched_total = 0
+        self.op_names: list[str] = list(DEFAULT_OPERATIONS)
+        self.process_id = 0
+        self.stats = {"inputs": 0, "derived": 0, "selected": 0, "answers": 0}
+        self.pending_questions: dict[Term, None] = {}
+        self._init_sensorimotor()
+        self._init_goals()
+
+    def rand(self) -> int:
+        """ONA's ``myrand``: the POSIX example LCG, 0..32767."""
+        self._rand_state = (self._rand_state * 1103515245 + 12345) & 0xFFFFFFFFFFFFFFFF
+        return (self._rand_state // 65536) % 32768
+
+    # --------------------------------------------------------------- callbacks
+    def on_answer(self, cb: Callable[[Event], None]) -> None:
+        """Call ``cb(event)`` with every answer found."""
+        self._answer_cbs.append(cb)
+
+    def on_derivation(self, cb: Callable[[Event], None]) -> None:
+        """Call ``cb(event)`` with every derived event that enters the event queue."""
+        self._derivation_cbs.append(cb)
+
+    def on_execution(self, cb: Callable[[str, Term | None], None]) -> None:
+        """Call ``cb(op_name, argument)`` whenever an operation is executed."""
+        self._execution_cbs.append(cb)
+
+    def register_operation(self, name: str, fn: Callable[[Term | None], object]) -> None:
+        """Make ``name`` (e.g. ``^pick``) executable, calling ``fn(argument)`` when it is."""
+        if not name.startswith("^"):
+            raise ValueError(f"operation names start with '^': {name!r}")
+        self.operations[name] = fn
+        if name not in self.op_names:
+            if len(self.op_names) >= self.config.operations_max:
+                raise ValueError("too many operations")
+            self.op_names.append(name)
+
+    def _print(self, line: str) -> None:
+        if self.output is not None:
+            self.output(line)
+
+    def _shows(self, priority: float) -> bool:
+        return self.config.print_derivations and priority > self.config.volume_threshold
+
+    # ------------------------------------------------------------------ input
+    def add_input(self, text: str) -> None:
+        """One Narsese line or shell command; bad input raises :class:`NarseseError`."""
+        line = text.strip()
+        if not line:
+            self.cycles(1)
+            return
+        if line.startswith("//"):
+            self._print("Comment: " + line[2:])
+            return
+        if line.isdigit():
+            n = int(line)
+            self._print(f"performing {n} inference steps:")
+            self.cycles(n)
+            self._print(f"done with {n} additional inference steps.")
+            return
+        if line.startswith("*"):
+            self._command(line)
+            return
+        s = parse_sentence(line)
+        self.add_sentence(s)
+
+    def add_sentence(self, s: Sentence) -> None:
+        """Enter a parsed sentence: beliefs and goals run one cycle, questions are answered."""
+        if s.punctuation == "?":
+            self.answer(s.term, s.tense)
+            return
+        if s.tense is None and s.punctuation == GOAL:
+            raise NarseseError(1, 1, "eternal goals are not supported; add ':|:'")
+        if s.tense not in (None, ":|:"):
+            raise NarseseError(1, 1, "only present-tense events (':|:') can be input")
+        t = s.truth or tf.DEFAULT
+        occ = ETERNAL if s.tense is None else self.time
+        e = Event(
+            s.term,
+            s.punctuation,
+            t,
+            (self.stamp_base,),
+            occ,
+            self.time,
+            s.dt or 0.0,
+            is_input=True,
+        )
+        self.stamp_base += 1
+        self.stats["inputs"] += 1
+        self._add_event(e, 1.0, is_input=True)
+        self.cycles(1)
+
+    # ---------------------------------------------------------------- commands
+    def _command(self, line: str) -> None:
+        c = self.config
+        cmd, _, value = line[1:].partition("=")
+        cmd = cmd.strip()
+        value = value.strip()
+        try:
+            if cmd == "reset":
+                self.reset()
+            elif cmd == "volume":
+                c.print_derivations = True
+                c.volume_threshold = 1.0 - float(value) / 100.0
+            elif cmd == "motorbabbling":
+                if value == "false":
+                    c.motor_babbling_chance = 0.0
+                elif value == "true":
+                    c.motor_babbling_chance = 0.2
+                else:
+                    c.motor_babbling_chance = float(value)
+            elif cmd == "babblingops":
+                c.babbling_ops = int(value)
+            elif cmd == "decisionthreshold":
+                c.decision_threshold = float(value)
+            elif cmd == "anticipationconfidence":
+                c.anticipation_confidence = float(value)
+            elif cmd == "questionpriming":
+                c.question_priming = float(value)
+            elif cmd == "currenttime":
+                self.time = int(value)
+            elif cmd == "stampid":
+                self.stamp_base = int(value)
+            elif cmd.startswith("setopname"):
+                parts = line.split()
+                k, name = int(parts[1]), parts[2]
+                if not name.startswith("^"):
+                    raise ValueError("operation names start with '^'")
+                while len(self.op_names) < k:
+                    self.op_names.append(f"^op{len(self.op_names) + 1}")
+                self.op_names[k - 1] = name
+                self.op_names = [n for i, n in enumerate(self.op_names) if i < k or n != name]
+            elif cmd == "concepts":
+                for con in self.memory:
+                    self._print(self._concept_line(con))
+            elif cmd == "stats":
+                for line_ in self.statistics():
+                    self._print(line_)
+            elif cmd.startswith("save") or cmd.startswith("load"):
+                parts = line.split(maxsplit=1)
+                if len(parts) < 2:
+                    raise ValueError("a file name is needed")
+                if cmd.startswith("save"):
+                    self.save(parts[1])
+                else:
+                    self._adopt(NAR.load(parts[1]))
+            elif cmd in ("concurrent",):
+                self.time = max(1, self.time - 1)
+            elif cmd in (
+                "setoparg",
+                "similaritydistance",
+                "restrictedconceptcreation",
+                "setvalue",
+                "space",
+                "query",
+                "setopstdin",
+                "stampimport",
+                "cycling_belief_events",
+                "cycling_goal_events",
+                "opconfig",
+                "inverted_atom_index",
+                "occurrence_time_index",
+            ) or cmd.split()[0] in ("setoparg", "space", "setvalue", "query", "setopstdin"):
+                pass  # accepted for compatibility; no effect on this reasoner
+            else:
+                raise ValueError(f"unknown command *{cmd}")
+        except (ValueError, IndexError, OSError) as exc:
+            raise NarseseError(1, 1, str(exc)) from None
+
+    def _concept_line(self, con: Concept) -> str:
+        b = con.belief
+        tv = f" {b.truth}" if b is not None else ""
+        return (
+            f'//{con.term}: {{ "priority": {self._priority(con):f}, '
+            f'"usefulness": {con.usefulness(self.time):f}, "useCount": {con.use_count}, '
+            f'"lastUsed": {con.last_used}}}{tv}'
+        )
+
+    def statistics(self) -> list[str]:
+        """ONA-style statistics lines."""
+        return [
+            "Statistics",
+            "----------",
+            f"currentTime:\t\t\t{self.time}",
+            f"total concepts:\t\t\t{len(self.memory)}",
+            f"concept capacity:\t\t{self.memory.capacity}",
+            f"evicted concepts:\t\t{self.memory.evictions}",
+            f"current average concept priority:\t{self._avg_priority():f}",
+            f"curring belief events cnt:\t\t{len(self.memory.belief_events)}",
+            f"total input events:\t\t{self.stats['inputs']}",
+            f"total derived events:\t\t{self.stats['derived']}",
+            f"total selected events:\t\t{self.stats['selected']}",
+            f"total answers:\t\t\t{self.stats['answers']}",
+            f"distinct names:\t\t\t{len(self.memory.atom_index)}",
+        ]
+
+    def _avg_priority(self) -> float:
+        n = len(self.memory)
+        return sum(self._priority(c) for c in self.memory) / n if n else 0.0
+
+    # ------------------------------------------------------------- priorities
+    def _priority(self, c: Concept) -> float:
+        """Concept priority with the per-cycle decay applied lazily."""
+        dt = self.time - c.last_selection_time
+        if dt <= 0:
+            return c.priority
+        return c.priority * self.config.concept_durability**dt
+
+    def _set_priority(self, c: Concept, p: float) -> None:
+        c.priority = p
+        c.last_selection_time = self.time
+
+    # ----------------------------------------------------------------- events
+    def _add_event(
+        self, e: Event, priority: float, is_input: bool = False, revised: bool = False
+    ) -> None:
+        """ONA's Memory_AddEvent: queue the event and store it in its concept."""
+        derived = not revised and not is_input
+        if (
+            derived
+            and (len(e.stamp) > 1 or e.occurrence_time != ETERNAL)
+            and _needs_existing_concept(e)
+            and self.memory.find(e.term) is None
+        ):
+            return  # compositions are only kept where their concept already exists
+        if derived:
+            priority *= 1.0 / math.log2(1.0 + e.term.complexity)
+        if e.truth.c < self.config.min_confidence or priority <= 0.0:
+            return
+        if e.type == GOAL:
+            if is_input:
+                self._print("Input: " + e.line(priority))
+            self._add_goal(e, priority, 0)
+            return
+        added = False
+        if e.term.op != TEMPORAL_IMPLICATION and (is_input or e.term.op not in ("==>", "<=>")):
+            added = self._queue(e, priority)  # only input implications become events
+        if added and not is_input:
+            self.stats["derived"] += 1
+            if self._shows(priority):
+                self._print(("Revised: " if revised else "Derived: ") + e.line(priority))
+            for cb in self._derivation_cbs:
+                cb(e)
+        self._process_new_belief(e, priority, is_input)
+
+    def _queue(self, e: Event, priority: float) -> bool:
+        q = self.memory.belief_events
+        if e.type == BELIEF:
+            if q.contains(e):
+                return False
+            c = self.memory.find(e.term)
+            if c is not None and c.belief is not None:
+                if c.belief.same(e):
+                    return False
+                if e.occurrence_time == ETERNAL and c.belief.truth.c > e.truth.c:
+                    return False
+            return q.push(e, priority)
+        return False
+
+    def _process_new_belief(self, e: Event, priority: float, is_input: bool) -> None:
+        now = self.time
+        eternal_input = is_input and e.occurrence_time == ETERNAL
+        if e.term.op == TEMPORAL_IMPLICATION:
+            if is_input:
+                self._print("Input: " + e.line(priority))
+            self._add_implication(e.term, e.truth, e.stamp, e.dt, is_input, priority)
+            return
+        c = self.memory.conceptualize(e.term, now)
+        c.use(now, eternal_input, self.config.eternal_input_usage_boost)
+        self._set_priority(c, max(self._priority(c), priority))
+        if e.occurrence_time != ETERNAL:
+            self._note_event(c)
+            if e.occurrence_time <= now:
+                c.belief_spike = self._revision_and_choice(c.belief_spike, e)[0]
+            else:
+                c.predicted_belief = self._revision_and_choice(c.predicted_belief, e)[0]
+            if is_input:
+                self._print("Input: " + e.line(priority))
+            return
+        belief, revised = self._revision_and_choice(c.belief, e)
+        belief.creation_time = now
+        c.belief = belief
+        if self.pending_questions:
+            self._check_pending(c)
+        if is_input:
+            self._print("Input: " + e.line(priority))
+        if revised:
+            if self._shows(priority):
+                self._print("Revised: " + belief.line(priority))
+            self._add_event(belief, priority, revised=True)
+
+    def _revision_and_choice(self, old: Event | None, new: Event) -> tuple[Event, bool]:
+        if old is None:
+            return _copy(new), False
+        later = max(old.occurrence_time, new.occurrence_time)
+        po = old.projected(later)
+        pn = new.projected(later)
+        dep_conj = new.term.op in ("&&", "&/") and new.term.has_dep_var
+        if (
+            overlap(new.stamp, old.stamp)
+            or dep_conj
+            or (old.occurrence_time != ETERNAL and old.occurrence_time != new.occurrence_time)
+            or old.term is not new.term
+        ):
+            if pn.truth.c > po.truth.c:
+                return _copy(new), False
+            return old, False
+        r = revise_events(po, pn, self.config.stamp_size)
+        return r, True
+
+    def _derived(
+        self, term: Term, t: Truth, stamp: tuple[int, ...], occurrence: int, priority: float
+    ) -> None:
+        if rejected(term):
+            return
+        if term.op in ("==>", "<=>") and not term.has_indep_var:
+            return
+        if has_duplicate(stamp):
+            return
+        e = Event(term, BELIEF, t, stamp, occurrence, self.time)
+        self._add_event(e, priority)
+
+    # ------------------------------------------------------------------ cycle
+    def cycles(self, n: int) -> None:
+        """Run ``n`` inference cycles."""
+        for _ in range(n):
+            self._cycle()
+
+    def _cycle(self) -> None:
+        popped = self.memory.belief_events.pop()
+        if popped is not None:
+            priority, e = popped
+            self.stats["selected"] += 1
+            if self._shows(priority):
+                self._print("Selected: " + e.line(priority))
+            if e.occurrence_time != ETERNAL:
+                self._process_belief_event(e, priority)
+                if e.is_input:
+                    self._anticipate(e)
+        self._process_goals()
+        if popped is not None:
+            self._semantic_inference(popped[1], popped[0])
+        self.memory.belief_events.decay(self.config.event_durability)
+        for q in self.goal_layers:
+            q.decay(self.config.event_durability)
+        self.time += 1
+
+    def _semantic_inference(self, e: Event, priority: float) -> None:
+        cfg = self.config
+        table = _rule_table(cfg.semantic_inference_nal_level)
+        now = self.time
+        single = Derivation(self, e.occurrence_time, e.stamp, priority, 1.0)
+        apply_single(table, e.term, e.truth, single)
+        self.process_id += 1
+        avg = self.matched_total / now
+        self.concept_threshold = min(
+            1.0,
+            max(
+                0.0,
+                self.concept_threshold
+                + (avg - cfg.belief_concept_match_target) * cfg.concept_threshold_adaptation,
+            ),
+        )
+        threshold = self.concept_threshold
+        chosen: list[tuple[Concept, float]] = []
+        limit = cfg.belief_concept_match_target
+        for c in self.memory.related(e.term):
+            cp = self._priority(c)
+            if cp < threshold:
+                continue
+            chosen.append((c, cp))
+            if len(chosen) >= limit:
+                break
+        self.matched_total += len(chosen)
+        for c, cp in chosen:
+            belief = c.belief
+            if belief is None:
+                continue
+            if (
+                e.occurrence_time != ETERNAL
+                and c.belief_spike is not None
+                and abs(e.occurrence_time - c.belief_spike.occurrence_time)
+                < cfg.event_belief_distance
+            ):
+                belief = c.belief_spike.projected(e.occurrence_time)
+            if overlap(e.stamp, belief.stamp):
+                continue
+            c.use(now, False, 0)
+            stamp = merge(e.stamp, belief.stamp, cfg.stamp_size)
+            d = Derivation(self, e.occurrence_time, stamp, priority, cp)
+            apply_double(table, e.term, c.term, e.truth, belief.truth, d)
+            special(e.term, c.term, e.truth, belief.truth, d)
+            special(c.term, e.term, belief.truth, e.truth, d)
+
+    # -------------------------------------------------------------- questions
+    def answer(self, question: Term, tense: str | None = None) -> Event | None:
+        """Answer a question at once with the best belief, printing ONA's lines."""
+        self._print(f"Input: {question}?" + (f" {tense}" if tense else ""))
+        best: Event | None = None
+        best_c: Concept | None = None
+        best_e = -1.0
+        if question.op == TEMPORAL_IMPLICATION:
+            return self._answer_implication(question)
+        for c in self._candidates(question):
+            if unify(question, c.term, query_only=True) is None and c.term is not question:
+                continue
+            cands: list[Event] = []
+            if tense is None:
+                if c.belief is not None:
+                    cands.append(c.belief)
+            else:
+                if tense in (":|:", ":\\:") and c.belief_spike is not None:
+                    cands.append(c.belief_spike)
+                if tense in (":|:", ":/:") and c.predicted_belief is not None:
+                    cands.append(c.predicted_belief)
+            for b in cands:
+                ex = expectation(b.projected(self.time).truth)
+                if ex >= best_e:
+                    best, best_c, best_e = b, c, ex
+        if best is None:
+            self._print("Answer: None.")
+            if tense is None:
+                self._pend(question)
+            return None
+        if best_c is not None:
+            self._set_priority(best_c, max(self._priority(best_c), self.config.question_priming))
+            best_c.use(self.time, False, 0)
+        self._report_answer(best)
+        return best
+
+    def _answer_implication(self, question: Term) -> Event | None:
+        """``<a =/> b>?``: the best matching link in the precondition tables."""
+        best: Implication | None = None
+        best_e = -1.0
+        for table in self.table_index.values():
+            for post in table:
+                if unify(question.args[1], post.term, query_only=True) is None:
+                    continue
+                for links in post.precondition_beliefs or ():
+                    for imp in links.items:
+                        if imp.term is question or (
+                            question.has_query_var
+                            and unify(question, imp.term, query_only=True) is not None
+                        ):
+                            ex = expectation(imp.truth)
+                            if ex >= best_e:
+                                best, best_e = imp, ex
+        if best is None:
+            self._print("Answer: None.")
+            return None
+        e = Event(best.term, BELIEF, best.truth, best.stamp, ETERNAL, best.creation_time, best.dt)
+        self._report_answer(e)
+        return e
+
+    def _report_answer(self, best: Event) -> None:
+        self.stats["answers"] += 1
+        if best.occurrence_time == ETERNAL:
+            self._print(
+                f"Answer: {best.term}. creationTime={best.creation_time} "
+                f"Stamp={fmt(best.stamp)} {best.truth}"
+            )
+        else:
+            self._print(
+                f"Answer: {best.term}. :|: occurrenceTime={best.occurrence_time} "
+                f"creationTime={best.creation_time} Stamp={fmt(best.stamp)} {best.truth}"
+            )
+        for cb in self._answer_cbs:
+            cb(best)
+
+    def _pend(self, question: Term) -> None:
+        """Keep an unanswered question open and bring the beliefs about its names back
+        into attention, so the next cycles can derive what it asks for.
+
+        ONA answers only at input; here an open question is answered (one more
+        ``Answer:`` line) as soon as a belief for it is derived. At most
+        ``PENDING_QUESTIONS`` stay open, the oldest is dropped first.
+        """
+        pending = self.pending_questions
+        if question in pending:
+            return
+        pending[question] = None
+        while len(pending) > PENDING_QUESTIONS:
+            del pending[next(iter(pending))]
+        self._bridge(question)
+        for a in dict.fromkeys(x for x in question.atoms() if not x.is_var):
+            d = self.memory.atom_index.get(a)
+            if not d:
+                continue
+            strongest = heapq.nlargest(
+                2,
+                (c for c in itertools.islice(d, 200) if c.belief is not None),
+                key=lambda c: c.use_count,
+            )
+            q = self.memory.belief_events
+            for c in strongest:
+                if not q.contains(c.belief):  # type: ignore[arg-type]
+                    q.push(_copy(c.belief), 1.0)  # type: ignore[arg-type]
+
+    def _bridge(self, question: Term) -> None:
+        """Question-guided premise choice: pair beliefs about the question's subject
+        with beliefs about its predicate that share a middle term, and infer from
+        each pair at once (backward chaining one link deep)."""
+        if question.op is None or len(question.args) != 2 or question.has_var:
+            return
+        s_names = [a for a in question.args[0].atoms() if not a.is_var]
+        p_names = [a for a in question.args[1].atoms() if not a.is_var]
+        if not s_names or not p_names:
+            return
+        idx = self.memory.atom_index
+        limit = 200
+        side_p: dict[Term, list[Concept]] = {}
+        for a in p_names:
+            for c in itertools.islice(idx.get(a, ()), limit):
+                if c.belief is not None:
+                    for x in _names(c.term):
+                        side_p.setdefault(x, []).append(c)
+        skip = set(s_names) | set(p_names)
+        table = _rule_table(self.config.semantic_inference_nal_level)
+        done: set[tuple[int, int]] = set()
+        for a in s_names:
+            for c in list(itertools.islice(idx.get(a, ()), limit)):
+                b1 = c.belief
+                if b1 is None:
+                    continue
+                for m in _names(c.term):
+                    if m in skip:
+                        continue
+                    for d in side_p.get(m, ()):
+                        b2 = d.belief
+                        key = (c.id, d.id)
+                        if c is d or b2 is None or key in done or overlap(b1.stamp, b2.stamp):
+                            continue
+                        done.add(key)
+                        stamp = merge(b1.stamp, b2.stamp, self.config.stamp_size)
+                        der = Derivation(self, ETERNAL, stamp, 1.0, 1.0)
+                        apply_double(table, c.term, d.term, b1.truth, b2.truth, der)
+
+    def _check_pending(self, c: Concept) -> None:
+        """Answer open questions that the new belief of ``c`` answers."""
+        b = c.belief
+        if b is None:
+            return
+        for q in list(self.pending_questions):
+            if q is c.term or (q.has_query_var and unify(q, c.term, query_only=True) is not None):
+                del self.pending_questions[q]
+                self._report_answer(b)
+
+    def _candidates(self, question: Term) -> list[Concept]:
+        if not question.has_var:
+            c = self.memory.find(question)
+            return [c] if c is not None else []
+        names = {a for a in question.atoms() if not a.is_var}
+        best: dict[Concept, None] | None = None
+        for a in names:
+            d = self.memory.atom_index.get(a)
+            if d is None:
+                return []
+            if best is None or len(d) < len(best):
+                best = d
+        if best is None:
+            return list(self.memory)
+        return list(best)
+
+    def ask(self, question: str) -> Event | None:
+        """Answer a question given as text, e.g. ``"<a --> ?1>?"``."""
+        s = parse_sentence(question.strip())
+        if s.punctuation != "?":
+            raise NarseseError(1, len(question.strip()), "a question ends with '?'")
+        return self.answer(s.term, s.tense)
+
+    # ------------------------------------------------------------ persistence
+    def save(self, path: str | os.PathLike[str]) -> None:
+        """Write the whole memory to ``path`` atomically (temp file, then rename)."""
+        path = Path(path)
+        state = {
+            "format": SAVE_FORMAT,
+            "config": self.config.as_dict(),
+            "seed": self.seed,
+            "rand": self._rand_state,
+            "memory": self.memory,
+            "time": self.time,
+            "stamp_base": self.stamp_base,
+            "concept_threshold": self.concept_threshold,
+            "matched_total": self.matched_total,
+            "op_names": self.op_names,
+            "stats": self.stats,
+            "pending": self.pending_questions,
+        }
+        fd, tmp = tempfile.mkstemp(dir=path.parent or ".", prefix=path.name, suffix=".tmp")
+        try:
+            with os.fdopen(fd, "wb") as f:
+                pickle.dump(state, f, protocol=pickle.HIGHEST_PROTOCOL)
+                f.flush()
+                os.fsync(f.fileno())
+            os.replace(tmp, path)
+        except BaseException:
+            if os.path.exists(tmp):
+                os.unlink(tmp)
+            raise
+
+    @classmethod
+    def load(cls, path: str | os.PathLike[str]) -> NAR:
+        """A reasoner restored from a file written by :meth:`save`."""
+        with open(path, "rb") as f:
+            state = pickle.load(f)  # noqa: S301 - files written by save()
+        if not isinstance(state, dict) or state.get("format") != SAVE_FORMAT:
+            raise ValueError(f"{path}: not a saved reasoner")
+        nar = cls(seed=state["seed"])
+        cfg = state["config"]
+        for k, v in cfg.items():
+            setattr(nar.config, k, v)
+        nar.memory = state["memory"]
+        nar._rand_state = state["rand"]
+        nar.time = state["time"]
+        nar.stamp_base = state["stamp_base"]
+        nar.concept_threshold = state["concept_threshold"]
+        nar.matched_total = state["matched_total"]
+        nar.op_names = state["op_names"]
+        nar.stats = state["stats"]
+        nar.pending_questions = state.get("pending", {})
+        return nar
+
+    def _adopt(self, other: NAR) -> None:
+        """Take over another reasoner's state (``*load`` in a running shell)."""
+        keep_output = self.output
+        cbs = (self._answer_cbs, self._derivation_cbs, self._execution_cbs, self.operations)
+        self.__dict__.update(other.__dict__)
+        self.output = keep_output
+        self._answer_cbs, self._derivation_cbs, self._execution_cbs, self.operations = cbs
+
+
+_IMAGES = frozenset({"/1", "/2", "\\1", "\\2"})
+_COMPOSED = frozenset({"-", "~", "&", "|"})
+
+
+def _needs_existing_concept(e: Event) -> bool:
+    """ONA: images at the top, differences and intersections anywhere, and
+    conjunctions with dependent variables (or in time) are derived only into
+    concepts that already exist."""
+    t = e.term
+    if t.op == "&&" and (t.has_dep_var or e.occurrence_time != ETERNAL):
+        return True
+    if t.op is not None and len(t.args) == 2 and (t.args[0].op in _IMAGES or t.args[1].op in _IMAGES):
+        return True
+    return bool(t.flags & F_COMPOSED)
+
+
+def _names(t: Term) -> list[Term]:
+    return [a for a in dict.fromkeys(t.atoms()) if not a.is_var]
+
+
+def _copy(e: Event) -> Event:
+    return Event(
+        e.term,
+        e.type,
+        e.truth,
+        e.stamp,
+        e.occurrence_time,
+        e.creation_time,
+        e.dt,
+        e.processed,
+        e.is_input,
+    )
+
+
+__all__ = ["NAR", "NarseseError", "atom"]

@@ -1,0 +1,248 @@
+"""Reader for ONA's Narsese dialect.
+
+A lark LALR grammar turns one line into a :class:`Sentence`. Infix compounds with more
+than two components (``(a &/ b &/ c)``) and prefix forms (``(&&, a, b, c)``) become
+left-nested binary terms, which is how ONA stores them; variables are renamed to
+``$1 #1 ?1`` by first occurrence. Errors are :class:`NarseseError` with line and column,
+so a person typing into the shell sees where the line went wrong.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from lark import Lark, Token, Transformer, UnexpectedEOF, UnexpectedInput, UnexpectedToken, v_args
+
+from .terms import (
+    EXT_SET,
+    INT_SET,
+    STATEMENT_COPULAS,
+    Term,
+    atom,
+    compound,
+    normalize_variables,
+)
+from .truth import Truth
+
+GRAMMAR = r"""
+start: dt? term PUNCT TENSE? truth?
+dt: DT
+truth: TRUTH_BRACES | TRUTH_PERCENT
+
+?term: name
+     | "<" term COPULA term ">"          -> statement
+     | "(" term COPULA term ")"          -> statement
+     | "(" term (INFIX term)+ ")"        -> infix
+     | "(" prefix_op ("," term)+ ")"     -> prefix
+     | "(" UNARY term ")"                -> unary
+     | "(" INFIX term ")"                -> unary
+     | "{" term+ "}"                     -> extset
+     | "[" term+ "]"                     -> intset
+
+prefix_op: INFIX | "--"
+name: NAME
+
+COPULA: "-->" | "<->" | "==>" | "<=>" | "=/>" | "|->"
+INFIX: "*" | "&&" | "||" | "&/" | "&" | "|" | "-" | "~" | "/1" | "/2" | "\\1" | "\\2"
+UNARY: "!" | "+" | "="
+NAME: /[\^$#?]?[A-Za-z0-9_\u00c0-\uffff]+(\.[A-Za-z0-9_\u00c0-\uffff]+)*/
+PUNCT: "." | "!" | "?"
+TENSE: ":|:" | ":\\:" | ":/:"
+TRUTH_BRACES: /\{\s*[0-9]*\.?[0-9]+\s+[0-9]*\.?[0-9]+\s*\}/
+TRUTH_PERCENT: /%[0-9]*\.?[0-9]+(;[0-9]*\.?[0-9]+)?%/
+DT.2: /dt=-?[0-9]+(\.[0-9]+)?/
+
+%ignore /[ \t]+/
+"""
+
+TERM_GRAMMAR_START = "term"
+
+
+class NarseseError(ValueError):
+    """A line that is not Narsese; ``line`` and ``column`` are 1-based."""
+
+    def __init__(self, line: int, column: int, message: str) -> None:
+        super().__init__(f"line {line}, column {column}: {message}")
+        self.line = line
+        self.column = column
+        self.message = message
+
+
+@dataclass(frozen=True, slots=True)
+class Sentence:
+    """One parsed input: term, punctuation (``.``, ``!``, ``?``), tense, truth and dt."""
+
+    term: Term
+    punctuation: str
+    tense: str | None = None
+    truth: Truth | None = None
+    dt: float | None = None
+
+    def __str__(self) -> str:
+        out = f"{self.term}{self.punctuation}"
+        if self.tense:
+            out += f" {self.tense}"
+        if self.truth is not None:
+            out += f" {{{self.truth.f:g} {self.truth.c:g}}}"
+        return out
+
+
+class _Positioned(ValueError):
+    """A semantic error found while building, at the column of the offending token."""
+
+    def __init__(self, column: int, message: str) -> None:
+        super().__init__(message)
+        self.column = column
+
+
+class _Build(Transformer):
+    """Builds interned terms bottom-up from the parse tree."""
+
+    def name(self, items: list[Token]) -> Term:
+        return atom(str(items[0]))
+
+    def statement(self, items: list[object]) -> Term:
+        s, cop, p = items
+        return compound(str(cop), (s, p))  # type: ignore[arg-type]
+
+    def infix(self, items: list[object]) -> Term:
+        left = items[0]
+        ops = {str(items[i]) for i in range(1, len(items), 2)}
+        if len(ops) != 1:
+            col = next(
+                items[i].column  # type: ignore[union-attr]
+                for i in range(3, len(items), 2)
+                if str(items[i]) != str(items[1])
+            )
+            raise _Positioned(col, "mixed connectors in one compound: " + " ".join(sorted(ops)))
+        op = ops.pop()
+        for i in range(2, len(items), 2):
+            left = compound(op, (left, items[i]))  # type: ignore[arg-type]
+        return left  # type: ignore[return-value]
+
+    def prefix_op(self, items: list[Token]) -> str:
+        return str(items[0]) if items else "!"
+
+    def prefix(self, items: list[object]) -> Term:
+        op = items[0]
+        terms = items[1:]
+        if op == "!" or len(terms) == 1:
+            if len(terms) != 1:
+                raise ValueError("negation takes one term")
+            return compound(op, (terms[0],))  # type: ignore[arg-type]
+        left = terms[0]
+        for t in terms[1:]:
+            left = compound(op, (left, t))  # type: ignore[arg-type]
+        return left  # type: ignore[return-value]
+
+    def unary(self, items: list[object]) -> Term:
+        if str(items[0]) not in ("!", "+", "=", "*"):
+            raise _Positioned(items[0].column, f"{items[0]} needs two components")  # type: ignore[attr-defined]
+        return compound(str(items[0]), (items[1],))  # type: ignore[arg-type]
+
+    def extset(self, items: list[Term]) -> Term:
+        return compound(EXT_SET, _dedupe(items))
+
+    def intset(self, items: list[Term]) -> Term:
+        return compound(INT_SET, _dedupe(items))
+
+    def dt(self, items: list[Token]) -> float:
+        return float(str(items[0])[3:])
+
+    def truth(self, items: list[Token]) -> Truth:
+        s = str(items[0])
+        if s.startswith("%"):
+            parts = s.strip("%").split(";")
+            f = float(parts[0])
+            c = float(parts[1]) if len(parts) > 1 else 0.9
+        else:
+            f_s, c_s = s.strip("{} \t").split()
+            f, c = float(f_s), float(c_s)
+        if not (0.0 <= f <= 1.0 and 0.0 <= c < 1.0):
+            raise _Positioned(
+                items[0].column,  # type: ignore[arg-type]
+                f"truth out of range: frequency {f}, confidence {c}",
+            )
+        return Truth(f, min(c, 0.99))
+
+    @v_args(inline=False)
+    def start(self, items: list[object]) -> Sentence:
+        dt = None
+        i = 0
+        if isinstance(items[0], float):
+            dt = items[0]
+            i = 1
+        term = items[i]
+        punct = str(items[i + 1])
+        tense = None
+        truth = None
+        for x in items[i + 2 :]:
+            if isinstance(x, Truth):
+                truth = x
+            else:
+                tense = str(x)
+        return Sentence(normalize_variables(term), punct, tense, truth, dt)  # type: ignore[arg-type]
+
+
+def _dedupe(items: list[Term]) -> tuple[Term, ...]:
+    seen: list[Term] = []
+    for t in items:
+        if t not in seen:
+            seen.append(t)
+    return tuple(seen)
+
+
+_SENTENCE = Lark(GRAMMAR, parser="lalr", start="start")
+_TERM = Lark(GRAMMAR, parser="lalr", start="term")
+_BUILD = _Build()
+
+
+def _error(text: str, exc: Exception, line: int) -> NarseseError:
+    if isinstance(exc, UnexpectedToken) and exc.token.type == "$END":
+        return NarseseError(line, len(text.rstrip()) + 1, "unexpected end of line")
+    if isinstance(exc, UnexpectedEOF):
+        return NarseseError(line, len(text.rstrip()) + 1, "unexpected end of line")
+    if isinstance(exc, UnexpectedInput):
+        col = exc.column if isinstance(exc.column, int) and exc.column > 0 else 1
+        got = text[col - 1 : col + 9] if col - 1 < len(text) else "end of line"
+        return NarseseError(line, col, f"unexpected {got!r}")
+    cause = getattr(exc, "orig_exc", exc)
+    if isinstance(cause, _Positioned):
+        return NarseseError(line, cause.column, str(cause))
+    return NarseseError(line, 1, str(cause))
+
+
+def parse_sentence(text: str, line: int = 1) -> Sentence:
+    """Parse one Narsese sentence such as ``<a --> b>. :|: {1.0 0.9}``."""
+    try:
+        tree = _SENTENCE.parse(text)
+        return _BUILD.transform(tree)  # type: ignore[no-any-return]
+    except UnexpectedInput as exc:
+        raise _error(text, exc, line) from None
+    except Exception as exc:  # noqa: BLE001 - a transformer check, reported with position
+        raise _error(text, exc, line) from None
+
+
+def parse_term(text: str, line: int = 1) -> Term:
+    """Parse one Narsese term such as ``<(a * b) --> r>``."""
+    try:
+        return normalize_variables(_BUILD.transform(_TERM.parse(text)))
+    except UnexpectedInput as exc:
+        raise _error(text, exc, line) from None
+    except Exception as exc:  # noqa: BLE001
+        raise _error(text, exc, line) from None
+
+
+def parse_pattern(text: str) -> Term:
+    """Parse a rule pattern without renaming its variables."""
+    return _BUILD.transform(_TERM.parse(text))  # type: ignore[no-any-return]
+
+
+__all__ = [
+    "NarseseError",
+    "Sentence",
+    "parse_sentence",
+    "parse_term",
+    "parse_pattern",
+    "STATEMENT_COPULAS",
+]

@@ -1,0 +1,595 @@
+"""NAL 1-6 declarative rule table, term reductions and conclusion filters.
+
+Rules are written as Narsese patterns in which single capital letters stand for any
+term; they are compiled once into matchers indexed by the connectors of the two
+premises, so a premise pair only tries the rules that can fit it. Every two-premise
+rule applies in both premise orders with the truth function's arguments following the
+pattern, as in ONA's generated rule table.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+from . import truth as tf
+from .narsese import parse_pattern
+from .terms import (
+    CONJUNCTION,
+    DISJUNCTION,
+    EQUIVALENCE,
+    EXT_SET,
+    F_JUNCTION_RIGHT_NESTED,
+    IMPLICATION,
+    INHERITANCE,
+    INT_SET,
+    SIMILARITY,
+    TEMPORAL_IMPLICATION,
+    Term,
+    atom,
+    compound,
+    names_repeat,
+)
+from .truth import Truth
+
+TruthFn = Callable[[Truth, Truth], Truth]
+
+# (premise1, premise2 or None, conclusion, truth function, introduce variables, min NAL level)
+_RULES: list[tuple[str, str | None, str, str, bool, int]] = [
+    # NAL-1 syllogisms
+    ("<S --> M>", "<M --> P>", "<S --> P>", "deduction", False, 1),
+    ("<A --> B>", "<A --> C>", "<C --> B>", "induction", False, 1),
+    ("<A --> C>", "<B --> C>", "<B --> A>", "abduction", False, 1),
+    ("<A --> B>", "<B --> C>", "<C --> A>", "exemplification", False, 1),
+    # NAL-2 similarity
+    ("<S <-> P>", None, "<P <-> S>", "structural_intersection", False, 2),
+    ("<M <-> P>", "<S <-> M>", "<S <-> P>", "resemblance", False, 2),
+    ("<P --> M>", "<S --> M>", "<S <-> P>", "comparison", False, 2),
+    ("<M --> P>", "<M --> S>", "<S <-> P>", "comparison", False, 2),
+    ("<M --> P>", "<S <-> M>", "<S --> P>", "analogy", False, 2),
+    ("<P --> M>", "<S <-> M>", "<P --> S>", "analogy", False, 2),
+    ("S", "<S <-> P>", "P", "analogy", False, 2),
+    ("S", "<P <-> S>", "P", "analogy", False, 2),
+    ("<S --> {P}>", None, "<S <-> {P}>", "structural_intersection", False, 2),
+    ("<[S] --> P>", None, "<[S] <-> P>", "structural_intersection", False, 2),
+    ("<{M} --> P>", "<S <-> M>", "<{S} --> P>", "analogy", False, 2),
+    ("<P --> [M]>", "<S <-> M>", "<P --> [S]>", "analogy", False, 2),
+    ("<{A} <-> {B}>", None, "<A <-> B>", "structural_intersection", False, 2),
+    ("<[A] <-> [B]>", None, "<A <-> B>", "structural_intersection", False, 2),
+    # NAL-3 set and intersection decomposition
+    ("<{A B} --> M>", None, "<{A} --> M>", "structural_deduction", False, 3),
+    ("<{A B} --> M>", None, "<{B} --> M>", "structural_deduction", False, 3),
+    ("<M --> [A B]>", None, "<M --> [A]>", "structural_deduction", False, 3),
+    ("<M --> [A B]>", None, "<M --> [B]>", "structural_deduction", False, 3),
+    ("<(S | P) --> M>", None, "<S --> M>", "structural_deduction", False, 3),
+    ("<M --> (S & P)>", None, "<M --> S>", "structural_deduction", False, 3),
+    ("<(S | P) --> M>", None, "<P --> M>", "structural_deduction", False, 3),
+    ("<M --> (S & P)>", None, "<M --> P>", "structural_deduction", False, 3),
+    ("<(A ~ S) --> M>", None, "<A --> M>", "structural_deduction", False, 3),
+    ("<M --> (B - S)>", None, "<M --> B>", "structural_deduction", False, 3),
+    ("<(A ~ S) --> M>", None, "<S --> M>", "structural_deduction_negated", False, 3),
+    ("<M --> (B - S)>", None, "<M --> S>", "structural_deduction_negated", False, 3),
+    # NAL-3 composition
+    ("<P --> M>", "<S --> M>", "<(P | S) --> M>", "intersection", False, 3),
+    ("<P --> M>", "<S --> M>", "<(P & S) --> M>", "union", False, 3),
+    ("<P --> M>", "<S --> M>", "<(P ~ S) --> M>", "difference", False, 3),
+    ("<M --> P>", "<M --> S>", "<M --> (P & S)>", "intersection", False, 3),
+    ("<M --> P>", "<M --> S>", "<M --> (P | S)>", "union", False, 3),
+    ("<M --> P>", "<M --> S>", "<M --> (P - S)>", "difference", False, 3),
+    # NAL-3 two-premise decomposition
+    ("<S --> M>", "<(S | P) --> M>", "<P --> M>", "decompose_pnn", False, 3),
+    ("<P --> M>", "<(S | P) --> M>", "<S --> M>", "decompose_pnn", False, 3),
+    ("<S --> M>", "<(S & P) --> M>", "<P --> M>", "decompose_npp", False, 3),
+    ("<P --> M>", "<(S & P) --> M>", "<S --> M>", "decompose_npp", False, 3),
+    ("<S --> M>", "<(S ~ P) --> M>", "<P --> M>", "decompose_pnp", False, 3),
+    ("<S --> M>", "<(P ~ S) --> M>", "<P --> M>", "decompose_nnn", False, 3),
+    ("<M --> S>", "<M --> (S & P)>", "<M --> P>", "decompose_pnn", False, 3),
+    ("<M --> P>", "<M --> (S & P)>", "<M --> S>", "decompose_pnn", False, 3),
+    ("<M --> S>", "<M --> (S | P)>", "<M --> P>", "decompose_npp", False, 3),
+    ("<M --> P>", "<M --> (S | P)>", "<M --> S>", "decompose_npp", False, 3),
+    ("<M --> S>", "<M --> (S - P)>", "<M --> P>", "decompose_pnp", False, 3),
+    ("<M --> S>", "<M --> (P - S)>", "<M --> P>", "decompose_nnn", False, 3),
+    # NAL-4 relations
+    ("<(A * B) --> (S * M)>", None, "<A --> S>", "structural_deduction", False, 4),
+    ("<(A * B) --> (S * M)>", None, "<B --> M>", "structural_deduction", False, 4),
+    ("<(A * B) --> R>", None, "<A --> (R /1 B)>", "structural_intersection", False, 4),
+    ("<A --> (R /1 B)>", None, "<(A * B) --> R>", "structural_intersection", False, 4),
+    ("<(A * B) --> R>", None, "<B --> (R /2 A)>", "structural_intersection", False, 4),
+    ("<B --> (R /2 A)>", None, "<(A * B) --> R>", "structural_intersection", False, 4),
+    ("<R --> (A * B)>", None, "<(R \\1 B) --> A>", "structural_intersection", False, 4),
+    ("<(R \\1 B) --> A>", None, "<R --> (A * B)>", "structural_intersection", False, 4),
+    ("<R --> (A * B)>", None, "<(R \\2 A) --> B>", "structural_intersection", False, 4),
+    ("<(R \\2 A) --> B>", None, "<R --> (A * B)>", "structural_intersection", False, 4),
+    ("<{R} |-> [P]>", "<{S} |-> [P]>", "<({R} * {S}) --> (+ P)>", "frequency_greater", False, 4),
+    ("<(A * B) --> (+ P)>", "<(B * C) --> (+ P)>", "<(A * C) --> (+ P)>", "deduction", False, 4),
+    ("<{R} |-> [P]>", "<{S} |-> [P]>", "<({R} * {S}) --> (= P)>", "frequency_equal", False, 4),
+    ("<(A * B) --> (= P)>", "<(B * C) --> (= P)>", "<(A * C) --> (= P)>", "deduction", False, 4),
+    ("<(A * B) --> (= P)>", None, "<(B * A) --> (= P)>", "structural_intersection", False, 4),
+    ("<(A * B) --> R>", "<(C * B) --> R>", "<C --> A>", "abduction", False, 4),
+    ("<(A * B) --> R>", "<(A * C) --> R>", "<C --> B>", "abduction", False, 4),
+    ("<R --> (A * B)>", "<R --> (C * B)>", "<C --> A>", "induction", False, 4),
+    ("<R --> (A * B)>", "<R --> (A * C)>", "<C --> B>", "induction", False, 4),
+    ("<(A * B) --> R>", "<C --> A>", "<(C * B) --> R>", "deduction", False, 4),
+    ("<(A * B) --> R>", "<A --> C>", "<(C * B) --> R>", "induction", False, 4),
+    ("<(A * B) --> R>", "<C <-> A>", "<(C * B) --> R>", "analogy", False, 4),
+    ("<(A * B) --> R>", "<C --> B>", "<(A * C) --> R>", "deduction", False, 4),
+    ("<(A * B) --> R>", "<B --> C>", "<(A * C) --> R>", "induction", False, 4),
+    ("<(A * B) --> R>", "<C <-> B>", "<(A * C) --> R>", "analogy", False, 4),
+    ("<R --> (A * B)>", "<A --> C>", "<R --> (C * B)>", "deduction", False, 4),
+    ("<R --> (A * B)>", "<C --> A>", "<R --> (C * B)>", "abduction", False, 4),
+    ("<R --> (A * B)>", "<C <-> A>", "<R --> (C * B)>", "analogy", False, 4),
+    ("<R --> (A * B)>", "<B --> C>", "<R --> (A * C)>", "deduction", False, 4),
+    ("<R --> (A * B)>", "<C --> B>", "<R --> (A * C)>", "abduction", False, 4),
+    ("<R --> (A * B)>", "<C <-> B>", "<R --> (A * C)>", "analogy", False, 4),
+    ("<(A * B) --> R>", "<(C * B) --> R>", "<A <-> C>", "comparison", False, 4),
+    ("<(A * B) --> R>", "<(A * C) --> R>", "<B <-> C>", "comparison", False, 4),
+    ("<R --> (A * B)>", "<R --> (C * B)>", "<A <-> C>", "comparison", False, 4),
+    ("<R --> (A * B)>", "<R --> (A * C)>", "<B <-> C>", "comparison", False, 4),
+    # NAL-5 negation, conjunction, disjunction
+    ("(! A)", None, "A", "negation", False, 5),
+    ("(A && B)", None, "A", "structural_deduction", False, 5),
+    ("(A && B)", None, "B", "structural_deduction", False, 5),
+    ("(A && B)", None, "(B && A)", "structural_intersection", False, 5),
+    ("S", "(S && A)", "A", "decompose_pnn", False, 5),
+    ("S", "(S || A)", "A", "decompose_npp", False, 5),
+    ("S", "((! S) && A)", "A", "decompose_nnn", False, 5),
+    ("S", "((! S) || A)", "A", "decompose_ppp", False, 5),
+    # NAL-5 implication syllogisms
+    ("<S ==> M>", "<M ==> P>", "<S ==> P>", "deduction", False, 5),
+    ("<A ==> B>", "<A ==> C>", "<C ==> B>", "induction", False, 5),
+    ("<A ==> C>", "<B ==> C>", "<B ==> A>", "abduction", False, 5),
+    ("<A ==> B>", "<B ==> C>", "<C ==> A>", "exemplification", False, 5),
+    ("<A ==> C>", "<B ==> C>", "<(A && B) ==> C>", "union", False, 5),
+    ("<A ==> C>", "<B ==> C>", "<(A || B) ==> C>", "intersection", False, 5),
+    ("<C ==> A>", "<C ==> B>", "<C ==> (A && B)>", "intersection", False, 5),
+    ("<C ==> A>", "<C ==> B>", "<C ==> (A || B)>", "union", False, 5),
+    ("<(S && P) ==> M>", "<S ==> M>", "P", "abduction", False, 5),
+    ("<(C && M) ==> P>", "<S ==> M>", "<(C && S) ==> P>", "deduction", False, 5),
+    ("<(C && P) ==> M>", "<(C && S) ==> M>", "<S ==> P>", "abduction", False, 5),
+    ("<(C && M) ==> P>", "<M ==> S>", "<(C && S) ==> P>", "induction", False, 5),
+    # NAL-5 equivalence
+    ("<S <=> P>", None, "<P <=> S>", "structural_intersection", False, 5),
+    ("<S ==> P>", "<P ==> S>", "<S <=> P>", "intersection", False, 5),
+    ("<P ==> M>", "<S ==> M>", "<S <=> P>", "comparison", False, 5),
+    ("<M ==> P>", "<M ==> S>", "<S <=> P>", "comparison", False, 5),
+    ("<M ==> P>", "<S <=> M>", "<S ==> P>", "analogy", False, 5),
+    ("<P ==> M>", "<S <=> M>", "<P ==> S>", "analogy", False, 5),
+    ("<M <=> P>", "<S <=> M>", "<S <=> P>", "resemblance", False, 5),
+    ("<M <=> P>", None, "<M ==> P>", "structural_deduction", False, 5),
+    ("<M <=> P>", None, "<P ==> M>", "structural_deduction", False, 5),
+    # NAL-6 variable introduction
+    ("<C --> A>", "<C --> B>", "<<C --> B> ==> <C --> A>>", "induction", True, 6),
+    ("<A --> C>", "<B --> C>", "<<B --> C> ==> <A --> C>>", "induction", True, 6),
+    ("<C --> A>", "<C --> B>", "<<C --> B> <=> <C --> A>>", "comparison", True, 6),
+    ("<A --> C>", "<B --> C>", "<<B --> C> <=> <A --> C>>", "comparison", True, 6),
+    ("(! <C --> A>)", "<C --> B>", "<<C --> B> ==> (! <C --> A>)>", "induction", True, 6),
+    ("(! <A --> C>)", "<B --> C>", "<<B --> C> ==> (! <A --> C>)>", "induction", True, 6),
+    ("(! <C --> A>)", "<C --> B>", "<<C --> B> <=> (! <C --> A>)>", "comparison", True, 6),
+    ("(! <A --> C>)", "<B --> C>", "<<B --> C> <=> (! <A --> C>)>", "comparison", True, 6),
+    ("<C --> A>", "(! <C --> B>)", "<(! <C --> B>) ==> <C --> A>>", "induction", True, 6),
+    ("<A --> C>", "(! <B --> C>)", "<(! <B --> C>) ==> <A --> C>>", "induction", True, 6),
+    ("<C --> A>", "(! <C --> B>)", "<(! <C --> B>) <=> <C --> A>>", "comparison", True, 6),
+    ("<A --> C>", "(! <B --> C>)", "<(! <B --> C>) <=> <A --> C>>", "comparison", True, 6),
+    ("<C --> A>", "<C --> B>", "(<C --> B> && <C --> A>)", "intersection", True, 6),
+    ("<A --> C>", "<B --> C>", "(<B --> C> && <A --> C>)", "intersection", True, 6),
+    ("(! <C --> A>)", "<C --> B>", "(<C --> B> && (! <C --> A>))", "intersection", True, 6),
+    ("(! <A --> C>)", "<B --> C>", "(<B --> C> && (! <A --> C>))", "intersection", True, 6),
+    ("<C --> A>", "(! <C --> B>)", "((! <C --> B>) && <C --> A>)", "intersection", True, 6),
+    ("<A --> C>", "(! <B --> C>)", "((! <B --> C>) && <A --> C>)", "intersection", True, 6),
+    (
+        "<(A * B) --> R>",
+        "<(B * A) --> S>",
+        "<<(B * A) --> S> ==> <(A * B) --> R>>",
+        "induction",
+        True,
+        6,
+    ),
+    (
+        "(! <(B * A) --> R>)",
+        "<(A * B) --> S>",
+        "<<(A * B) --> S> ==> (! <(B * A) --> R>)>",
+        "induction",
+        True,
+        6,
+    ),
+    (
+        "<(B * A) --> R>",
+        "(! <(A * B) --> S>)",
+        "<(! <(A * B) --> S>) ==> <(B * A) --> R>>",
+        "induction",
+        True,
+        6,
+    ),
+    # ONA also has ``A, B |- (A && B)``, but never queues such plain conjunctions;
+    # they only matter as stepping stones, which the var-intro rules above provide.
+    (
+        "<(A * C) --> M>",
+        "(<(A * B) --> R> && <(B * C) --> S>)",
+        "<(<(A * B) --> R> && <(B * C) --> S>) ==> <(A * C) --> M>>",
+        "induction",
+        True,
+        6,
+    ),
+]
+
+
+def _is_pvar(t: Term) -> bool:
+    """Single capital letters are pattern variables in the rule table."""
+    return t.op is None and len(t.name) == 1 and t.name.isupper()  # type: ignore[arg-type]
+
+
+def match(p: Term, t: Term, b: dict[Term, Term]) -> bool:
+    """Structural match of pattern ``p`` against ``t``, extending bindings ``b``."""
+    if p.op is None:
+        if _is_pvar(p):
+            got = b.get(p)
+            if got is None:
+                b[p] = t
+                return True
+            return got is t
+        return p is t
+    if p.op != t.op or len(p.args) != len(t.args):
+        return False
+    return all(match(pa, ta, b) for pa, ta in zip(p.args, t.args, strict=True))
+
+
+def make(op: str, args: tuple[Term, ...]) -> Term:
+    """Build a compound applying ONA's term reductions."""
+    if op in ("&", "|", CONJUNCTION, DISJUNCTION) and len(args) == 2 and args[0] is args[1]:
+        return args[0]
+    if op == "|" and len(args) == 2 and args[0].op == EXT_SET and args[1].op == EXT_SET:
+        return make(EXT_SET, args[0].args + args[1].args)
+    if op == "&" and len(args) == 2 and args[0].op == INT_SET and args[1].op == INT_SET:
+        return make(INT_SET, args[0].args + args[1].args)
+    if op in (EXT_SET, INT_SET):
+        seen: list[Term] = []
+        for a in args:
+            if a not in seen:
+                seen.append(a)
+        args = tuple(seen)
+    return compound(op, args)
+
+
+def build(p: Term, b: dict[Term, Term]) -> Term:
+    """Instantiate conclusion pattern ``p`` with bindings ``b`` (reducing as it goes)."""
+    if p.op is None:
+        return b.get(p, p)
+    return make(p.op, tuple(build(a, b) for a in p.args))
+
+
+@dataclass(slots=True)
+class Rule:
+    """One compiled rule; ``apply(t1, t2, v1, v2, emit)`` matches and emits."""
+
+    p1: Term
+    p2: Term | None
+    conclusion: Term
+    truth: TruthFn
+    var_intro: bool
+    level: int
+    name: str
+    apply: Callable[..., None] | None = None
+
+
+def _root(p: Term) -> str:
+    return "*any*" if _is_pvar(p) else (p.op or "*atom*")
+
+
+def _compile(rule: Rule) -> Callable[..., None]:
+    """Generate a straight-line matcher for ``rule`` (no recursion, no dict of bindings)."""
+    lines: list[str] = []
+    bound: set[str] = set()
+    consts: dict[str, object] = {"make": make, "truth": rule.truth}
+    counter = [0]
+
+    def gen(p: Term, expr: str) -> None:
+        if p.op is None:
+            if _is_pvar(p):
+                name = f"v_{p.name}"
+                if name in bound:
+                    lines.append(f"if {expr} is not {name}: return")
+                else:
+                    lines.append(f"{name} = {expr}")
+                    bound.add(name)
+            else:
+                k = f"c{len(consts)}"
+                consts[k] = p
+                lines.append(f"if {expr} is not {k}: return")
+            return
+        lines.append(f"if {expr}.op != {p.op!r} or len({expr}.args) != {len(p.args)}: return")
+        counter[0] += 1
+        base = f"x{counter[0]}"
+        lines.append(f"{base} = {expr}.args")
+        for i, a in enumerate(p.args):
+            gen(a, f"{base}[{i}]")
+
+    def build_expr(p: Term) -> str:
+        if p.op is None:
+            if _is_pvar(p):
+                return f"v_{p.name}"
+            k = f"c{len(consts)}"
+            consts[k] = p
+            return k
+        inner = ", ".join(build_expr(a) for a in p.args)
+        if len(p.args) == 1:
+            inner += ","
+        return f"make({p.op!r}, ({inner}))"
+
+    gen(rule.p1, "t1")
+    if rule.p2 is not None:
+        gen(rule.p2, "t2")
+    lines.append(f"emit({build_expr(rule.conclusion)}, truth(v1, v2), {rule.var_intro})")
+    src = "def f(t1, t2, v1, v2, emit):\n" + "\n".join("    " + x for x in lines)
+    ns: dict[str, object] = dict(consts)
+    exec(compile(src, f"<rule {rule.name}>", "exec"), ns)  # noqa: S102 - generated from our table
+    return ns["f"]  # type: ignore[return-value]
+
+
+class RuleTable:
+    """Compiled rules, indexed by premise connectors."""
+
+    def __init__(self, level: int = 6) -> None:
+        self.single: dict[str, list[Rule]] = {}
+        self.double: dict[tuple[str, str], list[Rule]] = {}
+        self._cache: dict[tuple[str | None, str | None], list[Rule]] = {}
+        self._single_cache: dict[str | None, list[Rule]] = {}
+        for p1, p2, c, fn, vi, lvl in _RULES:
+            if lvl > level:
+                continue
+            r = Rule(
+                parse_pattern(p1),
+                parse_pattern(p2) if p2 else None,
+                parse_pattern(c),
+                getattr(tf, fn),
+                vi,
+                lvl,
+                fn,
+            )
+            r.apply = _compile(r)
+            if r.p2 is None:
+                self.single.setdefault(_root(r.p1), []).append(r)
+            else:
+                self.double.setdefault((_root(r.p1), _root(r.p2)), []).append(r)
+
+    def single_rules(self, op: str | None) -> list[Rule]:
+        """Single-premise rules whose premise can have connector ``op``."""
+        got = self._single_cache.get(op)
+        if got is None:
+            key = op or "*atom*"
+            got = self.single.get(key, []) + self.single.get("*any*", [])
+            self._single_cache[op] = got
+        return got
+
+    def double_rules(self, op1: str | None, op2: str | None) -> list[Rule]:
+        """Two-premise rules whose premises can have connectors ``op1``, ``op2``."""
+        got = self._cache.get((op1, op2))
+        if got is None:
+            k1 = op1 or "*atom*"
+            k2 = op2 or "*atom*"
+            got = []
+            for a in (k1, "*any*"):
+                for c in (k2, "*any*"):
+                    got.extend(self.double.get((a, c), []))
+            self._cache[(op1, op2)] = got
+        return got
+
+
+# ---------------------------------------------------------------- variable introduction
+def _count_statement_atoms(
+    t: Term, counts: dict[Term, int], extensional: bool, ignore_structure: bool, spatial: bool
+) -> None:
+    op = t.op
+    if op in (INHERITANCE, SIMILARITY):
+        sim = op == SIMILARITY
+        s, p = t.args
+        if extensional or sim:
+            if s.op in ("\\1", "\\2"):
+                _count_statement_atoms(s.args[0], counts, extensional, True, spatial)
+            else:
+                _count_statement_atoms(s, counts, extensional, True, spatial)
+            if p.op in ("/1", "/2"):
+                _count_statement_atoms(p.args[1], counts, extensional, True, spatial)
+        if not extensional or sim:
+            if p.op in ("/1", "/2"):
+                _count_statement_atoms(p.args[0], counts, extensional, True, spatial)
+            else:
+                _count_statement_atoms(p, counts, extensional, True, spatial)
+            if s.op in ("\\1", "\\2"):
+                _count_statement_atoms(s.args[1], counts, extensional, True, spatial)
+    if ignore_structure or spatial:
+        if op in (EXT_SET, INT_SET) and len(t.args) > 1 and not spatial:
+            return
+        for a in t.atoms():
+            if not a.is_var and not _is_copula_atom(a):
+                counts[a] = counts.get(a, 0) + 1
+
+
+def _is_copula_atom(a: Term) -> bool:
+    return False
+
+
+def _count_hol(t: Term, counts: dict[Term, int], extensional: bool) -> None:
+    op = t.op
+    if op == "!":
+        _count_hol(t.args[0], counts, extensional)
+        return
+    if op in ("&/", CONJUNCTION, TEMPORAL_IMPLICATION, IMPLICATION, EQUIVALENCE):
+        ext = extensional or op == "&/"
+        _count_hol(t.args[0], counts, ext)
+        _count_hol(t.args[1], counts, ext)
+        return
+    _count_statement_atoms(t, counts, extensional, False, op == INT_SET)
+
+
+def _first_free(t: Term, prefix: str) -> int:
+    if not t.has_var:
+        return 1
+    used = {a.name for a in t.atoms() if a.is_var and a.name[0] == prefix}  # type: ignore[index]
+    i = 1
+    while f"{prefix}{i}" in used:
+        i += 1
+    return i
+
+
+def introduce_implication_variables(t: Term, extensional: bool) -> Term | None:
+    """ONA's variable introduction for ``==>``/``<=>``/``=/>`` conclusions."""
+    left, right = t.args
+    cl: dict[Term, int] = {}
+    cr: dict[Term, int] = {}
+    _count_hol(left, cl, extensional)
+    _count_hol(right, cr, extensional)
+    dep = _first_free(t, "#")
+    ind = _first_free(t, "$")
+    mapping: dict[Term, Term] = {}
+    for a in t.level_order_atoms():
+        if a in mapping:
+            continue
+        vl = cl.get(a)
+        vr = cr.get(a)
+        if (vl is not None and vl >= 2) or (vr is not None and vr >= 2) or (vl and vr):
+            if vl and vr:
+                if ind > 9:
+                    continue
+                mapping[a] = atom(f"${ind}")
+                ind += 1
+            else:
+                if dep > 9:
+                    continue
+                mapping[a] = atom(f"#{dep}")
+                dep += 1
+    if not mapping:
+        return None
+    from .terms import substitute
+
+    return substitute(t, mapping)
+
+
+def introduce_conjunction_variables(t: Term, extensional: bool) -> Term | None:
+    """ONA's dependent-variable introduction for ``&&`` conclusions."""
+    counts: dict[Term, int] = {}
+    _count_hol(t, counts, extensional)
+    dep = _first_free(t, "#")
+    mapping: dict[Term, Term] = {}
+    for a in t.level_order_atoms():
+        if a in mapping:
+            continue
+        if counts.get(a, 0) >= 2 and dep <= 9:
+            mapping[a] = atom(f"#{dep}")
+            dep += 1
+    if not mapping:
+        return None
+    from .terms import substitute
+
+    return substitute(t, mapping)
+
+
+# ---------------------------------------------------------------- conclusion filters
+def _simple_atoms(t: Term) -> list[Term]:
+    return [a for a in t.atoms() if not a.is_var]
+
+
+def atom_appears_twice(t: Term) -> bool:
+    """Filter: an -->/<-> statement naming an atom twice, or ==>/<=> with equal sides."""
+    if t.op in (INHERITANCE, SIMILARITY):
+        s = t.args[0]
+        if not (s.op == "*" and len(s.args) == 2 and s.args[0].op == "*" and s.args[1].op == "*"):
+            if names_repeat(t):
+                return True
+    if t.op in (IMPLICATION, EQUIVALENCE) and t.args[0] is t.args[1]:
+        return True
+    return False
+
+
+def nested_hol_statement(t: Term) -> bool:
+    """Filter: two ==>/<=> or more than two =/> in one term."""
+    if t.op is None or (t.op not in (IMPLICATION, EQUIVALENCE, TEMPORAL_IMPLICATION) and not t.has_var and t.complexity < 7):
+        return False
+    imp = 0
+    temp = 0
+    for s in t.walk():
+        if s.op in (IMPLICATION, EQUIVALENCE):
+            imp += 1
+        elif s.op == TEMPORAL_IMPLICATION:
+            temp += 1
+        if imp >= 2 or temp > 2:
+            return True
+    return False
+
+
+def inh_or_sim_has_dep_var(t: Term) -> bool:
+    """Filter: an -->/<-> statement with a dependent variable."""
+    return t.op in (INHERITANCE, SIMILARITY) and t.has_dep_var
+
+
+def junction_not_right_nested(t: Term) -> bool:
+    """Filter: && or || whose right component is again && or ||."""
+    return bool(t.flags & F_JUNCTION_RIGHT_NESTED)
+
+
+def invalid_set_op(t: Term) -> bool:
+    """Filter: intersections of sets that reductions should have merged."""
+    if t.op == INHERITANCE:
+        s, p = t.args
+        if s.op == "&" and s.args[0].op == EXT_SET and s.args[1].op == EXT_SET:
+            return True
+        if p.op == "|" and p.args[0].op == INT_SET and p.args[1].op == INT_SET:
+            return True
+    return False
+
+
+def dep_var_appears_once(t: Term) -> bool:
+    """Filter: a dependent variable mentioned only once."""
+    if not t.has_dep_var:
+        return False
+    counts: dict[Term, int] = {}
+    for a in t.atoms():
+        if a.has_dep_var:
+            counts[a] = counts.get(a, 0) + 1
+    return any(v == 1 for v in counts.values())
+
+
+def conjunction_starts_with_operation(t: Term) -> bool:
+    """Filter: a declarative implication whose condition conjunction starts with an op."""
+    if t.op in (IMPLICATION, EQUIVALENCE) and t.args[0].op == CONJUNCTION:
+        s = t.args[0]
+        while s.op == CONJUNCTION:
+            first = s.args[0]
+            if first.is_op:
+                return True
+            s = first
+    return False
+
+
+def hol_component_invalid(t: Term) -> bool:
+    """Filter for variable introduction: components like ``<$1 --> $1>`` or var-only ones."""
+    if t.op not in (IMPLICATION, EQUIVALENCE, CONJUNCTION):
+        return False
+    for comp in t.args:
+        c = comp.args[0] if comp.op == "!" else comp
+        if c.op in (INHERITANCE, SIMILARITY):
+            s, p = c.args
+            if s is p or (s.is_var and p.is_var):
+                return True
+            if not any(not a.is_var for a in c.atoms()):
+                return True
+    return False
+
+
+def rejected(t: Term) -> bool:
+    """True if a conclusion is one ONA's filters throw away (cached on the term)."""
+    got = t.cache
+    if got is None:
+        got = t.cache = _rejected(t)
+    return got
+
+
+def _rejected(t: Term) -> bool:
+    return (
+        atom_appears_twice(t)
+        or nested_hol_statement(t)
+        or inh_or_sim_has_dep_var(t)
+        or junction_not_right_nested(t)
+        or invalid_set_op(t)
+        or dep_var_appears_once(t)
+        or conjunction_starts_with_operation(t)
+    )

@@ -1,0 +1,289 @@
+"""Events in time: temporal and procedural induction, implication tables, anticipation.
+
+Mixed into :class:`~robocog.nars.nar.NAR`. Each concept that received an event sits in
+an occurrence-time index (a bounded FIFO, newest first); a selected event is paired
+with the recent events there to induce ``<a =/> b>`` and ``<(a &/ ^op) =/> b>``. The
+implications are stored in the predicate concept's table for the operation, and the
+concepts holding implications for each operation are indexed, so neither induction nor
+anticipation scans the whole memory.
+"""
+
+from __future__ import annotations
+
+from collections import deque
+from typing import TYPE_CHECKING
+
+from . import truth as tf
+from .event import BELIEF, ETERNAL, Event, Implication
+from .rules import hol_component_invalid, introduce_implication_variables
+from .stamp import fmt, merge, overlap
+from .terms import SEQUENCE, TEMPORAL_IMPLICATION, Term, compound
+from .truth import Truth, expectation
+from .unify import apply, unify
+
+if TYPE_CHECKING:
+    from .memory import Concept
+
+
+def split_precondition(subject: Term) -> tuple[Term, Term | None]:
+    """``(pre &/ op)`` -> (pre, op); anything else -> (subject, None)."""
+    if subject.op == SEQUENCE and subject.args[1].is_op:
+        return subject.args[0], subject.args[1]
+    if subject.is_op:
+        return subject, None
+    return subject, None
+
+
+def _sequence_length(t: Term) -> int:
+    n = 1
+    while t.op == SEQUENCE:
+        n += 1
+        t = t.args[0]
+    return n
+
+
+def _has_op(t: Term) -> bool:
+    while t.op == SEQUENCE:
+        if t.args[1].is_op:
+            return True
+        t = t.args[0]
+    return t.is_op
+
+
+def executable(op: Term) -> bool:
+    """``^op`` or ``<({SELF} * args) --> ^op>`` / ``<(#1 * args) --> ^op>``: ours to run."""
+    if op.op is None:
+        return True
+    s = op.args[0]
+    first = s.args[0] if s.op == "*" else s
+    return str(first) == "{SELF}" or first.is_var
+
+
+class SensorimotorMixin:
+    """Temporal reasoning for :class:`NAR` (uses its memory, config, time and output)."""
+
+    def _init_sensorimotor(self) -> None:
+        self.time_index: deque[Concept] = deque(maxlen=self.config.occurrence_time_index_size)  # type: ignore[attr-defined]
+        #: op id -> concepts with implications in that table
+        self.table_index: dict[int, dict[Concept, None]] = {}
+
+    # ------------------------------------------------------------- operations
+    def op_id(self, op: Term) -> int:
+        """1-based id of the operation ``op`` (``^name`` or ``<args --> ^name>``); 0 if unknown."""
+        name = op.name if op.op is None else op.args[1].name
+        try:
+            return self.op_names.index(name) + 1  # type: ignore[attr-defined]
+        except ValueError:
+            return 0
+
+    # ------------------------------------------------------------ implications
+    def _add_implication(
+        self, term: Term, t: Truth, stamp: tuple[int, ...], dt: float, is_input: bool, priority: float
+    ) -> Implication | None:
+        """Store ``<pre =/> post>`` in the table of ``post`` for its operation."""
+        subject, predicate = term.args
+        pre, op = split_precondition(subject)
+        opi = 0
+        if op is not None:
+            if not executable(op):
+                return None
+            opi = self.op_id(op)
+            if opi == 0:
+                return None
+        now = self.time  # type: ignore[attr-defined]
+        mem = self.memory  # type: ignore[attr-defined]
+        cfg = self.config  # type: ignore[attr-defined]
+        target = mem.conceptualize(predicate, now)
+        target.use(now, is_input, cfg.eternal_input_usage_boost)
+        source = mem.conceptualize(pre, now)
+        source.use(now, is_input, cfg.eternal_input_usage_boost)
+        imp = Implication(term, t, stamp, dt, now, pre)
+        table = target.tables(cfg.operations_max, cfg.table_size)[opi]
+        stored = table.add_and_revise(imp, cfg.stamp_size)
+        self.table_index.setdefault(opi, {})[target] = None
+        if stored is not None and not is_input and self._shows(priority):  # type: ignore[attr-defined]
+            self._print(  # type: ignore[attr-defined]
+                f"Derived: dt={dt:f} {term}. Priority={priority:f} Stamp={fmt(stamp)} {t}"
+            )
+            if stored is not imp and stored.truth.c > t.c:
+                self._print(  # type: ignore[attr-defined]
+                    f"Revised: dt={stored.dt:f} {stored.term}. Priority={priority:f} "
+                    f"Stamp={fmt(stored.stamp)} {stored.truth}"
+                )
+        return stored
+
+    def implications_for(self, post: Concept, opi: int) -> list[Implication]:
+        """The ``=/>`` links into ``post`` for operation table ``opi``."""
+        tables = post.precondition_beliefs
+        if tables is None or opi >= len(tables):
+            return []
+        return tables[opi].items
+
+    # -------------------------------------------------------------- induction
+    def _note_event(self, c: Concept) -> None:
+        """Remember that ``c`` just received an event (newest first)."""
+        idx = self.time_index
+        try:
+            idx.remove(c)
+        except ValueError:
+            pass
+        idx.appendleft(c)
+
+    def _process_belief_event(self, e: Event, priority: float) -> None:
+        """ONA's sensorimotor processing of a selected belief event."""
+        cfg = self.config  # type: ignore[attr-defined]
+        now = self.time  # type: ignore[attr-defined]
+        if e.occurrence_time == ETERNAL or e.processed:
+            return
+        if now - e.occurrence_time >= cfg.max_sequence_timediff:
+            return
+        e.processed = True
+        window = cfg.precondition_consequence_distance
+        if not e.term.is_op:
+            # procedural: <(pre &/ op) =/> e> for an op between pre and e
+            for opc in self.time_index:
+                op_ev = opc.belief_spike
+                if op_ev is None or not opc.term.is_op:
+                    continue
+                if not (0 <= e.occurrence_time - op_ev.occurrence_time < window):
+                    continue
+                if op_ev.occurrence_time >= e.occurrence_time and op_ev.occurrence_time != e.occurrence_time:
+                    continue
+                if overlap(op_ev.stamp, e.stamp):
+                    continue
+                for pc in self.time_index:
+                    pre = pc.belief_spike
+                    if pre is None or pc.term.is_op or pc is opc:
+                        continue
+                    if pre.occurrence_time > op_ev.occurrence_time:
+                        continue
+                    if op_ev.occurrence_time - pre.occurrence_time >= window:
+                        continue
+                    if pc.term is e.term:
+                        continue
+                    if overlap(pre.stamp, e.stamp) or overlap(pre.stamp, op_ev.stamp):
+                        continue
+                    self._induce(pre, op_ev, e, priority)
+        # temporal: <c =/> e> for recent non-op events, and the sequence (c &/ e)
+        sequences: list[Event] = []
+        for c in list(self.time_index):
+            b = c.belief_spike
+            if b is None or c.term is e.term or c.term.is_op or e.term.is_op:
+                continue
+            d = e.occurrence_time - b.occurrence_time
+            if not (0 <= d < window):
+                continue
+            if overlap(b.stamp, e.stamp):
+                continue
+            if d > 0:
+                self._induce(b, None, e, priority)
+            if _sequence_length(c.term) + 1 <= cfg.max_sequence_len and not _has_op(c.term):
+                seq = compound(SEQUENCE, (c.term, e.term))
+                t = tf.intersection(tf.projection(b.truth, b.occurrence_time, e.occurrence_time), e.truth)
+                sequences.append(
+                    Event(
+                        seq,
+                        BELIEF,
+                        t,
+                        merge(b.stamp, e.stamp, cfg.stamp_size),
+                        e.occurrence_time,
+                        now,
+                    )
+                )
+        for se in sequences:
+            self._activate_sequence(se)
+
+    def _activate_sequence(self, se: Event) -> None:
+        """A sequence that just happened: its concept gets the event, it is not queued."""
+        mem = self.memory  # type: ignore[attr-defined]
+        c = mem.conceptualize(se.term, self.time)  # type: ignore[attr-defined]
+        old = c.belief_spike
+        if old is None or old.occurrence_time < se.occurrence_time or (
+            old.occurrence_time == se.occurrence_time and se.truth.c > old.truth.c
+        ):
+            c.belief_spike = se
+        self._note_event(c)
+
+    def _induce(self, pre: Event, op: Event | None, post: Event, priority: float) -> None:
+        """beliefInduction: ``<pre =/> post>`` (or with ``op``) with ONA's truth."""
+        cfg = self.config  # type: ignore[attr-defined]
+        if op is not None:
+            subj = compound(SEQUENCE, (pre.term, op.term))
+            pre_t = tf.intersection(
+                tf.projection(pre.truth, pre.occurrence_time, op.occurrence_time), op.truth
+            )
+            pre_occ = op.occurrence_time
+            stamp = merge(merge(pre.stamp, op.stamp, cfg.stamp_size), post.stamp, cfg.stamp_size)
+            dt = post.occurrence_time - op.occurrence_time
+        else:
+            subj = pre.term
+            pre_t = pre.truth
+            pre_occ = pre.occurrence_time
+            stamp = merge(pre.stamp, post.stamp, cfg.stamp_size)
+            dt = post.occurrence_time - pre.occurrence_time
+        proj = tf.projection(pre_t, pre_occ, post.occurrence_time)
+        t = tf.eternalize(tf.induction(post.truth, proj))
+        term = compound(TEMPORAL_IMPLICATION, (subj, post.term))
+        if t.c < cfg.min_confidence:
+            return
+        p = priority * expectation(t)
+        self._add_implication(term, t, stamp, float(dt), False, p)
+        if cfg.allow_var_intro:
+            for ext in (True, False):
+                v = introduce_implication_variables(term, ext)
+                if v is not None and v is not term and not hol_component_invalid(v):
+                    self._add_implication(v, t, stamp, float(dt), False, p)
+
+    # ------------------------------------------------------------ anticipation
+    def _anticipate(self, e: Event) -> None:
+        """Predict what implications of the just-happened event promise, and count a
+        failure against each such implication until the outcome actually arrives."""
+        cfg = self.config  # type: ignore[attr-defined]
+        now = self.time  # type: ignore[attr-defined]
+        opi = self.op_id(e.term) if e.term.is_op else 0
+        targets = self.table_index.get(opi)
+        if not targets:
+            return
+        mem = self.memory  # type: ignore[attr-defined]
+        for post in list(targets):
+            if mem.find(post.term) is not post:
+                targets.pop(post, None)
+                continue
+            for imp in list(self.implications_for(post, opi)):
+                pre_term = imp.source
+                if pre_term is None:
+                    continue
+                subj = imp.term.args[0]
+                bindings: dict[Term, Term] | None = {}
+                if opi:
+                    op_term = subj.args[1]
+                    bindings = unify(op_term, e.term)
+                    if bindings is None:
+                        continue
+                    pre_term = apply(subj.args[0], bindings)
+                elif pre_term is not e.term:
+                    continue
+                pre_c = mem.find(pre_term)
+                if pre_c is None or pre_c.belief_spike is None:
+                    continue
+                spike = pre_c.belief_spike
+                if now - spike.occurrence_time > cfg.precondition_consequence_distance:
+                    continue
+                pre_t = tf.projection(spike.truth, spike.occurrence_time, now)
+                predicted = tf.deduction(imp.truth, pre_t)
+                if expectation(predicted) <= cfg.anticipation_threshold and not (
+                    predicted.c < 0.05 and predicted.f == 0.0
+                ):
+                    continue
+                neg = tf.eternalize(
+                    tf.induction(Truth(0.0, cfg.anticipation_confidence), pre_t)
+                )
+                post.tables(cfg.operations_max, cfg.table_size)[opi].add_and_revise(
+                    Implication(imp.term, neg, (), imp.dt, now, imp.source), cfg.stamp_size
+                )
+                occ = now + round(imp.dt)
+                outcome = apply(imp.term.args[1], bindings) if bindings else imp.term.args[1]
+                pred = Event(outcome, BELIEF, predicted, merge(spike.stamp, imp.stamp), occ, now)
+                oc = mem.find(outcome)
+                if oc is not None and occ > now:
+                    oc.predicted_belief = pred

@@ -1,0 +1,75 @@
+"""``robocog nar``: ONA's shell protocol on stdin/stdout.
+
+Each input line is Narsese, a bare number of cycles, a ``*command`` or a ``//comment``;
+output lines are ONA's (``Input:``, ``Derived:``, ``Answer:``, ...), so ONA's example
+files and scoring tools work unchanged. A bad line prints one error naming its line and
+column and the reasoner goes on with its memory intact.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+from .nar import NAR
+from .narsese import NarseseError
+
+
+def configure(parser: argparse.ArgumentParser) -> None:
+    """Declare the shell's arguments."""
+    parser.add_argument("--load", metavar="FILE", help="start from a memory saved earlier")
+    parser.add_argument("--save", metavar="FILE", help="save the memory here at the end")
+    parser.add_argument("--seed", type=int, default=666, help="random seed (ONA's is 666)")
+    parser.add_argument(
+        "--set",
+        metavar="NAME=VALUE",
+        action="append",
+        default=[],
+        help="set a parameter, e.g. --set concepts_max=20000 (repeatable)",
+    )
+    parser.add_argument("--quiet", action="store_true", help="no Statistics block at the end")
+
+
+def _value(text: str) -> object:
+    if text in ("true", "false"):
+        return text == "true"
+    try:
+        return int(text)
+    except ValueError:
+        return float(text)
+
+
+def run(args: argparse.Namespace) -> int:
+    """Read stdin until EOF or ``quit``, printing ONA's output lines."""
+    overrides = {}
+    for item in args.set:
+        k, _, v = item.partition("=")
+        overrides[k.strip()] = _value(v.strip())
+    try:
+        nar = NAR.load(args.load) if args.load else NAR(seed=args.seed)
+        nar.config.update(**overrides)
+    except (OSError, ValueError, KeyError) as exc:
+        print(f"robocog nar: {exc}", file=sys.stderr)
+        return 2
+    out = sys.stdout
+    nar.output = lambda line: out.write(line + "\n")
+    nar.config.print_derivations = True
+    for lineno, raw in enumerate(sys.stdin, start=1):
+        line = raw.rstrip()
+        if line == "quit":
+            break
+        try:
+            nar.add_input(line)
+        except NarseseError as exc:
+            out.write(f"Error: line {lineno}, column {exc.column}: {exc.message}\n")
+        except RecursionError:
+            out.write(f"Error: line {lineno}, column 1: term nested too deeply\n")
+        except Exception as exc:  # noqa: BLE001 - the shell must outlive any one line
+            out.write(f"Error: line {lineno}, column 1: internal error: {exc!r}\n")
+    if args.save:
+        nar.save(args.save)
+    if not args.quiet:
+        for line in nar.statistics():
+            out.write(line + "\n")
+    out.flush()
+    return 0

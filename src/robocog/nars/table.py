@@ -1,0 +1,64 @@
+"""Implication tables: bounded, sorted by truth expectation, revising equal terms.
+
+Each concept keeps one table of ``==>`` links and one table of ``=/>`` links per
+operation id, so a decision looks only at the implications that can reach its goal.
+"""
+
+from __future__ import annotations
+
+from .event import Implication
+from .stamp import merge, overlap
+from .truth import c2w, expectation, revision
+
+
+class Table:
+    """Add-and-revise table of implications, best expectation first."""
+
+    __slots__ = ("items", "size")
+
+    def __init__(self, size: int) -> None:
+        self.items: list[Implication] = []
+        self.size = size
+
+    def __len__(self) -> int:
+        return len(self.items)
+
+    def __iter__(self):  # noqa: ANN204 - iterator of Implication
+        return iter(self.items)
+
+    def _insert(self, imp: Implication) -> None:
+        e = expectation(imp.truth)
+        items = self.items
+        for i, other in enumerate(items):
+            if expectation(other.truth) < e:
+                items.insert(i, imp)
+                break
+        else:
+            items.append(imp)
+        if len(items) > self.size:
+            items.pop()
+
+    def add_and_revise(self, imp: Implication, stamp_size: int = 10) -> Implication | None:
+        """Revise with the entry of the same term (or insert); returns the stored entry."""
+        for i, old in enumerate(self.items):
+            if old.term is imp.term:
+                if imp.term.op == "==>" and overlap(old.stamp, imp.stamp):
+                    keep = imp if imp.truth.c > old.truth.c else old
+                    del self.items[i]
+                    self._insert(keep)
+                    return keep
+                w1, w2 = c2w(old.truth.c), c2w(imp.truth.c)
+                dt = (w1 * old.dt + w2 * imp.dt) / (w1 + w2) if w1 + w2 > 0 else imp.dt
+                revised = Implication(
+                    imp.term,
+                    revision(old.truth, imp.truth),
+                    merge(old.stamp, imp.stamp, stamp_size),
+                    dt,
+                    imp.creation_time,
+                    imp.source,
+                )
+                del self.items[i]
+                self._insert(revised)
+                return revised
+        self._insert(imp)
+        return imp if imp in self.items else None

@@ -1,0 +1,332 @@
+"""Interned Narsese terms.
+
+Every term is built through :func:`atom` or :func:`compound`, which return the one
+object standing for that term, so equality is identity and hashing is by address:
+both O(1), which is what the hot path (concept lookup, unification, stamps of rule
+matches) needs. The interning table holds terms weakly, so a stream of ever new
+names does not grow memory beyond the terms still referenced by the reasoner.
+
+Printing is ONA's canonical form (``<S --> P>``, ``(A * B)``, ``{a b}``, ``(! a)``),
+so answers can be compared as text with ONA's output.
+"""
+
+from __future__ import annotations
+
+import sys
+from collections.abc import Callable, Iterator
+
+#: statement copulas, printed ``<S cop P>``
+STATEMENT_COPULAS = frozenset({"-->", "<->", "==>", "<=>", "=/>", "|->"})
+#: binary infix compound connectors, printed ``(A op B)``
+INFIX_OPS = frozenset({"*", "&", "|", "-", "~", "&&", "||", "&/", "/1", "/2", "\\1", "\\2"})
+#: unary connectors printed ``(op A)``
+UNARY_OPS = frozenset({"!", "*", "+", "="})
+#: set connectors
+SETS = {"{}": ("{", "}"), "[]": ("[", "]")}
+
+INHERITANCE = "-->"
+SIMILARITY = "<->"
+IMPLICATION = "==>"
+EQUIVALENCE = "<=>"
+TEMPORAL_IMPLICATION = "=/>"
+SEQUENCE = "&/"
+CONJUNCTION = "&&"
+DISJUNCTION = "||"
+NEGATION = "!"
+PRODUCT = "*"
+EXT_SET = "{}"
+INT_SET = "[]"
+
+_VAR_PREFIXES = "$#?"
+
+
+class Term:
+    """One Narsese term; never build directly, use :func:`atom` / :func:`compound`."""
+
+    __slots__ = (
+        "op",
+        "name",
+        "args",
+        "complexity",
+        "_str",
+        "has_var",
+        "has_query_var",
+        "has_indep_var",
+        "has_dep_var",
+        "is_var",
+        "is_op",
+        "cache",
+        "flags",
+    )
+
+    op: str | None
+    name: str | None
+    args: tuple[Term, ...]
+
+    def __reduce__(self) -> tuple[Callable[..., Term], tuple[object, ...]]:
+        """Pickle as a re-interning call, so loaded terms are the interned objects."""
+        if self.op is None:
+            return (atom, (self.name,))
+        return (compound, (self.op, self.args))
+
+    def __repr__(self) -> str:
+        return f"Term({self})"
+
+    def __str__(self) -> str:
+        s = self._str
+        if s is None:
+            s = self._str = _render(self)
+        return s
+
+    # ------------------------------------------------------------------ queries
+    @property
+    def is_atom(self) -> bool:
+        """True for names and variables."""
+        return self.op is None
+
+    @property
+    def is_statement(self) -> bool:
+        """True for copula terms (``-->``, ``<->``, ``==>``, ``<=>``, ``=/>``, ``|->``)."""
+        return self.op in STATEMENT_COPULAS
+
+    @property
+    def subject(self) -> Term:
+        """First argument of a binary term."""
+        return self.args[0]
+
+    @property
+    def predicate(self) -> Term:
+        """Second argument of a binary term."""
+        return self.args[1]
+
+    def walk(self) -> Iterator[Term]:
+        """All subterms, depth first, the term itself first."""
+        yield self
+        for a in self.args:
+            yield from a.walk()
+
+    def atoms(self) -> list[Term]:
+        """All atom occurrences (with repetition)."""
+        if self.op is None:
+            return [self]
+        out: list[Term] = []
+        stack = list(self.args)
+        pop = stack.pop
+        while stack:
+            x = pop()
+            if x.op is None:
+                out.append(x)
+            else:
+                stack.extend(x.args)
+        return out
+
+    def level_order_atoms(self) -> list[Term]:
+        """Atom occurrences in ONA's array order (breadth first over the binary tree)."""
+        out: list[Term] = []
+        level = [self]
+        while level:
+            nxt: list[Term] = []
+            for t in level:
+                if t.op is None:
+                    out.append(t)
+                else:
+                    nxt.extend(t.args)
+            level = nxt
+        return out
+
+
+#: structural flags kept on every term so conclusion filters are O(1)
+F_IMP = 1  # count of ==>/<=> is kept separately; these are presence bits
+F_JUNCTION_RIGHT_NESTED = 2  # some && or || has && or || as right component
+F_COMPOSED = 4  # contains - ~ & |
+F_IMAGE = 8  # contains /1 /2 \1 \2
+_IMPS = ("==>", "<=>")
+_JUNCTIONS = ("&&", "||")
+_COMPOSED_OPS = ("-", "~", "&", "|")
+_IMAGE_OPS = ("/1", "/2", "\\1", "\\2")
+
+_TABLE: dict[tuple[object, ...], Term] = {}
+#: the table is swept of terms nobody else holds when it grows past this size
+_SWEEP_AT = [200_000]
+
+
+def _sweep() -> None:
+    """Drop interned terms referenced only by the table (a few passes, parents first)."""
+    table = _TABLE
+    for _ in range(4):
+        dead = []
+        t = None
+        for k in list(table):
+            t = table[k]
+            if sys.getrefcount(t) <= 3:  # the table, ``t`` and the call's argument
+                dead.append(k)
+        t = None
+        if not dead:
+            break
+        for k in dead:
+            del table[k]
+    _SWEEP_AT[0] = max(200_000, 2 * len(table))
+
+
+def interned_count() -> int:
+    """How many terms are interned right now."""
+    return len(_TABLE)
+
+
+def atom(name: str) -> Term:
+    """The interned atom ``name`` (names, ``^ops``, ``$1``/``#1``/``?1`` variables)."""
+    key = (None, name)
+    t = _TABLE.get(key)
+    if t is not None:
+        return t
+    t = Term.__new__(Term)
+    t.op = None
+    t.name = name
+    t.args = ()
+    t.complexity = 1
+    t._str = name
+    v = name[0] in _VAR_PREFIXES and len(name) > 1
+    t.is_var = v
+    t.has_var = v
+    t.has_query_var = v and name[0] == "?"
+    t.has_indep_var = v and name[0] == "$"
+    t.has_dep_var = v and name[0] == "#"
+    t.is_op = name[0] == "^"
+    t.cache = None
+    t.flags = 0
+    if len(_TABLE) >= _SWEEP_AT[0]:
+        _sweep()
+    _TABLE[key] = t
+    return t
+
+
+def compound(op: str, args: tuple[Term, ...]) -> Term:
+    """The interned compound with connector ``op`` over ``args``."""
+    key = (op, args)
+    t = _TABLE.get(key)
+    if t is not None:
+        return t
+    t = Term.__new__(Term)
+    t.op = op
+    t.name = None
+    t.args = args
+    t._str = None
+    # ONA's binary-tree slot count: unary terms carry a terminator slot, sets of n
+    # elements chain n-1 element nodes plus the terminator
+    t.complexity = 1 + sum(a.complexity for a in args) + (1 if len(args) == 1 else 0)
+    if op in SETS and len(args) > 1:
+        t.complexity += len(args)
+    t.is_var = False
+    flags = 0
+    hv = hq = hi = hd = False
+    for a in args:
+        flags |= a.flags
+        hv = hv or a.has_var
+        hq = hq or a.has_query_var
+        hi = hi or a.has_indep_var
+        hd = hd or a.has_dep_var
+    if op in _JUNCTIONS and args[-1].op in _JUNCTIONS:
+        flags |= F_JUNCTION_RIGHT_NESTED
+    if op in _COMPOSED_OPS:
+        flags |= F_COMPOSED
+    elif op in _IMAGE_OPS:
+        flags |= F_IMAGE
+    t.flags = flags
+    t.has_var = hv
+    t.has_query_var = hq
+    t.has_indep_var = hi
+    t.has_dep_var = hd
+    # an operation term: ``^op`` or ``<(args) --> ^op>``
+    t.is_op = op == INHERITANCE and args[1].op is None and args[1].is_op
+    t.cache = None  # per-term results of pure checks (conclusion filters)
+    if len(_TABLE) >= _SWEEP_AT[0]:
+        _sweep()
+    _TABLE[key] = t
+    return t
+
+
+def names_repeat(t: Term) -> bool:
+    """True if some (non-variable) name occurs more than once in ``t``."""
+    seen: set[int] = set()
+    stack = [t]
+    pop = stack.pop
+    push = stack.extend
+    while stack:
+        x = pop()
+        if x.op is None:
+            if not x.is_var:
+                i = id(x)
+                if i in seen:
+                    return True
+                seen.add(i)
+        else:
+            push(x.args)
+    return False
+
+
+def statement(subject: Term, copula: str, predicate: Term) -> Term:
+    """``<subject copula predicate>``."""
+    return compound(copula, (subject, predicate))
+
+
+def negation(t: Term) -> Term:
+    """``(! t)``."""
+    return compound(NEGATION, (t,))
+
+
+def _render(t: Term) -> str:
+    op = t.op
+    if op is None:
+        return t.name  # type: ignore[return-value]
+    args = t.args
+    if op in STATEMENT_COPULAS:
+        return f"<{args[0]} {op} {args[1]}>"
+    if op in SETS:
+        o, c = SETS[op]
+        return o + " ".join(str(a) for a in args) + c
+    if len(args) == 1:
+        return f"({op} {args[0]})"
+    return "(" + f" {op} ".join(str(a) for a in args) + ")"
+
+
+def substitute(t: Term, mapping: dict[Term, Term]) -> Term:
+    """``t`` with every subterm found in ``mapping`` replaced (no recursion into replacements)."""
+    r = mapping.get(t)
+    if r is not None:
+        return r
+    if t.op is None:
+        return t
+    new = tuple(substitute(a, mapping) for a in t.args)
+    if all(a is b for a, b in zip(new, t.args, strict=True)):
+        return t
+    return compound(t.op, new)
+
+
+def normalize_variables(t: Term) -> Term:
+    """Rename variables ``$x #y ?z`` to ``$1.. #1.. ?1..`` by first occurrence in ONA's array order."""
+    if not t.has_var:
+        return t
+    counters = {"$": 0, "#": 0, "?": 0}
+    mapping: dict[Term, Term] = {}
+    for a in t.level_order_atoms():
+        if a.is_var and a not in mapping:
+            k = a.name[0]  # type: ignore[index]
+            counters[k] += 1
+            mapping[a] = atom(f"{k}{counters[k]}")
+    if all(k is v for k, v in mapping.items()):
+        return t
+    return substitute(t, mapping)
+
+
+def is_operation(t: Term) -> bool:
+    """``^op`` or ``<(args) --> ^op>``."""
+    return t.is_op
+
+
+def operation_name(t: Term) -> Term | None:
+    """The ``^op`` atom of an operation term, else None."""
+    if t.op is None:
+        return t if t.is_op else None
+    if t.is_op:
+        return t.args[1]
+    return None

@@ -1,0 +1,42 @@
+"""Unification of a general term (with variables) against a specific one.
+
+Only the general side's variables bind; the specific side's variables are ordinary
+names, as in ONA. A query variable may not stand for a variable.
+"""
+
+from __future__ import annotations
+
+from .terms import Term, substitute
+
+
+def unify(general: Term, specific: Term, query_only: bool = False) -> dict[Term, Term] | None:
+    """Bindings making ``general`` equal to ``specific``, or None."""
+    if not general.has_var:
+        return {} if general is specific else None
+    b: dict[Term, Term] = {}
+    return b if _unify(general, specific, b, query_only) else None
+
+
+def _unify(g: Term, s: Term, b: dict[Term, Term], query_only: bool) -> bool:
+    if g is s and not g.has_var:
+        return True
+    if g.op is None:
+        if g.is_var and (not query_only or g.has_query_var):
+            if g.has_query_var and s.is_var:
+                return False
+            got = b.get(g)
+            if got is None:
+                b[g] = s
+                return True
+            return got is s
+        return g is s
+    if g.op != s.op or len(g.args) != len(s.args):
+        return False
+    return all(_unify(ga, sa, b, query_only) for ga, sa in zip(g.args, s.args, strict=True))
+
+
+def apply(term: Term, bindings: dict[Term, Term]) -> Term:
+    """``term`` with its bound variables replaced."""
+    if not bindings or not term.has_var:
+        return term
+    return substitute(term, bindings)

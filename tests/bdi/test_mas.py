@@ -1,0 +1,59 @@
+"""Several agents in one run: tell, untell, achieve, askOne, askAll, broadcast."""
+
+from __future__ import annotations
+
+from robocog.bdi import MultiAgentSystem
+
+
+def _mas(**sources: str) -> tuple[MultiAgentSystem, list[str]]:
+    out: list[str] = []
+    mas = MultiAgentSystem()
+    for name, src in sources.items():
+        mas.create(name, src, printer=lambda n, t: out.append(f"{n}: {t}"))
+    return mas, out
+
+
+def test_tell_and_untell_change_the_receivers_beliefs_with_the_sender_as_source() -> None:
+    mas, out = _mas(
+        bob="!s.\n+!s <- .send(alice, tell, hot(30)); .wait(10); .send(alice, untell, hot(30)).",
+        alice='+hot(T)[source(S)] <- .print(S, " says ", T).\n-hot(T)[source(S)] <- .print(S, " retracts").',
+    )
+    mas.run()
+    assert out == ["alice: bob says 30", "alice: bob retracts"]
+    assert mas.agents["alice"].beliefs() == []
+
+
+def test_achieve_starts_a_goal_in_the_receiver() -> None:
+    mas, out = _mas(
+        boss="!s.\n+!s <- .send(worker, achieve, clean(room1)).",
+        worker='+!clean(R)[source(A)] <- .print("cleaning ", R, " for ", A).',
+    )
+    mas.run()
+    assert out == ["worker: cleaning room1 for boss"]
+
+
+def test_ask_one_waits_for_the_answer() -> None:
+    mas, out = _mas(
+        asker="!s.\n+!s <- .send(oracle, askOne, value(X), A); .print(A); "
+        ".send(oracle, askOne, missing(Y), B); .print(B).",
+        oracle="value(42).",
+    )
+    mas.run()
+    assert out == ["asker: value(42)[source(oracle)]", "asker: false"]
+
+
+def test_ask_all_and_broadcast() -> None:
+    mas, out = _mas(
+        a="!s.\n+!s <- .send(b, askAll, n(X), L); .print(L); .broadcast(tell, done).",
+        b="n(1). n(2).\n+done[source(S)] <- .print(done_from, S).",
+        c="+done[source(S)] <- .print(done_from, S).",
+    )
+    mas.run()
+    assert out[0] == "a: [n(1)[source(b)],n(2)[source(b)]]"
+    assert sorted(out[1:]) == ["b: done_froma", "c: done_froma"]
+
+
+def test_my_name_and_all_names() -> None:
+    mas, out = _mas(x="!s.\n+!s <- .my_name(N); .all_names(L); .print(N, L).", y="")
+    mas.run()
+    assert out == ["x: x[x,y]"]

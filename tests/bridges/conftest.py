@@ -1,0 +1,142 @@
+"""Fixtures of the bridge tests: loopback-only DDS settings, roscore on 127.0.0.1, and
+child processes that are always ended, whatever the test's fate."""
+
+from __future__ import annotations
+
+import itertools
+import os
+import shutil
+import subprocess
+import time
+import xmlrpc.client
+from collections.abc import Callable, Iterator
+from pathlib import Path
+
+import pytest
+
+from tests.bridges.procs import SYSTEM_PYTHON, Child, child_env, free_port
+
+_domains = itertools.count(0)
+
+
+@pytest.fixture
+def spawn() -> Iterator[Callable[..., Child]]:
+    """Start children that are all stopped at the end of the test."""
+    children: list[Child] = []
+
+    def start(argv: list[str], env: dict[str, str] | None = None, name: str = "") -> Child:
+        child = Child(argv, env, name)
+        children.append(child)
+        return child
+
+    yield start
+    for child in reversed(children):
+        child.stop()
+
+
+@pytest.fixture
+def dds() -> tuple[int, dict[str, str]]:
+    """A DDS domain of its own and an environment that keeps Cyclone on 127.0.0.1."""
+    pytest.importorskip("cyclonedds", reason="the ROS 2 bridge needs the ros2 extra (cyclonedds)")
+    from robocog.bridges.ros2.loopback import LOOPBACK_URI
+
+    domain = 1 + (os.getpid() * 7 + next(_domains)) % 200
+    env = child_env({"CYCLONEDDS_URI": LOOPBACK_URI, "ROS_DOMAIN_ID": str(domain)})
+    return domain, env
+
+
+def _has_rospy() -> str:
+    """Why ROS 1 tests cannot run here, or '' when they can."""
+    if not Path(SYSTEM_PYTHON).exists():
+        return f"{SYSTEM_PYTHON} is missing"
+    if shutil.which("roscore") is None:
+        return "roscore is missing (run .ci/install_ros.sh)"
+    probe = subprocess.run(
+        [SYSTEM_PYTHON, "-c", "import rospy, actionlib, move_base_msgs.msg, sensor_msgs.msg"],
+        capture_output=True,
+        text=True,
+        env={k: v for k, v in os.environ.items() if k != "PYTHONPATH"},
+    )
+    if probe.returncode != 0:
+        return "Debian's rospy packages are missing (run .ci/install_ros.sh)"
+    return ""
+
+
+@pytest.fixture(scope="module")
+def roscore(tmp_path_factory: pytest.TempPathFactory) -> Iterator[dict[str, str]]:
+    """A roscore on 127.0.0.1 and a free port; yields the environment that reaches it."""
+    reason = _has_rospy()
+    if reason:
+        pytest.skip(reason)
+    port = free_port()
+    home = tmp_path_factory.mktemp("ros_home")
+    env = child_env(
+        {
+            "ROS_MASTER_URI": f"http://127.0.0.1:{port}",
+            "ROS_IP": "127.0.0.1",
+            "ROS_HOME": str(home),
+            "ROS_LOG_DIR": str(home / "log"),
+        }
+    )
+    env.pop("ROS_HOSTNAME", None)
+    core_env = {k: v for k, v in env.items() if k != "PYTHONPATH"}
+    core = Child(["roscore", "-p", str(port)], core_env, "roscore")
+    try:
+        master = xmlrpc.client.ServerProxy(env["ROS_MASTER_URI"])
+        deadline = time.monotonic() + 30
+        while True:
+            try:
+                code, _msg, _uri = master.getUri("/test")
+                if code == 1:
+                    break
+            except OSError:
+                pass
+            if time.monotonic() > deadline or core.proc.poll() is not None:
+                pytest.fail(f"roscore did not come up: {core.stderr_text()[-2000:]}")
+            time.sleep(0.2)
+        yield env
+    finally:
+        core.stop()
+
+
+DATA = Path(__file__).with_name("data")
+
+
+def _mind_class(name: str) -> str:
+    """Why the mind ``--mind name`` cannot drive a robot here, or '' when it can: the
+    module or class may be missing, or its engine not yet able to act (its ``probe``)."""
+    import importlib
+
+    from robocog.bridges.cli import MINDS
+
+    module_name, attr = MINDS[name]
+    try:
+        module = importlib.import_module(module_name)
+    except Exception as exc:  # noqa: BLE001 - a package under construction may fail anyhow
+        return f"{module_name} cannot be imported ({type(exc).__name__}: {exc})"
+    if not hasattr(module, attr):
+        return f"{module_name} has no {attr} yet"
+    probe = getattr(module, "probe", None)
+    if callable(probe):
+        reason = probe()
+        if reason:
+            return f"{attr} cannot drive a robot yet: {reason}"
+    return ""
+
+
+@pytest.fixture
+def nars_knowledge() -> str:
+    """The Narsese background knowledge for `--mind nars`; skips while NarsMind is missing."""
+    reason = _mind_class("nars")
+    if reason:
+        pytest.skip(reason)
+    return str(DATA / "reflex.nal")
+
+
+@pytest.fixture
+def bdi_program() -> str:
+    """The AgentSpeak program for `--mind bdi`; skips while BdiMind is missing."""
+    reason = _mind_class("bdi")
+    if reason:
+        pytest.skip(reason)
+    return str(DATA / "reflex.asl")

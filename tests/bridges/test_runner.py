@@ -1,0 +1,173 @@
+"""The watchdog stops the robot when percepts stop or the mind fails, and resumes."""
+
+from __future__ import annotations
+
+import threading
+import time
+from collections.abc import Sequence
+
+from robocog.bridges.body import RobotBody
+from robocog.bridges.config import BridgeConfig
+from robocog.bridges.perception import ScanReading
+from robocog.bridges.runner import BridgeRunner, text_input_of
+from robocog.robot import Command, Outcome, Percept, Turn
+from tests.bridges.fakes import FakeLink
+from tests.bridges.procs import wait_until
+from tests.bridges.reflex import ReflexMind
+
+LEFT = ScanReading(0.8, 0.0, 0.1, 10.0, [1.0])
+CONFIG = BridgeConfig(watchdog_seconds=0.3, angular_speed=3.0, command_rate=50.0, cycle_period=0.02)
+
+
+class Feeder:
+    """Sends a scan every 20 ms while ``on`` is set, as a robot's driver would."""
+
+    def __init__(self, body: RobotBody) -> None:
+        self.body = body
+        self.on = threading.Event()
+        self.on.set()
+        self.done = threading.Event()
+        self.thread = threading.Thread(target=self._run, daemon=True)
+        self.thread.start()
+
+    def _run(self) -> None:
+        while not self.done.wait(0.02):
+            if self.on.is_set():
+                self.body.on_scan(LEFT)
+
+    def close(self) -> None:
+        self.done.set()
+        self.thread.join()
+
+
+def start(mind: object, config: BridgeConfig = CONFIG, **run: float):
+    link = FakeLink()
+    body = RobotBody(link, config).start()
+    feeder = Feeder(body)
+    runner = BridgeRunner(body, mind)  # type: ignore[arg-type]
+    result: list[int] = []
+    thread = threading.Thread(target=lambda: result.append(runner.run(**run)), daemon=True)
+    thread.start()
+    return link, body, feeder, runner, thread, result
+
+
+def test_silence_stops_the_robot_within_the_watchdog_time_and_it_resumes() -> None:
+    mind = ReflexMind()
+    link, body, feeder, runner, thread, _ = start(mind, duration=10.0)
+    try:
+        assert wait_until(lambda: any(a[1] < 0 for a in link.of("twist")), 5)
+        feeder.on.clear()
+        silent_at = time.monotonic()
+        assert wait_until(lambda: body.halted is not None, 3)
+        [stopped_at] = link.times("cancel")[:1]
+        assert stopped_at - silent_at <= CONFIG.watchdog_seconds + 0.5
+        assert link.of("twist")[-1] == (0.0, 0.0)
+        assert any("no percepts" in text for _t, text in runner.events)
+        moves_while_halted = len(link.of("twist"))
+        time.sleep(0.3)
+        assert len(link.of("twist")) == moves_while_halted
+        feeder.on.set()
+        assert wait_until(lambda: body.halted is None, 3)
+        assert wait_until(lambda: len(link.of("twist")) > moves_while_halted, 3)
+        assert any("resuming" in text for _t, text in runner.events)
+    finally:
+        runner.stop()
+        thread.join(5)
+        feeder.close()
+    assert link.of("twist")[-1] == (0.0, 0.0)
+
+
+class FailingMind(ReflexMind):
+    """Raises in decide while ``failing`` is set."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.failing = threading.Event()
+
+    def decide(self) -> list[Command]:
+        if self.failing.is_set():
+            raise RuntimeError("reasoner crashed")
+        return super().decide()
+
+
+def test_a_failing_mind_stops_the_robot_and_its_recovery_resumes_it() -> None:
+    mind = FailingMind()
+    config = BridgeConfig(
+        watchdog_seconds=1.0, angular_speed=3.0, cycle_period=0.02, max_mind_failures=1000
+    )
+    link, body, feeder, runner, thread, _ = start(mind, config, duration=10.0)
+    try:
+        assert wait_until(lambda: link.of("twist"), 5)
+        mind.failing.set()
+        assert wait_until(lambda: body.halted is not None, 3)
+        assert "reasoner crashed" in str(body.halted)
+        assert link.of("cancel")
+        mind.failing.clear()
+        assert wait_until(lambda: body.halted is None, 3)
+        assert any("answers again" in text for _t, text in runner.events)
+    finally:
+        runner.stop()
+        thread.join(5)
+        feeder.close()
+
+
+def test_a_mind_that_keeps_failing_ends_the_run_with_the_robot_stopped() -> None:
+    mind = FailingMind()
+    mind.failing.set()
+    link, _body, feeder, _runner, thread, result = start(mind, duration=10.0)
+    thread.join(5)
+    feeder.close()
+    assert result == [1]
+    assert link.of("twist")[-1] == (0.0, 0.0)
+    assert link.of("cancel")
+
+
+class SlowMind(ReflexMind):
+    def __init__(self, delay: float) -> None:
+        super().__init__()
+        self.delay = delay
+
+    def perceive(self, percepts: Sequence[Percept]) -> None:
+        time.sleep(self.delay)
+        super().perceive(percepts)
+
+
+def test_a_stalled_mind_trips_the_watchdog() -> None:
+    config = BridgeConfig(watchdog_seconds=5.0, mind_timeout=0.2, cycle_period=0.02)
+    link, body, feeder, runner, thread, _ = start(SlowMind(0.8), config, max_cycles=1)
+    thread.join(5)
+    feeder.close()
+    assert any("longer than 0.2 s" in text for _t, text in runner.events)
+    assert link.of("cancel")
+
+
+def test_text_reaches_a_mind_that_hears_and_outcomes_come_back() -> None:
+    mind = ReflexMind()
+    link = FakeLink()
+    body = RobotBody(link, CONFIG).start()
+    body.on_text("<obstacle --> [left]>. :|:\n<a --> b>.")
+    feeder = Feeder(body)
+    try:
+        code = BridgeRunner(body, mind).run(max_cycles=3)
+    finally:
+        feeder.close()
+    assert code == 0
+    assert mind.heard == ["<obstacle --> [left]>. :|:", "<a --> b>."]
+    assert [c for c, _o in mind.outcomes] == [Turn(-0.3)] * 3
+    assert all(o == Outcome.success() for _c, o in mind.outcomes)
+
+
+def test_text_input_is_found_by_name() -> None:
+    class Deaf:
+        def perceive(self, percepts: Sequence[Percept]) -> None: ...
+        def decide(self) -> list[Command]:
+            return []
+
+        def on_outcome(self, command: Command, outcome: Outcome) -> None: ...
+
+    assert text_input_of(Deaf()) is None  # type: ignore[arg-type]
+    mind = ReflexMind()
+    hear = text_input_of(mind)
+    assert hear is not None
+    hear("x")
+    assert mind.heard == ["x"]

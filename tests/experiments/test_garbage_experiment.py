@@ -1,0 +1,112 @@
+"""The garbage experiment: rates come from the world, the JSON and report have their shape."""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Sequence
+from pathlib import Path
+
+from robocog import cli
+from robocog.experiments.garbage import MindSpec, run_experiment
+from robocog.experiments.report import explain, write_json, write_report
+from robocog.robot import Command, Detection, Drop, GoTo, Gripper, Outcome, Percept, Pick
+from robocog.worlds.garbage import GarbageConfig, GarbageField
+
+
+class Sweeper:
+    """Picks the first thing it sees (once per instance), drops what it holds, moves on."""
+
+    def __init__(self, retry: bool) -> None:
+        self.retry = retry
+        self.seen: list[Detection] = []
+        self.holding = False
+        self.failed: set[str] = set()
+
+    def perceive(self, percepts: Sequence[Percept]) -> None:
+        self.seen = [p for p in percepts if isinstance(p, Detection)]
+        self.holding = any(isinstance(p, Gripper) and p.holding for p in percepts)
+
+    def decide(self) -> list[Command]:
+        if self.holding:
+            return [Drop()]
+        for d in self.seen:
+            if self.retry:
+                return [Pick(d.label)]
+            if d.instance not in self.failed:
+                return [Pick(d.instance or d.label)]
+        return [GoTo("next")]
+
+    def on_outcome(self, command: Command, outcome: Outcome) -> None:
+        if isinstance(command, Pick) and not outcome.ok:
+            self.failed.add(command.target)
+
+
+def _specs() -> list[MindSpec]:
+    return [
+        MindSpec("careful", lambda w, s: Sweeper(retry=False)),
+        MindSpec("stubborn", lambda w, s: Sweeper(retry=True)),
+        MindSpec("absent", lambda w, s: Sweeper(False), probe=lambda: "engine not built"),
+    ]
+
+
+def test_rates_are_read_off_the_world_and_the_same_seeds_meet_every_mind() -> None:
+    result = run_experiment(_specs(), runs=6, seed=2)
+    careful, stubborn, absent = (result.minds[n] for n in ("careful", "stubborn", "absent"))
+    assert [r.seed for r in careful.runs] == [r.seed for r in stubborn.runs]
+    assert len(careful.runs) == 6 and absent.runs == []
+    assert absent.unavailable == "engine not built" and not absent.ok
+    for m in (careful, stubborn):
+        assert m.success_rate == sum(r.collected for r in m.runs) / sum(r.objects for r in m.runs)
+        for r in m.runs:
+            missed = sum(r.causes.values())
+            assert missed + r.collected == r.objects
+    again = run_experiment(_specs()[:1], runs=6, seed=2)
+    assert again.minds["careful"].success_rate == careful.success_rate
+    # Only the stubborn mind keeps grasping at objects lying over.
+    assert sum(r.futile_picks for r in stubborn.runs) > sum(r.futile_picks for r in careful.runs)
+    assert any("lying over" in line for line in explain(result))
+
+
+def test_json_shape_and_report_files(tmp_path: Path) -> None:
+    result = run_experiment(_specs(), runs=2, seed=0, config=GarbageConfig(light="cloudy"))
+    write_json(tmp_path / "r.json", result)
+    doc = json.loads((tmp_path / "r.json").read_text())
+    assert doc["experiment"] == "garbage" and doc["light"] == "cloudy"
+    assert set(doc["minds"]) == {"careful", "stubborn", "absent"}
+    for name in ("careful", "stubborn"):
+        entry = doc["minds"][name]
+        assert 0.0 <= entry["success_rate"] <= 1.0
+        assert entry["runs"] == 2
+        assert set(entry["failures"]) == {"detection", "grasp", "decision", "time"}
+    assert doc["minds"]["absent"]["runs"] == 0
+    assert doc["minds"]["absent"]["success_rate"] is None
+    assert doc["minds"]["absent"]["status"] == "unavailable"
+    page = write_report(result, tmp_path / "report")
+    text = page.read_text()
+    assert "Table II" in text and "absent did not run" in text
+    assert (tmp_path / "report" / "success.png").exists()
+    assert (tmp_path / "report" / "trajectory_careful.png").exists()
+
+
+def test_the_command_writes_json_for_each_paper_mind(tmp_path: Path) -> None:
+    out = tmp_path / "json.json"
+    code = cli.main(
+        ["experiment", "garbage", "--runs", "1", "--rounds", "0", "--json", str(out), "--no-report"]
+    )
+    doc = json.loads(out.read_text())
+    assert set(doc["minds"]) == {"NARS", "BDI"}
+    for entry in doc["minds"].values():
+        assert entry["runs"] in (0, 1)
+        assert entry["success_rate"] is None or 0.0 <= entry["success_rate"] <= 1.0
+    assert code == (0 if all(e["status"] == "ok" for e in doc["minds"].values()) else 1)
+
+
+def test_bad_arguments_are_refused(capsys) -> None:  # noqa: ANN001 - pytest fixture
+    assert cli.main(["experiment", "garbage", "--runs", "0"]) == 2
+    assert cli.main(["experiment", "garbage", "--minds", "cortex", "--runs", "1"]) == 2
+    assert "unknown mind" in capsys.readouterr().err
+
+
+def test_a_field_layout_for_the_plot() -> None:
+    layout = GarbageField(seed=0).describe()
+    assert layout["size"] == 22.0 and len(layout["checkpoints"]) == 8  # type: ignore[arg-type]

@@ -1,0 +1,114 @@
+"""Seed 000 Section IV's encodings: percepts to Narsese events, operations to Commands."""
+
+from __future__ import annotations
+
+import math
+
+from hypothesis import given
+from hypothesis import strategies as st
+
+from robocog.minds.nars_encoding import (
+    OPERATIONS,
+    atom,
+    command_for,
+    detection_events,
+    direction,
+    encode,
+    goal_at,
+    gripper_event,
+    gripper_events,
+    obstacle_event,
+    place_event,
+    recall_questions,
+)
+from robocog.robot import Detection, Drop, Forward, GoTo, Gripper, Obstacle, Pick, Pose, Turn
+
+FOV = math.radians(60)
+
+
+def test_bearing_is_split_in_thirds_of_the_field_of_view() -> None:
+    assert direction(math.radians(25), FOV) == "left"
+    assert direction(math.radians(5), FOV) == "center"
+    assert direction(math.radians(-5), FOV) == "center"
+    assert direction(math.radians(-25), FOV) == "right"
+
+
+@given(st.floats(min_value=-math.pi, max_value=math.pi))
+def test_every_bearing_falls_in_exactly_one_third(bearing: float) -> None:
+    third = direction(bearing, FOV)
+    assert third in ("left", "center", "right")
+    assert (third == "left") == (bearing > FOV / 6)
+    assert (third == "right") == (bearing < -FOV / 6)
+
+
+def test_a_detection_becomes_position_see_and_instance_events() -> None:
+    d = Detection("bottle", math.radians(-20), 1.2, 0.8, "bottle3")
+    assert detection_events(d, FOV) == [
+        "<bottle --> [right]>. :|:",
+        "<bottle --> [see]>. :|:",
+        "<{bottle3} --> [see]>. :|:",
+    ]
+    assert detection_events(d, FOV, instances=False)[-1] == "<bottle --> [see]>. :|:"
+
+
+def test_obstacle_place_and_gripper_events() -> None:
+    assert obstacle_event(Obstacle("front", 1.0)) == "<obstacle --> [front]>. :|:"
+    assert obstacle_event(Obstacle("none", 2.0)) == "<obstacle --> [free]>. :|:"
+    assert place_event(Pose(1, 2, 0, "p3")) == "<({SELF} * {p3}) --> at>. :|:"
+    assert place_event(Pose(1, 2, 0, None)) is None
+    assert gripper_event(Gripper("cup1")) == "<gripper --> [hold]>. :|:"
+    assert gripper_event(Gripper(None)) == "<gripper --> [open]>. :|:"
+    assert gripper_event(False) == "<gripper --> [open]>. :|:"
+    assert gripper_events(True) == [
+        "<gripper --> [hold]>. :|:",
+        "<gripper --> [open]>. :|: {0.0 0.9}",
+    ]
+    assert gripper_events(Gripper(None))[1] == "<gripper --> [hold]>. :|: {0.0 0.9}"
+    assert goal_at("p2") == "<({SELF} * {p2}) --> at>! :|:"
+
+
+def test_a_frame_reports_the_most_confident_detections_first_and_at_most_three() -> None:
+    frame = [
+        Detection("cup", 0.0, 3.0, 0.4, "cup1"),
+        Detection("bottle", 0.0, 1.0, 0.9, "bottle2"),
+        Detection("cup", 0.0, 2.0, 0.5, "cup3"),
+        Detection("cup", 0.0, 2.0, 0.6, "cup4"),
+        Obstacle("none", 2.0),
+        Gripper(None),
+        Pose(0, 0, 0, "p1"),
+    ]
+    events = encode(frame, FOV)
+    instances = [e for e in events if e.startswith("<{")]
+    assert instances == [
+        "<{bottle2} --> [see]>. :|:",
+        "<{cup4} --> [see]>. :|:",
+        "<{cup3} --> [see]>. :|:",
+    ]
+    assert events[-4:] == [
+        "<obstacle --> [free]>. :|:",
+        "<gripper --> [open]>. :|:",
+        "<gripper --> [hold]>. :|: {0.0 0.9}",
+        "<({SELF} * {p1}) --> at>. :|:",
+    ]
+    assert recall_questions(frame) == ["<cup --> ?1>?", "<bottle --> ?1>?"]
+
+
+def test_names_become_atoms() -> None:
+    assert atom("water bottle") == "water_bottle"
+    assert atom("7up") == "n7up"
+
+
+def test_operations_map_to_commands() -> None:
+    places = ["p0", "p1", "start"]
+    assert OPERATIONS == ("^forward", "^left", "^right", "^goto", "^pick", "^drop")
+    assert command_for("^forward", None) == Forward(0.5)
+    assert isinstance(command_for("^left", None), Turn)
+    assert command_for("^left", None).angle > 0  # type: ignore[union-attr]
+    assert command_for("^right", None).angle < 0  # type: ignore[union-attr]
+    assert command_for("^goto", "({SELF} * (next * p1))", places) == GoTo("p1")
+    assert command_for("^goto", "({SELF} * {start})", places) == GoTo("start")
+    assert command_for("^goto", "({SELF} * next)", places) == GoTo("next")
+    assert command_for("^pick", "({SELF} * {bottle3})", places) == Pick("bottle3")
+    assert command_for("^pick", None, places) == Pick("trash")
+    assert command_for("^drop", None) == Drop()
+    assert command_for("^say", None) is None

@@ -1,0 +1,140 @@
+"""NarsMind's wiring: frames in, goals given, executions out, outcomes fed back."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import pytest
+
+from robocog.minds.nars_mind import NarsMind, NarsSettings, NotReady, background, probe
+from robocog.robot import Detection, Drop, GoTo, Gripper, Mind, Obstacle, Outcome, Pick, Pose
+
+PAPER_STATEMENTS = [
+    "<<(gripper --> [open]) &/ <({SELF} * (next * $P)) --> ^goto> =/> <({SELF} * {$P}) --> at>>.",
+    "<<(trash --> [see]) &/ ^pick> =/> <gripper --> [hold]>>.",
+    "<<(gripper --> [hold]) &/ ^drop> =/> G>.",
+    "<bottle --> trash>.",
+    "<cup --> trash>.",
+]
+
+
+class Recorder:
+    """A stand-in reasoner: keeps every input and fires scripted operations on cycles."""
+
+    def __init__(self, script: Callable[[Recorder], list[tuple[str, str | None]]]) -> None:
+        self.inputs: list[str] = []
+        self.ops: dict[str, Callable[[object], object]] = {}
+        self.script = script
+        self.output = None
+
+    def add_input(self, line: str) -> None:
+        if line.startswith("<<(bad"):
+            raise ValueError("line 1, column 3: unexpected")
+        self.inputs.append(line)
+
+    def register_operation(self, name: str, fn: Callable[[object], object]) -> None:
+        self.ops[name] = fn
+
+    def cycles(self, n: int) -> None:
+        for op, args in self.script(self):
+            self.ops[op](args)
+
+    def ask(self, question: str) -> None:
+        return None
+
+
+def _frame(place: str | None = "p0", holding: str | None = None, seen: bool = True) -> list:
+    frame: list = [Obstacle("none", 2.0), Gripper(holding), Pose(0, 0, 0, place)]
+    if seen:
+        frame.insert(0, Detection("bottle", 0.0, 1.0, 0.9, "bottle1"))
+    return frame
+
+
+def test_the_background_knowledge_is_the_papers_as_written() -> None:
+    lines = background()
+    statements = [ln for ln in lines if not ln.startswith("//")]
+    assert statements == PAPER_STATEMENTS
+    assert "// bottles and cups are both trash" in lines
+
+
+def test_setup_names_the_operations_and_loads_the_knowledge() -> None:
+    nar = Recorder(lambda r: [])
+    mind = NarsMind(["p0", "p1"], nar=nar)  # type: ignore[arg-type]
+    assert isinstance(mind, Mind)
+    assert set(nar.ops) == {"^forward", "^left", "^right", "^goto", "^pick", "^drop"}
+    assert nar.inputs[:6] == [
+        f"*setopname {i} {op}"
+        for i, op in enumerate(["^forward", "^left", "^right", "^goto", "^pick", "^drop"], 1)
+    ]
+    assert "*motorbabbling=false" in nar.inputs
+    assert [ln for ln in nar.inputs if ln.startswith("<")] == PAPER_STATEMENTS
+
+
+def test_a_line_the_reasoner_rejects_is_a_clear_not_ready() -> None:
+    with pytest.raises(NotReady, match="rejected"):
+        NarsMind([], knowledge=["<<(bad"], nar=Recorder(lambda r: []))  # type: ignore[arg-type]
+
+
+def test_frames_and_the_goal_go_in_and_executions_come_out() -> None:
+    def pick_when_seen(r: Recorder) -> list[tuple[str, str | None]]:
+        last = r.inputs[-1]
+        seen = "<bottle --> [see]>. :|:" in r.inputs[-12:]
+        return [("^pick", "({SELF} * {bottle1})")] if seen and last == "G! :|:" else []
+
+    nar = Recorder(pick_when_seen)
+    mind = NarsMind(["p0", "p1"], nar=nar)  # type: ignore[arg-type]
+    mind.perceive(_frame())
+    assert mind.decide() == [Pick("bottle1")]
+    assert "<({SELF} * {p0}) --> at>. :|:" in nar.inputs
+    assert "<{bottle1} --> [see]>. :|:" in nar.inputs
+    assert "<bottle --> ?1>?" in nar.inputs  # what is known about a bottle is recalled
+    mind.on_outcome(Pick("bottle1"), Outcome.failure("missed the grasp"))
+    assert nar.inputs[-2:] == ["<gripper --> [open]>. :|:", "<gripper --> [hold]>. :|: {0.0 0.9}"]
+    mind.on_outcome(Pick("bottle1"), Outcome.success())
+    assert nar.inputs[-2:] == ["<gripper --> [hold]>. :|:", "<gripper --> [open]>. :|: {0.0 0.9}"]
+    mind.on_outcome(Drop(), Outcome.success())
+    assert nar.inputs[-2] == "<gripper --> [open]>. :|:"
+
+
+def test_the_route_goal_comes_after_patience_and_goto_is_fed_back() -> None:
+    def goto_when_asked(r: Recorder) -> list[tuple[str, str | None]]:
+        wanted = [ln for ln in r.inputs[-3:] if ln.endswith("--> at>! :|:")]
+        return [("^goto", "({SELF} * (next * p1))")] if wanted else []
+
+    nar = Recorder(goto_when_asked)
+    mind = NarsMind(["p0", "p1"], NarsSettings(patience=2), nar=nar)  # type: ignore[arg-type]
+    commands = []
+    for _ in range(3):
+        mind.perceive(_frame(seen=False))
+        commands.append(mind.decide())
+    assert commands == [[], [], [GoTo("p1")]]
+    # A failed command is no progress: the route goal keeps being given.
+    mind.on_outcome(GoTo("p1"), Outcome.failure("blocked"))
+    mind.perceive(_frame(seen=False))
+    assert mind.decide() == [GoTo("p1")]
+    assert "<({SELF} * {p1}) --> at>! :|:" in nar.inputs
+    mind.on_outcome(GoTo("p1"), Outcome.success())
+    assert nar.inputs[-1] == "<({SELF} * {p1}) --> at>. :|:"
+    assert mind.next_place() == "start"
+    mind.new_round()
+    assert mind.next_place() == "p0"
+
+
+def test_no_route_goal_while_holding() -> None:
+    nar = Recorder(lambda r: [])
+    mind = NarsMind(["p0"], NarsSettings(patience=0), nar=nar)  # type: ignore[arg-type]
+    mind.perceive(_frame(holding="bottle1", seen=False))
+    mind.decide()
+    assert not any(ln.endswith("--> at>! :|:") for ln in nar.inputs)
+
+
+def test_with_the_real_reasoner_a_seen_bottle_is_picked() -> None:
+    why = probe()
+    if why:
+        pytest.skip(f"the reasoner cannot drive the robot yet: {why}")
+    mind = NarsMind(["p0", "p1"])
+    commands = []
+    for _ in range(10):
+        mind.perceive(_frame())
+        commands += mind.decide()
+    assert Pick("bottle1") in commands or Pick("trash") in commands

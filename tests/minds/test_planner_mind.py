@@ -1,0 +1,75 @@
+"""PlannerMind on the tabletop: plan from tags and sentences, execute, replan on failure."""
+
+from __future__ import annotations
+
+import pytest
+
+from robocog.minds.planner_mind import PlannerMind, command_for_step
+from robocog.planning.planner import Step
+from robocog.planning.thesis import experiment
+from robocog.robot import PickUp, PutDown, Stack, Unstack
+from robocog.robot.loop import Loop
+from robocog.worlds.tabletop import TabletopWorld
+
+
+def run(world: TabletopWorld, mind: PlannerMind, cycles: int = 100) -> int:
+    return Loop(world, mind).run(cycles, until=lambda: not mind.busy)
+
+
+def test_steps_become_manipulator_commands() -> None:
+    assert command_for_step(Step("pickup", ("A",))) == PickUp("A")
+    assert command_for_step(Step("putdown", ("A",))) == PutDown("A")
+    assert command_for_step(Step("stack", ("A", "B"))) == Stack("A", "B")
+    assert command_for_step(Step("unstack", ("A", "B"))) == Unstack("A", "B")
+    with pytest.raises(ValueError):
+        command_for_step(Step("juggle", ("A",)))
+
+
+def test_table_5_2_is_planned_from_tags_and_sentences_and_reached() -> None:
+    exp = experiment("5.2")
+    world = TabletopWorld()
+    mind = PlannerMind()
+    record = mind.request(exp.request, facts=exp.facts)
+    run(world, mind)
+    assert record.status == "reached"
+    assert record.executed == list(exp.plan)
+    assert all(world.holds(fact) for fact in record.goal)
+    assert record.replans == 0 and record.first_plan is not None
+    assert record.first_plan.optimal
+
+
+def test_a_failed_grasp_is_replanned_and_the_goal_still_reached() -> None:
+    exp = experiment("5.4")
+    world = TabletopWorld(fail_grasps={1, 2, 4})
+    mind = PlannerMind()
+    record = mind.request(exp.request, facts=exp.facts)
+    run(world, mind)
+    assert record.status == "reached"
+    assert record.replans == 3
+    assert len(record.failures) == 3 and all("slipped" in f for f in record.failures)
+    assert all(world.holds(fact) for fact in record.goal)
+    assert world.failed_grasps == 3
+
+
+def test_the_mind_gives_up_after_too_many_failures() -> None:
+    exp = experiment("5.2")
+    world = TabletopWorld(fail_grasps=range(1, 50))
+    mind = PlannerMind(max_replans=3)
+    record = mind.request(exp.request, facts=exp.facts)
+    run(world, mind)
+    assert record.status == "failed" and "replans" in record.message
+
+
+def test_unreadable_sentences_fail_the_request_with_the_reason() -> None:
+    mind = PlannerMind()
+    record = mind.request("Put the clamp somewhere nice.")
+    assert record.status == "failed" and record.message
+    assert mind.decide() == []
+
+
+def test_an_unknown_goal_object_cannot_be_reached() -> None:
+    world = TabletopWorld()
+    mind = PlannerMind(facts="The table is a fixed object.")
+    record = mind.request("The BettClamp is on the Unicorn. The Unicorn is on the BettClamp.")
+    run(world, mind)
+    assert record.status == "failed"
