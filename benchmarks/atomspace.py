@@ -35,6 +35,7 @@ from collections.abc import Callable
 
 from robocog.atomspace import AtomSpace, Link, Node, query
 from robocog.atomspace.persist import load, store
+from robocog.atomspace.space import bulk
 
 KINDS = ("first", "second", "join-first", "join-last")
 
@@ -156,8 +157,9 @@ def million(target: int = 1_000_000) -> list[tuple[str, float, float, int]]:
     space = AtomSpace()
     on = Node("PredicateNode", "on")
     concepts = [Node("ConceptNode", f"b{i}") for i in range(nblocks)]
-    for x, y in pairs_l:
-        space.add(Link("EvaluationLink", on, Link("ListLink", concepts[x], concepts[y])))
+    with bulk():
+        for x, y in pairs_l:
+            space.add(Link("EvaluationLink", on, Link("ListLink", concepts[x], concepts[y])))
     rows.append(("built from Python", time.perf_counter() - t0, rss_mb() - m0, len(space)))
 
     with tempfile.TemporaryDirectory() as tmp:

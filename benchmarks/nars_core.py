@@ -8,6 +8,7 @@ are measured the same way (``wait4``). Prints both, the answers each found and t
 
     python benchmarks/nars_core.py                        # 1,000 links, 100 questions
     python benchmarks/nars_core.py --statements 10000 --depth 2 --capacity 30000
+    python benchmarks/nars_core.py --stream 1000000   # random valid/invalid lines, events, goals
 """
 
 from __future__ import annotations
@@ -77,6 +78,78 @@ def answers(out: str, questions: list[str]) -> int:
     return sum(1 for q in questions if q[:-1] in found)
 
 
+def random_line(rng: random.Random, names: int) -> str:
+    """One line of a random stream: beliefs, events, goals, questions, junk, cycles."""
+    k = rng.random()
+
+    def n() -> str:
+        return f"n{rng.randrange(names)}"
+
+    if k < 0.35:
+        return f"<{n()} --> {n()}>. %{rng.random():.2f}%"
+    if k < 0.6:
+        return f"<{n()} --> [{n()}]>. :|:"
+    if k < 0.65:
+        return f"<({{SELF}} * {n()}) --> ^go>. :|:"
+    if k < 0.7:
+        return f"<(<{n()} --> [on]> &/ ^go) =/> <{n()} --> [on]>>."
+    if k < 0.75:
+        return f"<{n()} --> [on]>! :|:"
+    if k < 0.8:
+        return f"<{n()} --> ?1>?"
+    if k < 0.9:
+        return rng.choice(["<a -->", "((x)", "<a --> b>. {9 9}", "%%%", "<<a --> b>", "*nope"])
+    return str(rng.randrange(3))
+
+
+def stream(count: int, seed: int, capacity: int) -> int:
+    """Feed ``count`` random lines in this process; report memory and cycle-time bounds."""
+    import resource
+    import statistics
+
+    sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "src"))
+    from robocog.nars import NAR, NarseseError
+
+    rng = random.Random(seed)
+    nar = NAR(seed=seed, **({"concepts_max": capacity} if capacity else {}))
+    window = min(10_000, max(1, count // 10))
+    first: list[float] = []
+    last: list[float] = []
+    errors = 0
+    biggest = 0
+    t0 = time.perf_counter()
+    for i in range(count):
+        line = random_line(rng, 100_000)
+        t = time.perf_counter()
+        try:
+            nar.add_input(line)
+        except NarseseError:
+            errors += 1
+        dt = time.perf_counter() - t
+        if i < window:
+            first.append(dt)
+        elif i >= count - window:
+            last.append(dt)
+        biggest = max(biggest, len(nar.memory))
+        if (i + 1) % 100_000 == 0:
+            rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+            print(
+                f"{i + 1:>9} lines  {len(nar.memory):>5} concepts  peak RSS {rss:.0f} MB",
+                flush=True,
+            )
+
+    def p99(xs: list[float]) -> float:
+        return statistics.quantiles(xs, n=100)[98] * 1000 if len(xs) >= 100 else max(xs) * 1000
+
+    rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+    print(f"lines {count}, rejected {errors}, wall {time.perf_counter() - t0:.1f} s")
+    print(f"concepts max {biggest} (capacity {nar.memory.capacity}), peak RSS {rss:.0f} MB")
+    print(
+        f"p99 time per line: first {window} {p99(first):.2f} ms, last {window} {p99(last or first):.2f} ms"
+    )
+    return 0 if biggest <= nar.memory.capacity else 1
+
+
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--statements", type=int, default=1000)
@@ -88,7 +161,10 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--timeout", type=float, default=600.0)
     ap.add_argument("--no-ona", action="store_true", help="run robocog only")
+    ap.add_argument("--stream", type=int, default=0, help="random-stream run of N lines instead")
     args = ap.parse_args(argv)
+    if args.stream:
+        return stream(args.stream, args.seed, args.capacity)
 
     statements, questions = taxonomy(args.statements, args.questions, args.depth, args.seed)
     lines = ["*volume=0", *statements]

@@ -264,4 +264,4 @@ def test_an_atomic_plan_runs_without_interleaving() -> None:
 +!sub <- .print(sub).
 +!b <- .print(b1); .print(b2)."""
     assert run(src) == ["a1", "sub", "a2", "b1", "b2"]
-    assert run(src.replace("@pa[atomic] ", "")) == ["a1", "b1", "b2", "sub", "a2"]
+    assert run(src.replace("@pa[atomic] ", "")) == ["a1", "b1", "sub", "b2", "a2"]

@@ -7,7 +7,7 @@ import pytest
 from robocog.minds.planner_mind import PlannerMind, command_for_step
 from robocog.planning.planner import Step
 from robocog.planning.thesis import experiment
-from robocog.robot import PickUp, PutDown, Stack, Unstack
+from robocog.robot import Outcome, PickUp, PutDown, Stack, Unstack
 from robocog.robot.loop import Loop
 from robocog.worlds.tabletop import TabletopWorld
 
@@ -73,3 +73,24 @@ def test_an_unknown_goal_object_cannot_be_reached() -> None:
     record = mind.request("The BettClamp is on the Unicorn. The Unicorn is on the BettClamp.")
     run(world, mind)
     assert record.status == "failed"
+
+
+def test_the_gripper_percept_corrects_the_scene_before_replanning() -> None:
+    exp = experiment("5.2")
+    world = TabletopWorld()
+    mind = PlannerMind()
+    record = mind.request(exp.request, facts=exp.facts)
+    mind.perceive(world.percepts())
+    command = mind.decide()[0]
+    assert command == PickUp("BettClamp")
+    assert world.execute(command).ok
+    # the arm took the clamp but its report was lost: the mind hears a failure
+    mind.on_outcome(command, Outcome.failure("no answer from the arm"))
+    assert record.status == "planning"
+    assert mind.scene is not None and mind.scene.held is None
+    mind.perceive(world.percepts())  # the gripper says it holds the clamp
+    assert mind.decide() == [Stack("BettClamp", "workbench")]
+    assert mind.scene.held == "BettClamp"
+    run(world, mind)
+    assert record.status == "reached" and record.replans == 1
+    assert all(world.holds(fact) for fact in record.goal)

@@ -81,7 +81,7 @@ def test_sentence_parts() -> None:
 
 @pytest.mark.parametrize(
     ("text", "column"),
-    [("<a --> b", 9), ("<a --> b>. {2 0.9}", 12), ("<a -> b>.", 4), ("(a & b | c).", 8)],
+    [("<a --> b", 9), ("<a --> b>. {2 0.9}", 12), ("<a -> b>.", 5), ("(a & b | c).", 8)],
 )
 def test_errors_name_the_column(text: str, column: int) -> None:
     with pytest.raises(NarseseError) as info:

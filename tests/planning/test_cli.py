@@ -87,3 +87,17 @@ def test_no_plan_exits_with_one(capsys) -> None:
         capsys,
     )
     assert code == 1 and "no plan" in out
+
+
+@pytest.mark.skipif(not (BLOCKS / "domain.pddl").exists(), reason="IPC blocks tasks absent")
+def test_scene_written_as_pddl_and_planned_again(capsys, tmp_path: Path) -> None:
+    out_file = tmp_path / "scene.pddl"
+    code, out, _ = _run(["--thesis", "5.4", "--write-pddl", str(out_file), "--json"], capsys)
+    first = json.loads(out)
+    assert code == 0 and out_file.exists()
+    domain = tmp_path / "domain.pddl"
+    domain.write_text((BLOCKS / "domain.pddl").read_text())
+    code, out, _ = _run(["--pddl", str(domain), str(out_file), "--json"], capsys)
+    again = json.loads(out)
+    # the bins and the workbench are all "the table" in the blocks world: still 4 actions
+    assert code == 0 and again["length"] == first["length"] == 4

@@ -115,3 +115,27 @@ def test_unknown_predicate_in_a_problem_is_reported() -> None:
     )
     with pytest.raises(PDDLError, match="unknown predicate"):
         ground(domain, problem)
+
+
+GRIPPER = """(define (domain gripper) (:requirements :strips)
+ (:predicates (room ?r) (ball ?b) (at-robby ?r) (at ?b ?r) (free) (carry ?b))
+ (:action move :parameters (?from ?to) :precondition (and (room ?from) (room ?to) (at-robby ?from))
+  :effect (and (at-robby ?to) (not (at-robby ?from))))
+ (:action pick :parameters (?b ?r) :precondition (and (ball ?b) (room ?r) (at ?b ?r) (at-robby ?r) (free))
+  :effect (and (carry ?b) (not (at ?b ?r)) (not (free))))
+ (:action drop :parameters (?b ?r) :precondition (and (ball ?b) (room ?r) (carry ?b) (at-robby ?r))
+  :effect (and (at ?b ?r) (free) (not (carry ?b)))))"""
+
+GRIPPER_TASK = """(define (problem g) (:domain gripper) (:objects ra rb b1 b2)
+ (:init (room ra) (room rb) (ball b1) (ball b2) (at-robby ra) (at b1 ra) (at b2 ra) (free))
+ (:goal (and (at b1 rb) (at b2 rb))))"""
+
+
+def test_another_strips_domain_is_planned_optimally_without_the_blocks_bound() -> None:
+    from robocog.planning.heuristics import BlocksView
+
+    task = ground(read_domain(GRIPPER), read_problem(GRIPPER_TASK))
+    assert not BlocksView.fits(task)
+    best = solve_task(task, "astar")
+    assert best.optimal and best.length == solve_task(task, "first").length == 7
+    assert best.lower_bound == 0

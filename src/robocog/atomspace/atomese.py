@@ -278,8 +278,11 @@ def load(
     The whole text is parsed first, so a malformed text leaves ``space`` unchanged.
     Returns the top-level atoms (as added to the space).
     """
-    parsed = parse(text, source=source, env=env)
-    return add_parsed(parsed, space)
+    from robocog.atomspace.space import bulk
+
+    with bulk():
+        parsed = parse(text, source=source, env=env)
+        return add_parsed(parsed, space)
 
 
 def add_parsed(parsed: Parsed, space: AtomSpace) -> list[Atom]:

@@ -18,7 +18,7 @@ from pathlib import Path
 from robocog.atomspace import types as _t
 from robocog.atomspace.atomese import read_atom, write
 from robocog.atomspace.atoms import Atom, Link, Node, _raw_link, _raw_node
-from robocog.atomspace.space import AtomSpace
+from robocog.atomspace.space import AtomSpace, bulk
 from robocog.atomspace.values import (
     FloatValue,
     LinkValue,
@@ -117,28 +117,41 @@ class SQLiteStore:
         self, space: AtomSpace, chosen: Iterable[Atom], ids: dict[Atom, int], fresh: bool
     ) -> int:
         db = self._db
-        order: list[Atom] = []
-        seen: set[Atom] = set()
-        for a in chosen:
-            _postorder(a, seen, order)
+        order = _children_first(space, chosen) if fresh and chosen is space else None
+        if order is None:
+            order = []
+            seen: set[Atom] = set()
+            for a in chosen:
+                _postorder(a, seen, order)
         if fresh:
             rows = []
+            append = rows.append
             for i, a in enumerate(order, start=1):
                 ids[a] = i
                 if a.__class__ is Node:
-                    rows.append((i, a[0], a[1], None))
+                    append((i, a[0], a[1], None))
                 else:
-                    rows.append((i, a[0], None, " ".join(str(ids[x]) for x in a[1])))
+                    append((i, a[0], None, " ".join([str(ids[x]) for x in a[1]])))
             db.executemany("INSERT INTO atoms VALUES (?, ?, ?, ?)", rows)
         else:
             for a in order:
                 ids[a] = self._upsert(a, ids)
         tv_rows = []
         val_rows = []
-        for a in order:
-            tv = space.get_tv_or_none(a)
-            if tv is not None:
-                tv_rows.append((ids[a], tv.strength, tv.confidence))
+        if space.parent is None:
+            # a flat space: read its value tables directly instead of asking per atom
+            tv_items = [(a, tv) for a, tv in space._tv.items() if a in ids]
+            val_atoms = [a for a in space._values if a in ids]
+        else:
+            tv_items = []
+            for a in order:
+                tv = space.get_tv_or_none(a)
+                if tv is not None:
+                    tv_items.append((a, tv))
+            val_atoms = order
+        for a, tv in tv_items:
+            tv_rows.append((ids[a], tv.strength, tv.confidence))
+        for a in val_atoms:
             for key in space.keys(a):
                 v = space.get_value(a, key)
                 if v is None:
@@ -173,6 +186,10 @@ class SQLiteStore:
     def load(self, space: AtomSpace | None = None, types: Iterable[str] | None = None) -> AtomSpace:
         """Load every atom (or only the atoms of ``types``, with their outgoing atoms)
         into ``space`` (a new one by default) and return it."""
+        with bulk():
+            return self._load(space, types)
+
+    def _load(self, space: AtomSpace | None, types: Iterable[str] | None) -> AtomSpace:
         if space is None:
             space = AtomSpace()
         db = self._db
@@ -215,6 +232,21 @@ class SQLiteStore:
     def count(self) -> int:
         """Number of atoms stored."""
         return int(self._db.execute("SELECT COUNT(*) FROM atoms").fetchone()[0])
+
+
+def _children_first(space: AtomSpace, atoms: Iterable[Atom]) -> list[Atom] | None:
+    """The atoms in their stored order if every link comes after its outgoing atoms
+    (true of a flat space, which inserts children first), else None."""
+    order = list(atoms)
+    seen: set[Atom] = set()
+    add = seen.add
+    for a in order:
+        if a.__class__ is Link:
+            for x in a[1]:
+                if x not in seen:
+                    return None
+        add(a)
+    return order
 
 
 def _postorder(a: Atom, seen: set[Atom], order: list[Atom]) -> None:

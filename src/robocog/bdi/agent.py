@@ -467,14 +467,21 @@ class Agent:
                 option = self.select_option(self.applicable_options(ev))
             else:
                 lit = trig.literal
+                trail: list = []
                 for plan in cands:
                     s: dict = {}
-                    trail: list = []
-                    if unify(plan.trigger.literal, lit, s, trail) and (
-                        plan.context is None or self._context(plan, s, trail)
-                    ):
-                        option = (plan, s)
-                        break
+                    if unify(plan.trigger.literal, lit, s, trail):
+                        ctx = plan.context
+                        if ctx is None:
+                            option = (plan, s)
+                            break
+                        try:
+                            if holds(self, ctx, s, trail):
+                                option = (plan, s)
+                                break
+                        except (ActionError, EvalError, RecursionError) as exc:
+                            self.warn(f"error in the context of {plan.trigger!r}: {exc}")
+                    trail.clear()
         if option is None:
             if ev.intention is None and trig.kind == P.BELIEF:
                 return False

@@ -121,7 +121,7 @@ class BeliefBase:
 
     def _take_annots(self, key: tuple, k: object, old: Literal, annots: tuple) -> Literal | None:
         """Remove ``annots`` from a stored fact; drop it when no source is left."""
-        if not annots:
+        if not annots or old.annots == annots:
             self._del(key, k)
             return old
         keep = tuple(a for a in old.annots if a not in annots)
@@ -246,6 +246,42 @@ class BeliefBase:
                 if unify(pattern, head, s, trail):
                     yield from solve(agent, body, s, trail)
                 undo(s, trail, mark)
+
+    def first(self, pattern: Literal, s: dict, trail: list) -> bool | None:
+        """The first fact unifying with ``pattern`` (bindings kept in ``s``): True or
+        False, or ``None`` when the predicate has rules or non-ground facts (use
+        :meth:`query` then)."""
+        key = (pattern.functor, len(pattern.args), pattern.neg)
+        bucket = self._index.get(key)
+        if not bucket:
+            return False
+        if self._mixed.get(key):
+            return None
+        if pattern.ground and not pattern.annots:
+            sub = self._first.get(key)
+            if pattern.args:
+                sub = sub.get(pattern.args[0]) if sub else None
+                return bool(sub) and pattern.args in sub
+            return pattern.args in bucket
+        vals = bucket.values()
+        if pattern.args:
+            a0 = pattern.args[0]
+            while a0.__class__ is Var:
+                v = s.get(a0)
+                if v is None:
+                    break
+                a0 = v
+            if a0.__class__ is not Var and is_ground(a0):
+                sub = self._first[key].get(a0)
+                if not sub:
+                    return False
+                vals = sub.values()
+        mark = len(trail)
+        for b in reversed(vals):
+            if unify(pattern, b, s, trail):
+                return True
+            undo(s, trail, mark)
+        return False
 
     def __iter__(self) -> Iterator[Literal]:
         """All facts (not rules), predicate by predicate, newest first."""

@@ -97,6 +97,10 @@ def holds(agent: Agent, f: Term, s: dict, trail: list) -> bool:
             undo(s, trail, mark)
             return False
         return True
+    elif c is Literal and f.functor[0] != ".":
+        got = agent.bb.first(f, s, trail)
+        if got is not None:
+            return got
     for _ in solve(agent, f, s, trail):
         return True
     return False
@@ -105,9 +109,30 @@ def holds(agent: Agent, f: Term, s: dict, trail: list) -> bool:
 def relation(f: Rel, s: dict, trail: list) -> bool:
     """Evaluate a relational expression, binding for ``=`` and ``=..``."""
     op = f.op
+    left = f.left
+    right = f.right
+    lc = left.__class__
+    if lc is Var:
+        left = deref(left, s)
+        lc = left.__class__
+    rc = right.__class__
+    if rc is Var:
+        right = deref(right, s)
+        rc = right.__class__
+    if (lc is int or lc is float) and (rc is int or rc is float):
+        if op == ">":
+            return left > right
+        if op == "<":
+            return left < right
+        if op == ">=":
+            return left >= right
+        if op == "<=":
+            return left <= right
+        if op == "==":
+            return left == right
     try:
-        left = evaluate(f.left, s)
-        right = evaluate(f.right, s)
+        left = evaluate(left, s)
+        right = evaluate(right, s)
     except EvalError as exc:
         raise ActionError(str(exc)) from exc
     if op == "=":

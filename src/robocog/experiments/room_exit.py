@@ -94,8 +94,8 @@ def build_mind(name: str) -> tuple[Mind, QboPerception]:
 
         try:
             return qbo_bdi_mind(plans_source())
-        except ImportError as exc:  # the interpreter is not part of this build
-            raise MindUnavailable(f"the AgentSpeak interpreter cannot be loaded: {exc}") from exc
+        except (ImportError, FileNotFoundError) as exc:  # not part of this build
+            raise MindUnavailable(f"the AgentSpeak mind cannot be built: {exc}") from exc
     raise ValueError(f"unknown mind {name!r}")
 
 

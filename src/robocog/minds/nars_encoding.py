@@ -96,12 +96,16 @@ def encode(
     instances: bool = True,
     max_detections: int = 3,
 ) -> list[str]:
-    """All events of one frame, the most confident detections first.
+    """All events of one frame: the place first, then the most confident detections,
+    then the lidar and the gripper.
 
-    At most ``max_detections`` objects are reported per frame, as a detector keeps its
-    best boxes, so a cluttered frame does not flood the reasoner.
+    The place comes first so that what is seen there follows it in time, which is what
+    lets the reasoner form ``<<({SELF} * {p3}) --> at> =/> <trash --> [see]>>``. At most
+    ``max_detections`` objects are reported per frame, as a detector keeps its best
+    boxes, so a cluttered frame does not flood the reasoner.
     """
     detections: list[Detection] = []
+    place: list[str] = []
     rest: list[str] = []
     for p in percepts:
         if isinstance(p, Detection):
@@ -111,26 +115,45 @@ def encode(
         elif isinstance(p, Pose):
             e = place_event(p)
             if e:
-                rest.append(e)
+                place.append(e)
         elif isinstance(p, Gripper):
             rest.extend(gripper_events(p))
     detections.sort(key=lambda d: (-d.confidence, d.distance))
-    out: list[str] = []
+    seen: list[str] = []
     for d in detections[:max_detections]:
-        out.extend(detection_events(d, fov, instances))
-    return out + rest
+        seen.extend(detection_events(d, fov, instances))
+    return place + seen + rest
 
 
-def recall_questions(percepts: Iterable[Percept]) -> list[str]:
-    """``<bottle --> ?1>?`` for each label in view: the reasoner recalls what it knows
-    about what it sees.
-
-    Answering primes the concept of the answer (ONA's question priming), so knowledge
-    given long ago, such as ``<bottle --> trash>``, takes part in the inference about
-    the new sighting; without it a reasoner busy with many events lets it fade.
-    """
-    labels = dict.fromkeys(atom(p.label) for p in percepts if isinstance(p, Detection))
+def recall_questions(percepts: Iterable[Percept], max_detections: int = 3) -> list[str]:
+    """``<bottle --> ?1>?`` for each label reported this frame: what is ``bottle``?"""
+    detections = sorted(
+        (p for p in percepts if isinstance(p, Detection)), key=lambda d: (-d.confidence, d.distance)
+    )
+    labels = dict.fromkeys(atom(d.label) for d in detections[:max_detections])
     return [f"<{label} --> ?1>?" for label in labels]
+
+
+_KIND = re.compile(r"^<([A-Za-z0-9_]+) --> ([A-Za-z0-9_]+)>$")
+
+
+def seen_as(question: str, answer: str | None, f: float, c: float) -> str | None:
+    """The sighting of a label reported under what the reasoner says the label is.
+
+    Asked ``<bottle --> ?1>?`` and answering ``<bottle --> trash>`` with (f, c), the
+    vision channel also reports ``<trash --> [see]>. :|:`` with frequency f and
+    confidence f * c * 0.9 (the answer's weight on an input event). The category comes
+    from the reasoner's own knowledge, not from the channel; only a plain atom counts
+    (``<bottle --> [left]>`` or a compound is not a kind of thing).
+    """
+    if answer is None:
+        return None
+    m = _KIND.match(answer.strip())
+    q = _KIND.match(question.replace(" ?1>?", " x>").strip())
+    if not m or not q or m.group(1) != q.group(1) or m.group(2) == m.group(1):
+        return None
+    conf = round(max(0.0, min(0.99, f * c * 0.9)), 6)
+    return f"<{m.group(2)} --> [see]>. :|: {{{f:.6f} {conf:.6f}}}"
 
 
 def goal_at(place: str) -> str:

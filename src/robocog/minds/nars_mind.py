@@ -8,6 +8,11 @@ gripper holding or still open, the robot at the place it went to), so a pick tha
 fails leaves its anticipated ``<gripper --> [hold]>`` unfulfilled and the hypothesis
 that predicted it loses evidence (Section V.D).
 
+For each label in view the mind asks the reasoner what it is (``<bottle --> ?1>?``) and
+reports the sighting under the answer as well (``<trash --> [see]>``), so the category
+comes from the reasoner's own knowledge yet enters as an event it can learn from; a
+sighting it would only derive is soon crowded out of its attention.
+
 The operator's knowledge of the checkpoints (Section V.C, step 4) enters as a goal:
 when ``patience`` frames have passed without an operation that succeeded (nothing
 executed, or picks and drops that failed), the mind also asks it to be at the next
@@ -33,6 +38,7 @@ from robocog.minds.nars_encoding import (
     goal_at,
     gripper_events,
     recall_questions,
+    seen_as,
 )
 from robocog.robot.commands import Command, Drop, GoTo, Outcome, Pick
 from robocog.robot.percepts import Detection, Gripper, Obstacle, Percept, Pose
@@ -61,7 +67,7 @@ class NarsSettings:
     cycles_per_frame: int = 10  # thinking time per frame, also after an execution
     patience: int = 2  # frames without a successful operation before the route goal
     instances: bool = True
-    recall: bool = True  # ask what a seen label is, priming what is known about it
+    recall: bool = True  # ask what a seen label is; report the sighting under the answer
     max_detections: int = 3
     fov: float = DEFAULT_FOV
     motor_babbling: bool = False
@@ -91,6 +97,7 @@ class NarsMind:
             self.nar.output = self.lines.append
         self._executed: list[tuple[str, str | None]] = []
         self._frame: list[str] = []
+        self._questions: list[str] = []
         self._idle = 0
         self._last_place: str | None = None
         self._holding = False
@@ -132,8 +139,10 @@ class NarsMind:
                 self._last_place = p.place
             elif isinstance(p, Gripper):
                 self._holding = p.holding is not None
-        self._frame = recall_questions(percepts) if self.settings.recall else []
-        self._frame += encode(
+        self._questions = (
+            recall_questions(percepts, self.settings.max_detections) if self.settings.recall else []
+        )
+        self._frame = encode(
             percepts,
             self.settings.fov,
             self.settings.instances,
@@ -142,8 +151,18 @@ class NarsMind:
 
     def decide(self) -> list[Command]:
         """Feed the frame and the goals, cycle, and return what the reasoner executed."""
-        for line in self._frame:
+        place = [ln for ln in self._frame if ln.startswith("<({SELF} * ")]
+        for line in place:
             self._input(line)
+        for question in self._questions:  # what is seen, as what it is, right after where
+            answer = self.ask(question)
+            if answer is not None:
+                event = seen_as(question, *answer)
+                if event is not None:
+                    self._input(event)
+        for line in self._frame:
+            if line not in place:
+                self._input(line)
         self._input("G! :|:")
         if self._idle >= self.settings.patience and not self._holding:
             nxt = self.next_place()

@@ -153,8 +153,10 @@ class PlannerMind:
             except (PlanningError, ValueError) as exc:
                 record.status, record.message = "failed", f"learning phase: {exc}"
                 return []
-        if record.status == "planning" and not self._plan(record):
-            return []
+        if record.status == "planning":
+            self._sync_hand()
+            if not self._plan(record):
+                return []
         if self._next >= len(self._steps):
             record.status = "reached"
             return []
@@ -189,6 +191,25 @@ class PlannerMind:
             record.status, record.message = "failed", f"gave up after {record.replans} replans"
             return
         record.status = "planning"
+
+    def _sync_hand(self) -> None:
+        """Trust the gripper over the scene about what the hand holds before planning.
+
+        A grasp reported as failed may still have taken the object, and a slip may drop
+        one; the gripper percept says which, so the new plan starts from the real hand.
+        """
+        assert self.scene is not None
+        if self.holding == self.scene.held or not self.seen:
+            return
+        scene = self.scene.copy()
+        if self.holding is None:
+            scene.held = None  # dropped: it rests where it fell (not on anything known)
+        elif self.holding in scene.objects and self.holding not in scene.on.values():
+            scene.on.pop(self.holding, None)
+            scene.held = self.holding
+        else:
+            return
+        self.scene = scene
 
     def _plan(self, record: RequestRecord) -> bool:
         assert self.scene is not None

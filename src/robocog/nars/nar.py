@@ -82,6 +82,9 @@ class NAR(SensorimotorMixin, DecisionMixin):
         self.concept_threshold = 0.0
         self.matched_total = 0
         self.op_names: list[str] = list(DEFAULT_OPERATIONS)
+        for name, fn in list(self.operations.items()):
+            del self.operations[name]
+            self.register_operation(name, fn)  # type: ignore[arg-type]
         self.process_id = 0
         self.stats = {"inputs": 0, "derived": 0, "selected": 0, "answers": 0}
         self.pending_questions: dict[Term, None] = {}
@@ -110,11 +113,20 @@ class NAR(SensorimotorMixin, DecisionMixin):
         """Make ``name`` (e.g. ``^pick``) executable, calling ``fn(argument)`` when it is."""
         if not name.startswith("^"):
             raise ValueError(f"operation names start with '^': {name!r}")
-        self.operations[name] = fn
         if name not in self.op_names:
-            if len(self.op_names) >= self.config.operations_max:
-                raise ValueError("too many operations")
-            self.op_names.append(name)
+            # take the first of ONA's default (no-op) slots nobody registered yet
+            free = [
+                i
+                for i, n in enumerate(self.op_names)
+                if n in DEFAULT_OPERATIONS and n not in self.operations
+            ]
+            if free:
+                self.op_names[free[0]] = name
+            elif len(self.op_names) < self.config.operations_max:
+                self.op_names.append(name)
+            else:
+                raise ValueError(f"no free operation slot for {name}")
+        self.operations[name] = fn
 
     def _print(self, line: str) -> None:
         if self.output is not None:

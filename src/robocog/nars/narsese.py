@@ -31,6 +31,9 @@ truth: TRUTH_BRACES | TRUTH_PERCENT
 
 ?term: name
      | "<" term COPULA term ">"          -> statement
+     | "<" term (INFIX term)+ COPULA term ">"  -> statement_infix
+     | "<" term (INFIX term)+ ">"        -> infix
+     | "<" term ">"
      | "(" term COPULA term ")"          -> statement
      | "(" term (INFIX term)+ ")"        -> infix
      | "(" prefix_op ("," term)+ ")"     -> prefix
@@ -104,6 +107,11 @@ class _Build(Transformer):
     def statement(self, items: list[object]) -> Term:
         s, cop, p = items
         return compound(str(cop), (s, p))  # type: ignore[arg-type]
+
+    def statement_infix(self, items: list[object]) -> Term:
+        """``<a &/ b =/> c>``: an unbracketed compound as subject, as the seed writes it."""
+        subject = self.infix(items[:-2])
+        return compound(str(items[-2]), (subject, items[-1]))  # type: ignore[arg-type]
 
     def infix(self, items: list[object]) -> Term:
         left = items[0]

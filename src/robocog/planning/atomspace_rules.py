@@ -153,7 +153,9 @@ class AtomSpaceSearch:
     rules that empty the hand run, otherwise only rules that fill it.
     """
 
-    def __init__(self, scene: Scene, goal: list[Fact], rules: list[AtomeseRule] | None = None):
+    def __init__(
+        self, scene: Scene, goal: list[Fact], rules: list[AtomeseRule] | None = None
+    ) -> None:
         self.rules = rules if rules is not None else load_rules()
         root = scene_space(scene)
         self.init = state_key(root)

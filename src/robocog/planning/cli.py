@@ -13,16 +13,18 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
 from pathlib import Path
 
 from robocog.planning.english import EnglishError
-from robocog.planning.pddl import PDDLError, ground, read_domain, read_problem
+from robocog.planning.pddl import PDDLError, ground, read_domain, read_problem, scene_problem
 from robocog.planning.planner import (
     ALL_MODES,
     Planner,
     PlanningError,
     PlanResult,
+    goal_from_english,
     scene_from_english,
     solve_task,
 )
@@ -51,6 +53,12 @@ def configure(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument("--max-seconds", type=float, default=None, help="time limit for A*")
     parser.add_argument("--json", action="store_true", help="print the result as JSON")
+    parser.add_argument(
+        "--write-pddl",
+        metavar="FILE",
+        type=Path,
+        help="also write the scene and request as a 4-operator blocks PDDL problem",
+    )
 
 
 def _print(result: PlanResult, as_json: bool) -> None:
@@ -66,6 +74,13 @@ def _print(result: PlanResult, as_json: bool) -> None:
         f"; {result.length} actions, {status}, {result.iterations} iterations, "
         f"{result.seconds:.4f} s ({result.mode})"
     )
+
+
+def _write_atomically(path: Path, text: str) -> None:
+    """Write *text* to a temporary file beside *path*, then rename it over *path*."""
+    tmp = path.with_name(f".{path.name}.tmp")
+    tmp.write_text(text)
+    os.replace(tmp, path)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -97,8 +112,11 @@ def run(args: argparse.Namespace) -> int:
                 print("robocog plan: give --goal sentences, --pddl or --thesis", file=sys.stderr)
                 return 2
             planner = Planner(max_seconds=args.max_seconds)
+            scene = scene_from_english(objects, facts)
+            if args.write_pddl:
+                _write_atomically(args.write_pddl, scene_problem(scene, goal_from_english(goal)))
             result = planner.plan(
-                scene_from_english(objects, facts),
+                scene,
                 goal,
                 mode=args.mode,
                 max_iterations=args.max_iterations,

@@ -78,6 +78,18 @@ class BlocksView:
                 steps += 1
             self.goal_below[x] = m
 
+    @staticmethod
+    def fits(task: Task) -> bool:
+        """True when the task reads as towers: every action takes or places one object.
+
+        The bound is only sound for such tasks; other PDDL domains get ``blind``.
+        """
+        names = set(task.objects)
+        return bool(task.busy) and all(
+            op.kind in ("take", "place") and op.args and op.args[0] in names
+            for op in task.operators
+        )
+
     def analyse(self, state: int) -> tuple[list[int], list[int], list[int], list[int], int]:
         """Supports, occupants, status (1 in place, 2 misplaced), misplaced-below masks
         and the held object (-1 if the hand is free) of *state*."""
@@ -184,3 +196,8 @@ class BlocksView:
         if held >= 0 and misplaced >> held & 1:
             actions -= 1
         return actions
+
+
+def blind(state: int) -> int:
+    """The zero heuristic: A* becomes uniform-cost search (always admissible)."""
+    return 0

@@ -16,12 +16,12 @@ current scene when a step fails.
 from __future__ import annotations
 
 import time
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Iterator, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
 from robocog.planning.english import Statement, read_sentences
-from robocog.planning.heuristics import BlocksView
+from robocog.planning.heuristics import BlocksView, blind
 from robocog.planning.reductions import BlocksReduction
 from robocog.planning.rules import Rule
 from robocog.planning.search import MODES, SearchResult, astar, bfs
@@ -285,7 +285,7 @@ def _solve_atomspace(
         names = goal_objects(goal)
         full = space.successors
 
-        def restricted(state):  # noqa: ANN001, ANN202
+        def restricted(state: frozenset) -> Iterator[tuple[tuple[str, tuple[str, ...]], frozenset]]:
             for label, nxt in full(state):
                 if names.intersection(label[1]):
                     yield label, nxt
@@ -334,12 +334,14 @@ def solve_task(
     if mode not in ALL_MODES:
         raise PlanningError(f"unknown mode {mode!r}; choose one of {', '.join(ALL_MODES)}")
     start = time.perf_counter() if started is None else started
-    h = view if view is not None else BlocksView(task)
+    h: Any = view
+    if h is None:
+        h = BlocksView(task) if BlocksView.fits(task) else blind
     bound = h(task.init)
     result: SearchResult
     if mode == "astar":
         space: Any = task
-        if reduce and BlocksReduction.applies(task, h):
+        if reduce and isinstance(h, BlocksView) and BlocksReduction.applies(task, h):
             space = BlocksReduction(task, h)
         result = astar(space, h, max_nodes=max_nodes, max_seconds=max_seconds)
     elif mode == "quick":
