@@ -40,6 +40,7 @@ from procedure_envs.reasoners import (  # noqa: E402
     ReasonerError,
     ReasonerUnavailable,
     RobocogNar,
+    TracingReasoner,
 )
 
 #: ONA's published figures for these worlds: steps, headline figure, other figures.
@@ -128,6 +129,18 @@ def parse_args(argv: list[str] | None = None) -> argparse.Namespace:
         "--runs", type=int, default=1, help="runs per world and reasoner, seeds seed, seed+1, ..."
     )
     parser.add_argument(
+        "--time-limit",
+        type=float,
+        default=None,
+        help="stop a run after this many seconds and report the figures reached",
+    )
+    parser.add_argument(
+        "--trace",
+        type=Path,
+        default=None,
+        help="write each run's inputs and executed operations to DIR/<world>-<reasoner>-<seed>.nal",
+    )
+    parser.add_argument(
         "--json", type=Path, default=None, help="also write the results to this file"
     )
     args = parser.parse_args(argv)
@@ -147,7 +160,13 @@ def parse_args(argv: list[str] | None = None) -> argparse.Namespace:
 
 
 def _run_one(
-    env_name: str, reasoner_name: str, steps: int, seed: int, advance: Any
+    env_name: str,
+    reasoner_name: str,
+    steps: int,
+    seed: int,
+    advance: Any,
+    trace: Path | None = None,
+    time_limit: float | None = None,
 ) -> dict[str, Any]:
     """One run as a JSON-ready row (ONA's built-in test has its own fixed seed)."""
     if reasoner_name == "ona-builtin":
@@ -160,9 +179,14 @@ def _run_one(
             "metrics": built.metrics,
             "wall_time": built.wall_time,
             "operations": {},
+            "completed_steps": steps,
         }
     env = ENVIRONMENTS[env_name](seed)
-    return asdict(run(env, _make(reasoner_name, seed), steps, seed, advance))
+    reasoner = _make(reasoner_name, seed)
+    if trace is not None:
+        trace.mkdir(parents=True, exist_ok=True)
+        reasoner = TracingReasoner(reasoner, trace / f"{env_name}-{reasoner_name}-{seed}.nal")
+    return asdict(run(env, reasoner, steps, seed, advance, time_limit))
 
 
 def run_all(args: argparse.Namespace, console: Console) -> dict[str, Any]:
@@ -199,7 +223,9 @@ def run_all(args: argparse.Namespace, console: Console) -> dict[str, Any]:
                         progress.update(task, completed=done * steps + k)
 
                 try:
-                    row = _run_one(env_name, reasoner_name, steps, seed, advance)
+                    row = _run_one(
+                        env_name, reasoner_name, steps, seed, advance, args.trace, args.time_limit
+                    )
                 except (ReasonerError, ReasonerUnavailable, RuntimeError) as exc:
                     console.print(f"[red]{env_name} / {reasoner_name} failed:[/] {exc}")
                     row = {"env": env_name, "reasoner": reasoner_name, "steps": steps}
@@ -246,6 +272,7 @@ def summarise(report: dict[str, Any]) -> list[dict[str, Any]]:
         entry["figures"] = figures
         entry["spread"] = statistics.stdev(figures) if len(figures) > 1 else 0.0
         entry["wall_time"] = statistics.fmean(r["wall_time"] for r in good)
+        entry["completed_steps"] = min(r.get("completed_steps", r["steps"]) for r in good)
         summary.append(entry)
     baseline = {
         e["env"]: e["wall_time"] for e in summary if e["reasoner"] == BASELINE and "wall_time" in e
@@ -280,7 +307,10 @@ def render(summary: list[dict[str, Any]]) -> Table:
             reference += " " + " ".join(f"{k}={v:g}" for k, v in ref_extra.items())
         if ref_steps != entry["steps"]:
             reference += f" @{ref_steps}"
-        head = [env, str(entry["steps"]), entry["reasoner"], str(entry["runs"])]
+        steps = str(entry["steps"])
+        if entry.get("completed_steps", entry["steps"]) < entry["steps"]:
+            steps = f"{entry['completed_steps']} of {steps}, stopped"
+        head = [env, steps, entry["reasoner"], str(entry["runs"])]
         if "error" in entry:
             table.add_row(*head, "failed", entry["error"][:60], reference, "", "")
             continue

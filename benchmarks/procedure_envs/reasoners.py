@@ -1,7 +1,7 @@
 """Reasoners that can drive a procedure-learning environment.
 
 A reasoner takes feeds (Narsese lines, one cycle each, and counts of free cycles) and
-returns the operations it executed while digesting them, in order. Three kinds:
+returns the operations it executed while digesting them, in order:
 
 * :class:`OnaShell` runs ONA's ``NAR shell`` as a child process and talks to it through
   pipes, configured the way ONA's own system tests configure the reasoner (operation
@@ -10,6 +10,7 @@ returns the operations it executed while digesting them, in order. Three kinds:
   when that engine cannot yet execute a learned procedure.
 * :class:`PolicyReasoner` answers each goal with a scripted policy, which gives the
   environments' tests and the benchmark a perfect and a random baseline.
+* :class:`TracingReasoner` wraps any of them and writes a replayable trace.
 """
 
 from __future__ import annotations
@@ -328,13 +329,18 @@ class RobocogNar:
         """Input the lines and run the cycles; return the operations executed."""
         self._executed = []
         for item in feed:
-            if isinstance(item, int):
-                if item > 0:
-                    self.nar.cycles(item)
-            else:
-                self.nar.add_input(item)
-                if self._cycle_after_input:
-                    self.nar.cycles(1)
+            try:
+                if isinstance(item, int):
+                    if item > 0:
+                        self.nar.cycles(item)
+                else:
+                    self.nar.add_input(item)
+                    if self._cycle_after_input:
+                        self.nar.cycles(1)
+            except Exception as exc:  # noqa: BLE001 - the run fails, the benchmark goes on
+                raise ReasonerError(
+                    f"robocog's NAR failed on {item!r}: {type(exc).__name__}: {exc}"
+                ) from exc
         return self._executed
 
     def close(self) -> None:
@@ -372,3 +378,41 @@ class PolicyReasoner:
     def close(self) -> None:
         """Nothing to release."""
         self.env = None
+
+
+class TracingReasoner:
+    """Wraps a reasoner and writes what it was fed and what it did to a Narsese file.
+
+    The file replays in ONA's shell (operations appear as ``//executed ^op`` comments
+    after the feed that caused them), so two reasoners' runs of one world can be diffed
+    line by line to find where their decisions part.
+    """
+
+    def __init__(self, inner: Reasoner, path: str | os.PathLike[str]) -> None:
+        self.inner = inner
+        self.name = inner.name
+        self.path = path
+        self._out: Any = None
+
+    def start(self, env: ProcedureEnv, seed: int) -> None:
+        """Open the trace, write the configuration, start the wrapped reasoner."""
+        self._out = open(self.path, "w", encoding="utf-8")  # noqa: SIM115 - closed in close()
+        self._out.write(f"//{env.name} seed={seed} reasoner={self.inner.name}\n")
+        self._out.write("\n".join(setup_commands(env)) + "\n")
+        self.inner.start(env, seed)
+
+    def feed(self, feed: Feed) -> list[str]:
+        """Pass the feed on and record it with the operations it caused."""
+        executed = self.inner.feed(feed)
+        for item in feed:
+            self._out.write(f"{item}\n")
+        for op in executed:
+            self._out.write(f"//executed {op}\n")
+        return executed
+
+    def close(self) -> None:
+        """Close the wrapped reasoner and the trace file."""
+        self.inner.close()
+        if self._out is not None:
+            self._out.close()
+            self._out = None

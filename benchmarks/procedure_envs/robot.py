@@ -2,7 +2,8 @@
 
 Rules (those of ONA's ``robot`` system test): a 41 x 21 grid of two 19 x 19 rooms joined
 by a door, walls around (with gaps that lead nowhere), 23 food cells and 23 extra wall
-cells placed at random. The robot starts at (5, 5) facing right; it faces one of eight
+cells placed at random (a wall may land on the start cell, as in ONA's test; the robot
+can still leave it). The robot starts at (5, 5) facing right; it faces one of eight
 directions. ``^left``/``^right`` turn it by 45 degrees, ``^forward`` moves it one cell
 along its heading unless a wall or the border is there (a successful forward is a
 *move*). Only the first operation after the goal of a step acts.

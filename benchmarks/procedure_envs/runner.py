@@ -24,6 +24,8 @@ class RunResult:
     metrics: dict[str, float]
     wall_time: float
     operations: dict[str, int] = field(default_factory=dict)
+    #: Steps actually run: fewer than ``steps`` when the time limit stopped the run.
+    completed_steps: int = 0
 
     @property
     def ratio(self) -> float:
@@ -37,25 +39,31 @@ def run(
     steps: int,
     seed: int = 0,
     on_step: Callable[[int], None] | None = None,
+    time_limit: float | None = None,
 ) -> RunResult:
     """Reset ``env`` with ``seed``, drive it for ``steps`` steps, and close the reasoner.
 
     The wall time covers the reasoner's start-up too, as a run of ONA's own test does.
-    ``on_step(k)`` is called after step k (for a progress bar).
+    ``on_step(k)`` is called after step k (for a progress bar). With ``time_limit``
+    (seconds) a slow reasoner is stopped after the step that exceeds it, and the figures
+    are those reached (``completed_steps`` tells how far it got).
     """
     env.reset(seed)
     counts = dict.fromkeys(env.operations, 0)
     started = time.perf_counter()
+    done = 0
     try:
         reasoner.start(env, seed)
-        for k in range(1, steps + 1):
+        for done in range(1, steps + 1):
             for feed in env.step():
                 for op in reasoner.feed(feed):
                     counts[op] = counts.get(op, 0) + 1
                     env.execute(op)
             if on_step is not None:
-                on_step(k)
+                on_step(done)
+            if time_limit is not None and time.perf_counter() - started > time_limit:
+                break
     finally:
         reasoner.close()
     wall = time.perf_counter() - started
-    return RunResult(env.name, reasoner.name, steps, seed, env.metrics(), wall, counts)
+    return RunResult(env.name, reasoner.name, steps, seed, env.metrics(), wall, counts, done)

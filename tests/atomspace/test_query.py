@@ -348,3 +348,19 @@ def test_queries_see_frames(blocks: AtomSpace) -> None:
     text = '(Get (Evaluation (Predicate "on") (List (Concept "a") (Variable "$y"))))'
     assert run(frame, text) == S(C("c"))
     assert run(blocks, text) == S(C("b"))
+
+
+def test_a_typed_variable_alone_is_a_clause(animals: AtomSpace) -> None:
+    r = run(
+        animals,
+        """(Get (TypedVariable (Variable "$l") (Type "MemberLink")) (Variable "$l"))""",
+    )
+    assert r == S(Link("MemberLink", C("cat"), S(C("pet"), C("mammal"))))
+    r = run(
+        animals,
+        """(Get (VariableList (TypedVariable (Variable "$e") (Type "EvaluationLink"))
+                              (Variable "$x"))
+                (And (Variable "$e")
+                     (Equal (Variable "$e") (Evaluation (Predicate "barks") (Variable "$x")))))""",
+    )
+    assert r == S(L(ev("barks", C("dog")), C("dog")))

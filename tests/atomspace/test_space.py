@@ -134,3 +134,25 @@ def test_add_node_and_link_helpers() -> None:
     link = s.add_link("InheritanceLink", [a, Node("ConceptNode", "b")], tv=stv(1, 1))
     assert link in s and s.get_tv(link) == stv(1, 1)
     assert repr(s).startswith("<AtomSpace space")
+
+
+def test_state_link_keeps_one_state_per_key() -> None:
+    s = AtomSpace()
+    hand = Node("AnchorNode", "hand")
+    s.add(Link("StateLink", hand, C("empty")))
+    s.add(Link("StateLink", hand, C("bolt")))
+    states = s.incoming(hand, "StateLink")
+    assert states == {Link("StateLink", hand, C("bolt"))}
+    frame = s.child()
+    frame.add(Link("StateLink", hand, C("screw")))
+    assert frame.incoming(hand, "StateLink") == {Link("StateLink", hand, C("screw"))}
+    assert s.incoming(hand, "StateLink") == {Link("StateLink", hand, C("bolt"))}
+
+
+def test_define_link_defines_once() -> None:
+    s = AtomSpace()
+    name = Node("DefinedPredicateNode", "is-clear")
+    s.add(Link("DefineLink", name, ev("clear", C("a"))))
+    s.add(Link("DefineLink", name, ev("clear", C("a"))))  # the same definition again
+    with pytest.raises(ValueError):
+        s.add(Link("DefineLink", name, ev("clear", C("b"))))

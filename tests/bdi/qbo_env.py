@@ -5,7 +5,9 @@ Directions are compass degrees (0 = +y, 90 = +x). ``looking_Qbo`` sees a target 
 step unless a wall is in the way (then ``found_obstacle`` is perceived);
 ``search_Qbo`` turns by 30-degree increments, alternating sides around the given
 direction, until the way is free, then moves. ``front_of(X)`` is perceived within 1 m.
-Actions can complete at once or later (``deferred=True``), like a real robot's.
+Actions can complete at once or later (``deferred=True``), like a real robot's. With a
+``decoy``, the nearer of the door and the decoy is taken for the door, as the robot of
+the paper's second experiment took the opposite door for the target.
 """
 
 from __future__ import annotations
@@ -27,6 +29,7 @@ class QboRoom:
         entry: tuple[float, float] = (8.5, 10.5),
         size: tuple[float, float] = (10.0, 11.0),
         deferred: bool = False,
+        decoy: tuple[float, float] | None = None,
     ) -> None:
         self.agent = agent
         self.x, self.y = start
@@ -34,6 +37,8 @@ class QboRoom:
         self.targets = {"door": door, "entry": entry}
         self.size = size
         self.deferred = deferred
+        #: a second place that looks like the door (the paper's second experiment)
+        self.decoy = decoy
         self.pending: list[tuple[ActionHandle, str, float]] = []
         self.log: list[str] = []
         self.visible: str | None = None
@@ -43,12 +48,20 @@ class QboRoom:
         self.perceive()
 
     # ---- geometry
-    def bearing(self, name: str) -> float:
+    def _place(self, name: str) -> tuple[float, float]:
         tx, ty = self.targets[name]
+        if name == "door" and self.decoy is not None:
+            dx, dy = self.decoy
+            if math.hypot(dx - self.x, dy - self.y) < math.hypot(tx - self.x, ty - self.y):
+                return self.decoy
+        return tx, ty
+
+    def bearing(self, name: str) -> float:
+        tx, ty = self._place(name)
         return math.degrees(math.atan2(tx - self.x, ty - self.y)) % 360
 
     def distance(self, name: str) -> float:
-        tx, ty = self.targets[name]
+        tx, ty = self._place(name)
         return math.hypot(tx - self.x, ty - self.y)
 
     def blocked(self, direction: float) -> bool:

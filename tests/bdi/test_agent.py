@@ -265,3 +265,20 @@ def test_an_atomic_plan_runs_without_interleaving() -> None:
 +!b <- .print(b1); .print(b2)."""
     assert run(src) == ["a1", "sub", "a2", "b1", "b2"]
     assert run(src.replace("@pa[atomic] ", "")) == ["a1", "b1", "sub", "b2", "a2"]
+
+
+def test_true_and_false_inside_formulas() -> None:
+    src = """!s.
++!s : 1 < 2 & true <- if (true & not false) { .print(yes) }; .eval(E, true | false); .print(E)."""
+    assert run(src) == ["yes", "true"]
+
+
+def test_wait_for_a_condition_and_timeouts() -> None:
+    src = """!a.
+!b.
++!a <- .wait(n(X) & X > 2); ?n(Y); .print(a, Y);
+       .wait({+never}, 100, T); .print(waited, T);
+       .wait({+never}, 50).
+-!a[error(E)] <- .print(timeout, E).
++!b <- for (.range(I, 1, 4)) { -+n(I) }."""
+    assert run(src) == ["a3", "waited100", "timeoutia_failed"]

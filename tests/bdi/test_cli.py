@@ -42,7 +42,8 @@ def test_warnings_stay_off_stdout(tmp_path: Path, capsys) -> None:  # noqa: ANN0
     assert "missing" in err
 
 
-CONFORMANCE = Path("/work/shared/asl/conformance")
+# Jason's conformance cases live beside the repository (../shared/asl/conformance)
+CONFORMANCE = Path(__file__).resolve().parents[3] / "shared" / "asl" / "conformance"
 
 
 @pytest.mark.skipif(not CONFORMANCE.exists(), reason="conformance cases not available")

@@ -8,7 +8,7 @@ from hypothesis import strategies as st
 
 from robocog.bdi import ParseError, parse_plan, parse_program, parse_term, term_str
 from robocog.bdi.plans import chain_steps
-from robocog.bdi.terms import Arith, Literal, Var
+from robocog.bdi.terms import Arith, Literal, Var, make_list
 
 FULL = """
 // beliefs, rules, goals and plans
@@ -191,6 +191,7 @@ def test_deep_nesting_is_a_parse_error_or_a_term() -> None:
     st.recursive(
         st.one_of(
             st.integers(-1000, 1000),
+            st.floats(allow_nan=False, allow_infinity=False, width=64),
             st.sampled_from(["a", "b", "foo", "x1"]).map(Literal),
             st.text(alphabet='abc "\\', max_size=5),
         ),
@@ -198,14 +199,71 @@ def test_deep_nesting_is_a_parse_error_or_a_term() -> None:
             st.tuples(st.sampled_from(["f", "g"]), st.lists(kids, min_size=1, max_size=3)).map(
                 lambda fa: Literal(fa[0], tuple(fa[1]))
             ),
-            st.lists(kids, max_size=3).map(
-                _as_list := (
-                    lambda xs: __import__("robocog.bdi.terms", fromlist=["make_list"]).make_list(xs)
-                )
-            ),
+            st.lists(kids, max_size=3).map(make_list),
         ),
         max_leaves=10,
     )
 )
 def test_printed_terms_parse_back_to_the_same_term(t: object) -> None:
     assert parse_term(term_str(t)) == t
+
+
+TRIGGERS = ["+!g", "+!g(X)", "-!g", "-!g(X)", "+b(X)", "-b(X)", "+?b(X)", "+!h"]
+CONTEXTS = [
+    "",
+    " : b(X)",
+    " : not b(2)",
+    " : X > 0",
+    " : b(X) & X < 3 | true",
+    " : .member(X, [1])",
+]
+STEPS = [
+    "!g",
+    "!g(1)",
+    "!!h",
+    "!h",
+    "?b(X)",
+    "+b(1)",
+    "-b(1)",
+    "-+b(2)",
+    ".print(X)",
+    ".fail",
+    "X = 1",
+    "X > 0",
+    "act(X)",
+    "if (b(X)) { .print(X) } else { !h }",
+    "while (b(X) & X < 3) { -+b(X + 1) }",
+    "for (b(X)) { !g(X) }",
+    ".succeed_goal(g)",
+    ".drop_intention(g)",
+    ".wait(1)",
+    "X = [H|T]",
+    "Y = 1 / 0",
+    "Y = X div 0",
+    ".nth(X, a, Y)",
+]
+
+
+@st.composite
+def _programs(draw: st.DrawFn) -> str:
+    plans = []
+    for _ in range(draw(st.integers(1, 5))):
+        body = draw(st.lists(st.sampled_from(STEPS), min_size=1, max_size=5))
+        plans.append(
+            draw(st.sampled_from(TRIGGERS))
+            + draw(st.sampled_from(CONTEXTS))
+            + " <- "
+            + "; ".join(body)
+            + "."
+        )
+    return "b(1).\n!g.\n!g(2).\n!h.\n" + "\n".join(plans)
+
+
+@settings(max_examples=200, deadline=None)
+@given(_programs())
+def test_random_programs_run_without_crashing_the_engine(text: str) -> None:
+    from robocog.bdi import Agent
+
+    ag = Agent(parse_program(text), "fuzz", printer=lambda n, t: None, warn=lambda n, t: None)
+    ag.run(300)
+    assert ag.cycle <= 300

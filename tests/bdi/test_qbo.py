@@ -13,7 +13,8 @@ from robocog.bdi.plans import chain_steps
 from .qbo_env import QboRoom
 
 EXAMPLE = Path(__file__).resolve().parents[2] / "src/robocog/bdi/examples/qbo_reach_exit.asl"
-SEED = Path("/work/shared/seeds/001_589c8f4928a5041e.txt")
+# the paper's text lives beside the repository (../shared/seeds)
+SEED = Path(__file__).resolve().parents[3] / "shared" / "seeds" / "001_589c8f4928a5041e.txt"
 
 
 def _program() -> str:
@@ -112,3 +113,18 @@ def test_a_failing_robot_action_fails_the_goal_with_action_failed() -> None:
     ag.run(10_000)
     assert printed == ["action_failed"]
     assert room.log == ["looking_Qbo(door)"]
+
+
+def test_a_decoy_taken_for_the_door_leaves_the_robot_far_from_the_entry() -> None:
+    ag = Agent(_program() + "\n!reach_exit.\n", "qbo", printer=lambda n, t: None)
+    room = QboRoom(ag, start=(5.0, 3.0), heading=180.0, decoy=(5.0, 0.5))
+    ag.run(3_000)
+    # the door goal was achieved in front of the decoy, and the search for the entry
+    # from there does not reach it within the same budget that suffices without decoy
+    first_entry_look = room.log.index("looking_Qbo(entry)")
+    assert room.log[:first_entry_look].count("looking_Qbo(door)") <= 3
+    assert room.distance("entry") > 1.0
+    ok = Agent(_program() + "\n!reach_exit.\n", "qbo", printer=lambda n, t: None)
+    ok_room = QboRoom(ok, start=(5.0, 3.0), heading=180.0)
+    ok.run(3_000)
+    assert ok_room.distance("entry") < 1.0

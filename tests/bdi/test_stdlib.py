@@ -45,10 +45,27 @@ def out(body: str, beliefs: str = "") -> list[str]:
         (".length(a, N)", "failedia_failed"),
         (".nosuch(1)", "failedia_failed"),
         (".fail(error(custom))", "failedcustom"),
+        ('X = 5; .puts("x=#{X}, f=#{f(X)}")', "x=5, f=f(5)"),
+        ('.printf("%d-%s-%.2f", 3, abc, 2.5)', "3-abc-2.50"),
+        (".findall(P, .prefix(P, [a, b]), L); .print(L)", "[[a,b],[a],[]]"),
+        (".findall(P, .suffix(P, [a, b]), L); .print(L)", "[[a,b],[b],[]]"),
+        ('.replace("a-b-c", "-", "+", R); .print(R)', "a+b+c"),
+        (".copy_term(f(X, Y, X), T); T = f(1, 2, Z); .print(Z)", "1"),
+        (".eval(E, 1 > 2 | true); .print(E)", "true"),
+        ('X = .length([a, b]) + .length("abc"); .print(X)', "5"),
+        ("X = math.median([3, 1, 2]) + math.max([4, 9]); .print(X)", "11"),
     ],
 )
 def test_internal_actions(body: str, expected: str) -> None:
     assert out(body) == [expected]
+
+
+def test_count_as_a_function_and_assert_order() -> None:
+    printed = out(
+        ".asserta(q(1)); .assertz(q(2)); .asserta(q(0)); .findall(Q, q(Q), L);"
+        " N = .count(q(_)); .print(L, N)"
+    )
+    assert printed == ["[0,1,2]3"]
 
 
 def test_count_abolish_and_type_tests() -> None:

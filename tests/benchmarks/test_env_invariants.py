@@ -68,7 +68,8 @@ def test_robot_never_enters_a_wall_and_food_is_kept_constant(
     seed: int, script: list[list[str]]
 ) -> None:
     def check(e: Robot) -> None:
-        assert e.cell(e.x, e.y) != "w"
+        # a wall block may be dropped on the start cell (as in ONA); elsewhere, never
+        assert e.cell(e.x, e.y) != "w" or (e.x, e.y) == (5, 5)
         assert sum(map(sum, e.food)) == 23
         assert e.score.extra["moves"] <= e.steps
 

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import pytest
 
 from procedure_envs import (
@@ -15,7 +17,7 @@ from procedure_envs import (
     Robot,
     run,
 )
-from procedure_envs.reasoners import PolicyReasoner
+from procedure_envs.reasoners import PolicyReasoner, TracingReasoner
 from robocog.nars import parse_sentence
 
 from .policies import PERFECT, random_policy, scripted
@@ -329,3 +331,28 @@ def test_bandrobot_picks_only_on_the_object_and_delivers_on_the_goal() -> None:
     fed = feeds_of_one_step(env)
     assert env.position == 3 and "delivered. :|:" in fed
     assert env.score.successes == 1
+
+
+def test_a_trace_holds_the_configuration_every_input_and_every_operation(tmp_path: Path) -> None:
+    path = tmp_path / "alien.nal"
+    result = run(Alien(0), TracingReasoner(scripted("alien"), path), 30, seed=0)
+    lines = path.read_text().splitlines()
+    assert lines[0] == "//alien seed=0 reasoner=scripted-alien"
+    assert lines[1:6] == [
+        "*setopname 1 ^left",
+        "*setopname 2 ^right",
+        "*setopname 3 ^shoot",
+        "*babblingops=3",
+        "*motorbabbling=0.2",
+    ]
+    assert lines.count("s0! :|:") == 30
+    executed = [line.removeprefix("//executed ") for line in lines if line.startswith("//executed")]
+    assert len(executed) == sum(result.operations.values()) > 0
+    assert lines.count("s0. :|:") == result.metrics["hits"]
+
+
+def test_a_time_limit_stops_a_run_and_says_how_far_it_got() -> None:
+    full = run(Pong(0), scripted("pong"), 40, seed=0)
+    cut = run(Pong(0), scripted("pong"), 40, seed=0, time_limit=0.0)
+    assert (full.completed_steps, cut.completed_steps) == (40, 1)
+    assert cut.steps == 40

@@ -7,8 +7,8 @@ import re
 import pytest
 
 import robocog.nars
-from procedure_envs import Alien, run
-from procedure_envs.reasoners import ReasonerUnavailable, RobocogNar
+from procedure_envs import Alien, Pong, run
+from procedure_envs.reasoners import ReasonerError, ReasonerUnavailable, RobocogNar
 
 
 class FakeNar:
@@ -83,3 +83,15 @@ def test_the_real_nar_either_runs_a_world_or_says_why_not() -> None:
         return
     result = run(Alien(0), RobocogNar(), 50)
     assert set(result.operations) <= set(Alien.operations)
+
+
+def test_an_engine_failure_becomes_a_reasoner_error_naming_the_input(
+    fake_nar: type[FakeNar], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    def refuse(self: FakeNar, n: int) -> None:
+        raise KeyError("no such concept")
+
+    assert RobocogNar.unavailable_reason() is None  # probed while the engine still works
+    monkeypatch.setattr(FakeNar, "cycles", refuse)
+    with pytest.raises(ReasonerError, match="failed on 5: KeyError"):
+        run(Pong(0), RobocogNar(), 3)

@@ -88,17 +88,17 @@ def test_json_shape_and_report_files(tmp_path: Path) -> None:
     assert (tmp_path / "report" / "trajectory_careful.png").exists()
 
 
-def test_the_command_writes_json_for_each_paper_mind(tmp_path: Path) -> None:
+def test_the_command_writes_json_with_an_entry_per_mind(tmp_path: Path) -> None:
     out = tmp_path / "json.json"
-    code = cli.main(
-        ["experiment", "garbage", "--runs", "1", "--rounds", "0", "--json", str(out), "--no-report"]
-    )
+    args = ["experiment", "garbage", "--minds", "bdi", "--runs", "2", "--rounds", "0"]
+    code = cli.main([*args, "--json", str(out), "--out", str(tmp_path / "report")])
     doc = json.loads(out.read_text())
-    assert set(doc["minds"]) == {"NARS", "BDI"}
-    for entry in doc["minds"].values():
-        assert entry["runs"] in (0, 1)
-        assert entry["success_rate"] is None or 0.0 <= entry["success_rate"] <= 1.0
-    assert code == (0 if all(e["status"] == "ok" for e in doc["minds"].values()) else 1)
+    assert set(doc["minds"]) == {"BDI"}
+    entry = doc["minds"]["BDI"]
+    assert entry["runs"] in (0, 2)
+    assert entry["success_rate"] is None or 0.0 <= entry["success_rate"] <= 1.0
+    assert code == (0 if entry["status"] == "ok" else 1)
+    assert (tmp_path / "report" / "report.md").exists()
 
 
 def test_bad_arguments_are_refused(capsys) -> None:  # noqa: ANN001 - pytest fixture
@@ -110,3 +110,10 @@ def test_bad_arguments_are_refused(capsys) -> None:  # noqa: ANN001 - pytest fix
 def test_a_field_layout_for_the_plot() -> None:
     layout = GarbageField(seed=0).describe()
     assert layout["size"] == 22.0 and len(layout["checkpoints"]) == 8  # type: ignore[arg-type]
+
+
+def test_a_spent_time_budget_leaves_runs_out_and_says_so() -> None:
+    result = run_experiment(_specs()[:2], runs=4, seed=1, budget=1e-6)
+    for m in result.minds.values():
+        assert len(m.runs) == 1 and m.cut_short == 3
+        assert m.summary()["runs_skipped_for_time"] == 3

@@ -20,6 +20,7 @@ from robocog.minds.nars_encoding import (
     obstacle_event,
     place_event,
     recall_questions,
+    seen_as,
 )
 from robocog.robot import Detection, Drop, Forward, GoTo, Gripper, Obstacle, Pick, Pose, Turn
 
@@ -90,7 +91,7 @@ def test_a_frame_reports_the_most_confident_detections_first_and_at_most_three()
         "<gripper --> [open]>. :|:",
         "<gripper --> [hold]>. :|: {0.0 0.9}",
     ]
-    assert recall_questions(frame) == ["<cup --> ?1>?", "<bottle --> ?1>?"]
+    assert recall_questions(frame) == ["<bottle --> ?1>?", "<cup --> ?1>?"]
 
 
 def test_names_become_atoms() -> None:
@@ -112,3 +113,14 @@ def test_operations_map_to_commands() -> None:
     assert command_for("^pick", None, places) == Pick("trash")
     assert command_for("^drop", None) == Drop()
     assert command_for("^say", None) is None
+
+
+def test_a_sighting_is_reported_under_the_kind_the_reasoner_names() -> None:
+    q = "<bottle --> ?1>?"
+    assert (
+        seen_as(q, "<bottle --> trash>", 1.0, 0.9) == "<trash --> [see]>. :|: {1.000000 0.810000}"
+    )
+    assert seen_as(q, "<bottle --> [left]>", 1.0, 0.9) is None
+    assert seen_as(q, "<cup --> trash>", 1.0, 0.9) is None
+    assert seen_as(q, "<bottle --> (trash & glass)>", 1.0, 0.9) is None
+    assert seen_as(q, None, 0.0, 0.0) is None

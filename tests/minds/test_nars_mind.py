@@ -39,8 +39,21 @@ class Recorder:
         for op, args in self.script(self):
             self.ops[op](args)
 
-    def ask(self, question: str) -> None:
+    def ask(self, question: str) -> object:
+        self.inputs.append(question)
+        if question == "<bottle --> ?1>?":
+            return Answer("<bottle --> trash>", Truth(1.0, 0.9))
         return None
+
+
+class Truth:
+    def __init__(self, f: float, c: float) -> None:
+        self.f, self.c = f, c
+
+
+class Answer:
+    def __init__(self, term: str, truth: Truth) -> None:
+        self.term, self.truth = term, truth
 
 
 def _frame(place: str | None = "p0", holding: str | None = None, seen: bool = True) -> list:
@@ -87,7 +100,10 @@ def test_frames_and_the_goal_go_in_and_executions_come_out() -> None:
     assert mind.decide() == [Pick("bottle1")]
     assert "<({SELF} * {p0}) --> at>. :|:" in nar.inputs
     assert "<{bottle1} --> [see]>. :|:" in nar.inputs
-    assert "<bottle --> ?1>?" in nar.inputs  # what is known about a bottle is recalled
+    # What a bottle is comes from the reasoner's answer, and follows the place at once.
+    asked = nar.inputs.index("<bottle --> ?1>?")
+    assert nar.inputs[asked - 1] == "<({SELF} * {p0}) --> at>. :|:"
+    assert nar.inputs[asked + 1] == "<trash --> [see]>. :|: {1.000000 0.810000}"
     mind.on_outcome(Pick("bottle1"), Outcome.failure("missed the grasp"))
     assert nar.inputs[-2:] == ["<gripper --> [open]>. :|:", "<gripper --> [hold]>. :|: {0.0 0.9}"]
     mind.on_outcome(Pick("bottle1"), Outcome.success())
@@ -138,3 +154,20 @@ def test_with_the_real_reasoner_a_seen_bottle_is_picked() -> None:
         mind.perceive(_frame())
         commands += mind.decide()
     assert Pick("bottle1") in commands or Pick("trash") in commands
+
+
+def test_a_reasoner_that_rejects_the_printed_goto_rule_gets_it_bracketed() -> None:
+    class Strict(Recorder):
+        def add_input(self, line: str) -> None:
+            if line == PAPER_STATEMENTS[0]:
+                raise ValueError("line 1, column 91: unexpected '.'")
+            super().add_input(line)
+
+    nar = Strict(lambda r: [])
+    mind = NarsMind(["p0"], nar=nar)  # type: ignore[arg-type]
+    assert PAPER_STATEMENTS[0] not in nar.inputs
+    assert "<(<gripper --> [open]> &/ <({SELF} * (next * $P)) --> ^goto>) =/>" in " ".join(
+        nar.inputs
+    )
+    assert len(mind.notes) == 1 and "column 91" in mind.notes[0]
+    assert NarsMind(["p0"], nar=Recorder(lambda r: [])).notes == []  # type: ignore[arg-type]

@@ -57,7 +57,9 @@ def test_revision_prints_revised_line() -> None:
 
 def test_shell_commands_and_comments() -> None:
     nar = NAR()
-    out = run_lines(nar, ["//hello", "5", "*volume=0", "*motorbabbling=0.3", "*decisionthreshold=0.6"])
+    out = run_lines(
+        nar, ["//hello", "5", "*volume=0", "*motorbabbling=0.3", "*decisionthreshold=0.6"]
+    )
     assert out[0] == "Comment: hello"
     assert out[1:3] == ["performing 5 inference steps:", "done with 5 additional inference steps."]
     assert nar.time == 6

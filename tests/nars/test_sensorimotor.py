@@ -29,7 +29,13 @@ def test_decision_desire_matches_ona() -> None:
 
 def test_concurrent_goal_gives_higher_desire() -> None:
     nar, out = quiet()
-    for line in ["*motorbabbling=false", "<(a &/ ^left) =/> g>.", "a. :|:", "*concurrent", "g! :|:"]:
+    for line in [
+        "*motorbabbling=false",
+        "<(a &/ ^left) =/> g>.",
+        "a. :|:",
+        "*concurrent",
+        "g! :|:",
+    ]:
         nar.add_input(line)
     assert any(line.startswith("decision expectation=0.864500") for line in out)
 
@@ -118,8 +124,26 @@ def test_seed_background_knowledge_loads_and_picks() -> None:
     for line in ["*setopname 1 ^goto", "*setopname 2 ^pick", "*setopname 3 ^drop", *knowledge]:
         nar.add_input(line)
     assert sum(line.startswith("Input:") for line in out) == 5
-    for line in ["<({SELF} * {cp1}) --> at>. :|:", "<gripper --> [open]>. :|:", "<bottle --> [see]>. :|:", "G! :|:"]:
+    for line in [
+        "<({SELF} * {cp1}) --> at>. :|:",
+        "<gripper --> [open]>. :|:",
+        "<bottle --> [see]>. :|:",
+        "G! :|:",
+    ]:
         nar.add_input(line)
     assert "^pick executed with args " in out
     nar.add_input("<({SELF} * {cp2}) --> at>! :|:")
     assert "^goto executed with args ({SELF} * (next * cp2))" in out
+
+
+def test_learned_procedure_survives_save_and_load(tmp_path) -> None:  # noqa: ANN001
+    nar, _ = quiet(motor_babbling_chance=0.0)
+    for line in ["<(a &/ ^left) =/> g>.", "a. :|:"]:
+        nar.add_input(line)
+    path = tmp_path / "m.nar"
+    nar.save(path)
+    again = NAR.load(path)
+    out: list[str] = []
+    again.output = out.append
+    again.add_input("g! :|:")
+    assert "^left executed with args " in out

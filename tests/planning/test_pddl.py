@@ -3,6 +3,8 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
 from robocog.planning.pddl import (
     PDDLError,
@@ -11,6 +13,7 @@ from robocog.planning.pddl import (
     read_problem,
     scene_problem,
     task_state_problem,
+    write_problem,
 )
 from robocog.planning.planner import solve_task
 from robocog.planning.world import Scene
@@ -139,3 +142,28 @@ def test_another_strips_domain_is_planned_optimally_without_the_blocks_bound() -
     best = solve_task(task, "astar")
     assert best.optimal and best.length == solve_task(task, "first").length == 7
     assert best.lower_bound == 0
+
+
+names = st.from_regex(r"[a-z][a-z0-9\-]{0,5}", fullmatch=True)
+
+
+@given(
+    st.lists(names, min_size=1, max_size=5, unique=True),
+    st.lists(
+        st.tuples(
+            st.sampled_from(["on", "clear", "ontable"]), st.integers(0, 4), st.integers(0, 4)
+        ),
+        max_size=6,
+    ),
+)
+def test_written_problems_read_back_unchanged(objects: list[str], raw: list) -> None:
+    def fact(p: str, i: int, j: int) -> tuple[str, ...]:
+        a, b = objects[i % len(objects)], objects[j % len(objects)]
+        return (p, a, b) if p == "on" else (p, a)
+
+    init = list(dict.fromkeys(fact(*r) for r in raw)) + [("handempty",)]
+    goal = list(dict.fromkeys(fact(*r) for r in raw[::-1]))
+    problem = read_problem(write_problem("p", "blocks", objects, init, goal))
+    assert [o for o, _ in problem.objects] == objects
+    assert problem.init == init
+    assert problem.goal == [(True, g) for g in goal]

@@ -5,6 +5,8 @@ from __future__ import annotations
 import math
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from robocog.robot import Body, Detection, Drop, Forward, GoTo, Gripper, Obstacle, Pick, Pose, Turn
 from robocog.worlds.garbage import DETECTION_RATE, GarbageConfig, GarbageField, Trash
@@ -251,6 +253,10 @@ def test_failure_causes_name_what_went_wrong() -> None:
     world = GarbageField(seed=9)
     t = world.trash[0]
     t.recognisable = False
+    assert world.failure_cause(t) == "decision"  # its checkpoint was never visited
+    world.clock = world.config.mission_time
+    assert world.failure_cause(t) == "time"
+    world.visited.append(t.checkpoint)
     assert world.failure_cause(t) == "detection"
     t.times_seen = 2
     assert world.failure_cause(t) == "decision"
@@ -263,3 +269,27 @@ def test_failure_causes_name_what_went_wrong() -> None:
 def test_bad_light_is_rejected() -> None:
     with pytest.raises(ValueError, match="light"):
         GarbageConfig(light="night")  # type: ignore[arg-type]
+
+
+@given(
+    st.lists(
+        st.one_of(
+            st.builds(Forward, st.floats(-30, 30)),
+            st.builds(Turn, st.floats(-7, 7)),
+            st.sampled_from([GoTo("next"), GoTo("p5"), Pick("trash"), Drop()]),
+        ),
+        max_size=25,
+    )
+)
+@settings(max_examples=60, deadline=None)
+def test_no_command_sequence_takes_the_robot_off_the_field(commands: list) -> None:
+    world = GarbageField(seed=0)
+    before = world.time()
+    for command in commands:
+        world.percepts()
+        world.execute(command)
+        assert 0.0 <= world.x <= world.config.size
+        assert 0.0 <= world.y <= world.config.size
+        assert -math.pi <= world.theta <= math.pi
+    assert world.time() >= before
+    assert world.collected() + sum(t.on_field or t.held for t in world.trash) == len(world.trash)

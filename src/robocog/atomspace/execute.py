@@ -23,7 +23,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any
 
 from robocog.atomspace import types as _t
-from robocog.atomspace.atoms import Atom, Link, Node
+from robocog.atomspace.atoms import Atom, Link, Node, _raw_link
 from robocog.atomspace.matcher import PatternError, compile_pattern, is_variable_decl, substitute
 from robocog.atomspace.values import FALSE_TV, TRUE_TV, QueueValue, TruthValue, Value
 
@@ -130,7 +130,7 @@ def grounding_atom(variables: list[Atom], b: dict[Atom, Atom]) -> Atom:
     """One grounding as OpenCog returns it: the atom, or a ListLink for several."""
     if len(variables) == 1:
         return b[variables[0]]
-    return Link("ListLink", *(b[v] for v in variables))
+    return _raw_link("ListLink", tuple([b[v] for v in variables]))
 
 
 def run_query(space: AtomSpace, link: Atom) -> Any:
@@ -142,7 +142,8 @@ def run_query(space: AtomSpace, link: Atom) -> Any:
         return TRUE_TV if pattern.groundings(space, limit=1) else FALSE_TV
     found = pattern.groundings(space)
     if t == "GetLink":
-        return Link("SetLink", *(grounding_atom(pattern.variables, b) for b in found))
+        vs = pattern.variables
+        return _raw_link("SetLink", tuple([grounding_atom(vs, b) for b in found]))
     if t == "MeetLink":
         return QueueValue(grounding_atom(pattern.variables, b) for b in found)
     results: list[Atom] = []

@@ -59,8 +59,9 @@ class _Term:
         self.fn: Callable[[Atom, Bindings], Bindings | None] | None = None
 
     def seal(self) -> _Term:
-        """Build the matching closure of a term that yields at most one binding."""
-        if not self.multi:
+        """Build the matching closure of a variable or link term that yields at most
+        one binding (constants are compared inline by their parents)."""
+        if not self.multi and self.kind != _CONST:
             self.fn = _closure(self)
         return self
 
@@ -90,46 +91,42 @@ def _closure(t: _Term) -> Callable[[Atom, Bindings], Bindings | None]:
 
         return variable
     typ, n = t.type, t.arity
-    fns = tuple(k.fn for k in t.kids)
-    if n == 1:
-        (f0,) = fns
+    consts = tuple((i, k.atom) for i, k in enumerate(t.kids) if k.kind == _CONST)
+    active = tuple((i, k.fn) for i, k in enumerate(t.kids) if k.kind != _CONST)
+    if len(active) == 1:
+        (i0, f0) = active[0]
 
-        def link1(a: Atom, b: Bindings) -> Bindings | None:
+        def link_one(a: Atom, b: Bindings) -> Bindings | None:
             if a[0] != typ or a.__class__ is not Link:
                 return None
             out = a[1]
-            if len(out) != 1:
+            if len(out) != n:
                 return None
-            return f0(out[0], b)
+            for i, c in consts:
+                x = out[i]
+                if x is not c and x != c:
+                    return None
+            return f0(out[i0], b)  # type: ignore[misc]
 
-        return link1
-    if n == 2:
-        f0, f1 = fns
+        return link_one
 
-        def link2(a: Atom, b: Bindings) -> Bindings | None:
-            if a[0] != typ or a.__class__ is not Link:
-                return None
-            out = a[1]
-            if len(out) != 2:
-                return None
-            b2 = f0(out[0], b)
-            return None if b2 is None else f1(out[1], b2)
-
-        return link2
-
-    def linkn(a: Atom, b: Bindings) -> Bindings | None:
+    def link(a: Atom, b: Bindings) -> Bindings | None:
         if a[0] != typ or a.__class__ is not Link:
             return None
         out = a[1]
         if len(out) != n:
             return None
-        for f, x in zip(fns, out):  # noqa: B905 - lengths checked above
-            b = f(x, b)  # type: ignore[assignment]
+        for i, c in consts:
+            x = out[i]
+            if x is not c and x != c:
+                return None
+        for i, f in active:
+            b = f(out[i], b)  # type: ignore[misc, assignment]
             if b is None:
                 return None
         return b
 
-    return linkn
+    return link
 
 
 def _has_var_in(atom: Atom, varset: frozenset[Atom]) -> bool:
@@ -151,6 +148,8 @@ def _bind(t: _Term, a: Atom, b: Bindings) -> Bindings | None:
 
 def _match1(t: _Term, a: Atom, b: Bindings) -> Bindings | None:
     """Match a term that yields at most one binding."""
+    if t.kind == _CONST:
+        return b if (t.atom is a or t.atom == a) else None
     return t.fn(a, b)  # type: ignore[misc]
 
 
@@ -222,9 +221,9 @@ class _Clause:
     def __init__(self, atom: Atom, varset: frozenset[Atom], allowed: dict) -> None:
         self.atom = atom
         found: set[Atom] = set()
-        # anchors: (is_var, atom, path) with path = ((link type, position|None), ...)
-        # from the anchor's parent up to the clause root
-        self.anchors: list[tuple[bool, Atom, tuple[tuple[str, int | None], ...]]] = []
+        # anchors: (is_var, atom, path); a path is linked (link type, position|None,
+        # rest), from the anchor's parent up to the clause root (rest None)
+        self.anchors: list[tuple[bool, Atom, tuple]] = []
         self.term = _compile(atom, varset, allowed, found, self.anchors, None)
         self.vars = frozenset(found)
         self.ground = not found
@@ -256,7 +255,7 @@ def _compile(
     before = len(found)
     kids = []
     for i, a in enumerate(atom[1]):
-        step = ((atom[0], None if unordered else i),) + (up or ())
+        step = (atom[0], None if unordered else i, up)  # linked: cheap to extend
         kids.append(_compile(a, varset, allowed, found, anchors, step))
     if len(found) == before and all(k.kind == _CONST for k in kids):
         # a ground subterm: one anchor for the whole of it
@@ -330,10 +329,18 @@ class _Alt:
         return new
 
 
+#: link types that mean something to the matcher when they stand as a clause
+_SPECIAL = frozenset({"AndLink", "OrLink", "ChoiceLink", "PresentLink", "AbsentLink", "NotLink"})
+
+
 def _alternatives(body: Atom) -> list[_Alt]:
     """The body in disjunctive form: a list of conjunctions."""
     t = body[0]
     if t == "AndLink":
+        if all(c[0] not in _SPECIAL and not is_evaluatable(c) for c in body[1]):
+            plain = _Alt()  # the common case: a conjunction of terms to find
+            plain.mandatory.extend(body[1])
+            return [plain]
         alts = [_Alt()]
         for c in body[1]:
             sub = _alternatives(c)
@@ -709,19 +716,24 @@ def _candidates(space: AtomSpace, c: _Clause, b: Bindings):  # noqa: ANN202
             if n == 0:
                 return ()
     typ = c.root_type
-    if typ == "VariableNode":  # a bare variable clause grounds to any atom
-        return list(space)
+    if typ == "VariableNode":  # a bare variable clause: any atom of its declared types
+        allowed = c.term.allowed
+        if allowed is None:
+            return list(space)
+        return [a for t in allowed for a in space._type_set(t)]
     tcount = space.count_type(typ)
     if best is None or tcount <= best_n:
-        return space._by_type.get(typ, ()) if flat else space._type_set(typ)
+        # a copy: a grounded predicate called during the search may add atoms
+        return list(space._by_type.get(typ, ())) if flat else list(space._type_set(typ))
     a, inc, path = best
-    ltype, pos = path[0]
+    ltype, pos, path = path
     if pos is None:
         current = [lk for lk in inc if lk[0] == ltype]
     else:
         # members of a space are canonical: identity is equality here
         current = [lk for lk in inc if lk[0] == ltype and len(lk[1]) > pos and lk[1][pos] is a]
-    for ltype, pos in path[1:]:
+    while path is not None:
+        ltype, pos, path = path
         if not current:
             return ()
         if pos is None:

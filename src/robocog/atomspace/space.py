@@ -26,6 +26,8 @@ from robocog.atomspace.atoms import Atom, Link, Node
 from robocog.atomspace.values import DEFAULT_TV, TruthValue, Value
 
 _EMPTY: frozenset = frozenset()
+#: link types of which only one may exist per first atom (OpenCog's UniqueLink)
+_UNIQUE_KEYED = frozenset({"StateLink", "DefineLink"})
 
 #: a grounded function: called with the space and the argument atoms
 GroundedFunction = Callable[..., Any]
@@ -224,7 +226,13 @@ class AtomSpace:
 
     # ------------------------------------------------------------------ adding
     def add(self, atom: Atom, tv: TruthValue | None = None) -> Atom:
-        """Add ``atom`` (and its outgoing atoms); return the canonical instance."""
+        """Add ``atom`` (and its outgoing atoms); return the canonical instance.
+
+        As in OpenCog, a StateLink is unique per key (its first atom): adding one
+        replaces the key's previous state; a DefineLink may define its first atom once.
+        """
+        if atom[0] in _UNIQUE_KEYED and atom.__class__ is Link and atom[1]:
+            self._unique_keyed(atom)
         if self._parent is None and self._owned_inc is None and self._owned_typ is None:
             found = self._atoms.get(atom)
             if found is None:
@@ -245,6 +253,18 @@ class AtomSpace:
         if tv is not None:
             self.set_tv(found, tv)
         return found
+
+    def _unique_keyed(self, atom: Link) -> None:
+        if atom in self:
+            return
+        key = atom[1][0]
+        if key not in self:
+            return
+        for old in list(self.incoming(key, atom[0])):
+            if old[1] and old[1][0] == key:
+                if atom[0] == "DefineLink":
+                    raise ValueError(f"{key} is already defined")
+                self.remove(old, recursive=True)
 
     def _add_flat(self, atom: Atom) -> Atom:
         """Insert into a flat space that shares no index sets (the loading fast path)."""

@@ -27,7 +27,7 @@ NODE_TYPES: set[str] = set()
 LINK_TYPES: set[str] = set()
 
 
-class TypeError_(ValueError):
+class AtomTypeError(ValueError):
     """An unknown or ill-declared atom type."""
 
 
@@ -38,16 +38,16 @@ def declare_type(name: str, *parents: str) -> str:
     declare what they need without caring about import order.
     """
     if not name or not name.isidentifier():
-        raise TypeError_(f"bad type name {name!r}")
+        raise AtomTypeError(f"bad type name {name!r}")
     if not parents:
-        raise TypeError_(f"type {name} needs at least one parent")
+        raise AtomTypeError(f"type {name} needs at least one parent")
     for p in parents:
         if p not in _PARENTS:
-            raise TypeError_(f"unknown parent type {p!r} for {name}")
+            raise AtomTypeError(f"unknown parent type {p!r} for {name}")
     name = sys.intern(name)
     if name in _PARENTS:
         if set(_PARENTS[name]) != set(parents):
-            raise TypeError_(f"type {name} already declared with parents {_PARENTS[name]}")
+            raise AtomTypeError(f"type {name} already declared with parents {_PARENTS[name]}")
         return name
     _PARENTS[name] = tuple(parents)
     anc = {name}

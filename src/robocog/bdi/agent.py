@@ -23,7 +23,7 @@ import functools
 import heapq
 import sys
 from collections import deque
-from collections.abc import Callable, Iterable, Iterator
+from collections.abc import Callable, Iterable
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -42,7 +42,14 @@ from robocog.bdi.terms import (
     is_ground,
     term_str,
 )
-from robocog.bdi.unifier import EvalError, deref, resolve, unify, variables
+from robocog.bdi.unifier import (
+    EvalError,
+    current_agent,
+    deref,
+    resolve,
+    unify,
+    variables,
+)
 
 if TYPE_CHECKING:
     from robocog.bdi.mas import Message, MultiAgentSystem
@@ -108,6 +115,9 @@ class Agent:
         self._timers: list[tuple[float, int, Intention]] = []
         self._timer_seq = 0
         self._event_waiters: list[tuple[P.Trigger, Intention, float | None]] = []
+        self._formula_waiters: list[tuple[Term, Intention]] = []
+        #: intention id -> (variable for the elapsed time, start) of a running .wait
+        self.wait_elapsed: dict[int, tuple[Term, float]] = {}
         self._percepts: dict[Literal, None] = {}
         self._perceived: dict[Literal, None] = {}
         self._percepts_dirty = False
@@ -240,6 +250,7 @@ class Agent:
         """All solutions of a formula, e.g. ``"at(X) & X \\== door"``, as name -> value."""
         f = parse_term(formula) if isinstance(formula, str) else formula
         names = [v for v in variables(f) if v.name != "_"]
+        current_agent[0] = self
         out = []
         s: dict = {}
         for _ in solve(self, f, s, []):
@@ -335,6 +346,7 @@ class Agent:
 
     def step(self) -> None:
         """One reasoning cycle."""
+        current_agent[0] = self
         self.cycle += 1
         C = self.C
         # ---- sense
@@ -344,6 +356,8 @@ class Agent:
             self._process_message(self.mailbox.popleft())
         if self._timers and self._timers[0][0] <= self.clock:
             self._wake_timers()
+        if self._formula_waiters:
+            self._check_formula_waiters()
         # ---- deliberate (an external belief event that no plan handles is discarded
         # and the next event selected in the same cycle, as in Jason)
         events = C.events
@@ -396,8 +410,27 @@ class Agent:
     def _wake_timers(self) -> None:
         while self._timers and self._timers[0][0] <= self.clock:
             _t, _seq, i = heapq.heappop(self._timers)
-            if self.C.pending.pop(i.id, None) is not None and not i.dropped:
-                self._advance(i)
+            entry = self.C.pending.pop(i.id, None)
+            if entry is None or i.dropped:
+                continue
+            if entry[1] in ("wait_event", "wait_formula"):
+                # the awaited event or condition did not come in time: .wait fails,
+                # unless it was given a variable for the elapsed time
+                if self._resume_wait(i) is False:
+                    self.fail_intention(i, "ia_failed", ".wait timed out")
+                continue
+            self._advance(i)
+
+    def _resume_wait(self, i: Intention) -> bool:
+        """Resume ``i`` after a ``.wait``; False if it timed out without an elapsed var."""
+        got = self.wait_elapsed.pop(i.id, None)
+        if got is None:
+            return False
+        term, start = got
+        elapsed = self.clock - start
+        unify(term, int(elapsed) if elapsed == int(elapsed) else elapsed, i.top().s, [])
+        self._advance(i)
+        return True
 
     def add_timer(self, delay_ms: float, i: Intention) -> None:
         """Suspend ``i`` and resume it after ``delay_ms`` (used by ``.wait``)."""
@@ -414,6 +447,34 @@ class Agent:
             self._timer_seq += 1
             heapq.heappush(self._timers, (deadline, self._timer_seq, i))
 
+    def wait_formula(self, f: Term, i: Intention, timeout: float | None) -> None:
+        """Suspend ``i`` until the formula ``f`` holds (checked at each cycle)."""
+        self._formula_waiters.append((f, i))
+        self.C.pending[i.id] = (i, "wait_formula")
+        if timeout is not None:
+            self._timer_seq += 1
+            heapq.heappush(self._timers, (self.clock + timeout, self._timer_seq, i))
+
+    def _check_formula_waiters(self) -> None:
+        keep = []
+        for f, i in self._formula_waiters:
+            if i.id not in self.C.pending or i.dropped:
+                continue
+            try:
+                ok = holds(self, f, i.top().s, [])
+            except Exception as exc:  # noqa: BLE001 - a bad formula ends the wait as failed
+                self.warn(f".wait on {term_str(f)}: {exc}")
+                self.C.pending.pop(i.id, None)
+                self.fail_intention(i, "ia_failed", str(exc))
+                continue
+            if ok:
+                self.C.pending.pop(i.id, None)
+                if not self._resume_wait(i):
+                    self._advance(i)
+            else:
+                keep.append((f, i))
+        self._formula_waiters = keep
+
     def _check_event_waiters(self, trig: P.Trigger) -> None:
         keep = []
         for entry in self._event_waiters:
@@ -425,7 +486,8 @@ class Agent:
                 and unify(t.literal, trig.literal, i.top().s, [])
             ):
                 self.C.pending.pop(i.id, None)
-                self._advance(i)
+                if not self._resume_wait(i):
+                    self._advance(i)
             elif i.id in self.C.pending:
                 keep.append(entry)
         self._event_waiters = keep
@@ -453,7 +515,7 @@ class Agent:
     def _context(self, plan: P.Plan, s: dict, trail: list) -> bool:
         try:
             return holds(self, plan.context, s, trail)
-        except (ActionError, EvalError, RecursionError) as exc:
+        except Exception as exc:  # noqa: BLE001 - a bad context is just false
             self.warn(f"error in the context of {plan.trigger!r}: {exc}")
             return False
 
@@ -469,8 +531,14 @@ class Agent:
                 lit = trig.literal
                 trail: list = []
                 for plan in cands:
-                    s: dict = {}
-                    if unify(plan.trigger.literal, lit, s, trail):
+                    params = plan.params
+                    if params is not None and lit.__class__ is Literal and not lit.neg:
+                        s: dict = dict(zip(params, lit.args, strict=True))
+                        matched = True
+                    else:
+                        s = {}
+                        matched = unify(plan.trigger.literal, lit, s, trail)
+                    if matched:
                         ctx = plan.context
                         if ctx is None:
                             option = (plan, s)
@@ -479,7 +547,7 @@ class Agent:
                             if holds(self, ctx, s, trail):
                                 option = (plan, s)
                                 break
-                        except (ActionError, EvalError, RecursionError) as exc:
+                        except Exception as exc:  # noqa: BLE001 - a bad context is just false
                             self.warn(f"error in the context of {plan.trigger!r}: {exc}")
                     trail.clear()
         if option is None:
@@ -532,7 +600,7 @@ class Agent:
                 val = _propagate(val, ret[1])
             return ("fixed", val)
         entry = (top.cur[0].term, top.s, top.trigger.literal)
-        return ("chain", [entry] + (ret[1] if ret is not None else []))
+        return ("chain", (entry, ret[1] if ret is not None else None))
 
     def _no_plan(self, ev: Event, what: str) -> None:
         trig = ev.trigger
@@ -751,12 +819,17 @@ class Agent:
                 caller = stack[-1]
                 if caller.cur is not None:
                     ret = top.ret
+                    lit = trig.literal
+                    if ret is None and lit.__class__ is Literal and lit.ground:
+                        # the goal was sent without variables: nothing comes back
+                        caller.cur = caller.cur[1]
+                        continue
                     if ret is None:
-                        val = resolve(trig.literal, top.s)
+                        val = resolve(lit, top.s)
                     elif ret[0] == "fixed":
                         val = ret[1]
                     else:
-                        val = _propagate(resolve(trig.literal, top.s), ret[1])
+                        val = _propagate(resolve(lit, top.s), ret[1])
                     term = caller.cur[0].term
                     if term.__class__ is Literal and not term.ground:
                         unify(term, val, caller.s, [])
@@ -795,10 +868,21 @@ class Agent:
                     else:
                         self.fail_intention(i, "ia_failed", "")
             elif k == P.ACHIEVE_STEP:
-                lit = resolve(step.term, s, {})
+                goal = step.state
+                if goal is None:
+                    goal = step.term
+                    if goal.__class__ is Literal:
+                        goal = step.state = _with_source(goal)
+                lit = resolve(goal, s, {})
                 if lit.__class__ is not Literal:
                     raise ActionError(f"{term_str(lit)} is not a goal", "body_var_without_value")
-                self.post(Event(P.Trigger("+", P.ACHIEVE, _with_source(lit)), i))
+                if lit is not goal and goal.__class__ is not Literal:
+                    lit = _with_source(lit)
+                trig = P.Trigger("+", P.ACHIEVE, lit)
+                if self._event_waiters or self._has_atomic:
+                    self.post(Event(trig, i))
+                else:
+                    self.C.events.append(Event(trig, i))
             elif k == P.ADD_BEL or k == P.ADD_BEL_NF or k == P.ADD_BEL_END:
                 self._add_belief_step(i, step, s)
             elif k == P.DEL_ADD_BEL:
@@ -854,6 +938,9 @@ class Agent:
             self.fail_intention(i, "ia_failed", str(exc))
         except RecursionError:
             self.fail_intention(i, "ia_failed", "term nesting too deep")
+        except Exception as exc:  # noqa: BLE001 - a faulty extension must not stop the agent
+            self.warn(f"error executing {step!r}: {exc.__class__.__name__}: {exc}")
+            self.fail_intention(i, "ia_failed", str(exc))
 
     # ---- body formulas
     def _add_belief_step(self, i: Intention, step: P.Step, s: dict) -> None:
@@ -1075,8 +1162,10 @@ def _unifies(a: Term, b: Term, s: dict) -> bool:
     return ok
 
 
-def _propagate(val: Term, chain: list) -> Term:
-    for step_term, s2, trig_lit in chain:
+def _propagate(val: Term, chain: tuple | None) -> Term:
+    """Give ``val`` back through the frames tail recursion removed (innermost first)."""
+    while chain is not None:
+        (step_term, s2, trig_lit), chain = chain
         unify(step_term, val, s2, [])
         val = resolve(trig_lit, s2)
     return val
@@ -1088,12 +1177,6 @@ def _default_printer(name: str, text: str) -> None:
 
 def _default_warner(name: str, text: str) -> None:
     sys.stderr.write(f"[{name}] {text}\n")
-
-
-def iter_solutions(agent: Agent, f: Term, s: dict) -> Iterator[dict]:
-    """Snapshots of the substitution for each solution of ``f``."""
-    for _ in solve(agent, f, s, []):
-        yield dict(s)
 
 
 __all__ = ["Agent", "ActionHandle", "ParseError", "SUSPEND", "DONE"]

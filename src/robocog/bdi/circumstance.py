@@ -4,7 +4,7 @@ An intention is a stack of intended means. Each intended means points into its p
 compiled body (``cur``) and owns its substitution (``s``), so a plan instance costs one
 small object. ``ret`` carries what tail-recursion optimisation removed from the stack:
 ``None`` (nothing), ``("fixed", literal)`` (the value to give back is already known) or
-a list of frames whose variables still wait for the result.
+``("chain", frames)``, a linked list of the frames whose variables still wait for it.
 """
 
 from __future__ import annotations

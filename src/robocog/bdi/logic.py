@@ -73,6 +73,9 @@ def solve(agent: Agent, f: Term, s: dict, trail: list) -> Iterator[None]:
     raise ActionError(f"{term_str(f)} is not a logical formula")
 
 
+_TRUTH = ("true", "false")
+
+
 def holds(agent: Agent, f: Term, s: dict, trail: list) -> bool:
     """First solution of ``f``: its bindings stay in ``s``; False leaves ``s`` unchanged."""
     c = f.__class__
@@ -97,7 +100,7 @@ def holds(agent: Agent, f: Term, s: dict, trail: list) -> bool:
             undo(s, trail, mark)
             return False
         return True
-    elif c is Literal and f.functor[0] != ".":
+    elif c is Literal and f.functor[0] != "." and (f.args or f.functor not in _TRUTH):
         got = agent.bb.first(f, s, trail)
         if got is not None:
             return got

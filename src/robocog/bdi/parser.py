@@ -15,6 +15,7 @@ from pathlib import Path
 
 import lark
 from lark import Token, Transformer, v_args
+from lark.tree import Meta
 
 from robocog.bdi import plans as P
 from robocog.bdi.terms import (
@@ -78,7 +79,8 @@ def _unescape(s: str) -> str:
 
 
 class _Builder(Transformer):
-    """Builds AgentSpeak objects bottom-up while the LALR parser reduces."""
+    """Builds AgentSpeak objects bottom-up from the parse tree; each method is named
+    after the grammar rule it handles (lark's convention)."""
 
     def __init__(self) -> None:
         super().__init__(visit_tokens=False)
@@ -112,7 +114,7 @@ class _Builder(Transformer):
         return str(items[0])
 
     @v_args(meta=True)
-    def plan(self, meta, items: list) -> tuple:  # noqa: ANN001 - lark meta
+    def plan(self, meta: Meta, items: list) -> tuple:
         self._clause_done()
         label = None
         context = None
@@ -161,50 +163,50 @@ class _Builder(Transformer):
         steps = [s for s in items if s is not None]
         return P.chain(steps)
 
-    def _step(self, kind: int, meta, term: Term) -> P.Step:  # noqa: ANN001
+    def _step(self, kind: int, meta: Meta, term: Term) -> P.Step:
         line = meta.line if not getattr(meta, "empty", True) else 0
         if isinstance(term, Token):
             term = self._var(str(term))
         return P.Step(kind, term, line=line)
 
     @v_args(meta=True)
-    def achieve(self, meta, items: list) -> P.Step:  # noqa: ANN001
+    def achieve(self, meta: Meta, items: list) -> P.Step:
         return self._step(P.ACHIEVE_STEP, meta, items[0])
 
     @v_args(meta=True)
-    def achieve_nf(self, meta, items: list) -> P.Step:  # noqa: ANN001
+    def achieve_nf(self, meta: Meta, items: list) -> P.Step:
         return self._step(P.ACHIEVE_NF, meta, items[0])
 
     @v_args(meta=True)
-    def test(self, meta, items: list) -> P.Step:  # noqa: ANN001
+    def test(self, meta: Meta, items: list) -> P.Step:
         return self._step(P.TEST_STEP, meta, items[0])
 
     @v_args(meta=True)
-    def add_bel(self, meta, items: list) -> P.Step:  # noqa: ANN001
+    def add_bel(self, meta: Meta, items: list) -> P.Step:
         return self._step(P.ADD_BEL, meta, items[0])
 
     @v_args(meta=True)
-    def add_bel_nf(self, meta, items: list) -> P.Step:  # noqa: ANN001
+    def add_bel_nf(self, meta: Meta, items: list) -> P.Step:
         return self._step(P.ADD_BEL_NF, meta, items[0])
 
     @v_args(meta=True)
-    def add_bel_end(self, meta, items: list) -> P.Step:  # noqa: ANN001
+    def add_bel_end(self, meta: Meta, items: list) -> P.Step:
         return self._step(P.ADD_BEL_END, meta, items[0])
 
     @v_args(meta=True)
-    def del_bel(self, meta, items: list) -> P.Step:  # noqa: ANN001
+    def del_bel(self, meta: Meta, items: list) -> P.Step:
         return self._step(P.DEL_BEL, meta, items[0])
 
     @v_args(meta=True)
-    def del_bel_nf(self, meta, items: list) -> P.Step:  # noqa: ANN001
+    def del_bel_nf(self, meta: Meta, items: list) -> P.Step:
         return self._step(P.DEL_BEL_NF, meta, items[0])
 
     @v_args(meta=True)
-    def del_add_bel(self, meta, items: list) -> P.Step:  # noqa: ANN001
+    def del_add_bel(self, meta: Meta, items: list) -> P.Step:
         return self._step(P.DEL_ADD_BEL, meta, items[0])
 
     @v_args(meta=True)
-    def formula(self, meta, items: list) -> P.Step | None:  # noqa: ANN001
+    def formula(self, meta: Meta, items: list) -> P.Step | None:
         t = items[0]
         c = t.__class__
         if c is Literal:
@@ -217,7 +219,7 @@ class _Builder(Transformer):
         return self._step(P.CONSTRAINT, meta, t)
 
     @v_args(meta=True)
-    def if_stmt(self, meta, items: list) -> P.Step:  # noqa: ANN001
+    def if_stmt(self, meta: Meta, items: list) -> P.Step:
         cond, then = items[0], items[1]
         branches = [(cond, then)]
         orelse = None
@@ -236,12 +238,12 @@ class _Builder(Transformer):
         return ("else", items[0])
 
     @v_args(meta=True)
-    def while_stmt(self, meta, items: list) -> P.Step:  # noqa: ANN001
+    def while_stmt(self, meta: Meta, items: list) -> P.Step:
         line = meta.line if not getattr(meta, "empty", True) else 0
         return P.Step(P.WHILE, items[0], (items[1],), line=line)
 
     @v_args(meta=True)
-    def for_stmt(self, meta, items: list) -> P.Step:  # noqa: ANN001
+    def for_stmt(self, meta: Meta, items: list) -> P.Step:
         line = meta.line if not getattr(meta, "empty", True) else 0
         return P.Step(P.FOR, items[0], (items[1],), line=line)
 
@@ -329,7 +331,13 @@ class _Builder(Transformer):
             elif isinstance(it, tuple) and it and it[0] == "annots":
                 annots = sort_annots(it[1])
         lit = Literal(functor, args, annots, neg)
-        if functor.startswith("math.") and not neg and not annots:
+        if (
+            not neg
+            and not annots
+            and (
+                functor.startswith("math.") or (functor in (".length", ".count") and len(args) == 1)
+            )
+        ):
             return Arith("call", lit)
         return lit
 
@@ -388,7 +396,8 @@ def _describe(exc: lark.exceptions.UnexpectedInput) -> str:
         tok = exc.token
         if tok.type == "$END":
             return "unexpected end of input"
-        return f"unexpected {str(tok)!r}"
+        text = str(tok).split()[0] if str(tok).split() else str(tok)
+        return f"unexpected {text[:20]!r}"
     if isinstance(exc, lark.exceptions.UnexpectedCharacters):
         ch = exc.char if hasattr(exc, "char") else "?"
         return f"unexpected character {ch!r}"

@@ -149,7 +149,7 @@ def chain_steps(c: Chain) -> list[Step]:
 class Plan:
     """``@label trigger : context <- body.``"""
 
-    __slots__ = ("label", "trigger", "context", "body", "source", "line", "order")
+    __slots__ = ("label", "trigger", "context", "body", "source", "line", "order", "params")
 
     def __init__(
         self,
@@ -167,12 +167,27 @@ class Plan:
         self.source = source
         self.line = line
         self.order = 0
+        #: the trigger's arguments when they are distinct variables and there are no
+        #: annotations: relevance is then a matter of binding them
+        self.params = _simple_params(trigger)
 
     def __repr__(self) -> str:
         lab = f"@{term_str(self.label)} " if self.label is not None else ""
         ctx = f" : {term_str(self.context)}" if self.context is not None else ""
         body = "; ".join(repr(s) for s in chain_steps(self.body)) or "true"
         return f"{lab}{self.trigger!r}{ctx} <- {body}."
+
+
+def _simple_params(trigger: Trigger | None) -> tuple | None:
+    lit = trigger.literal if trigger is not None else None
+    if lit.__class__ is not Literal or lit.annots:
+        return None
+    args = lit.args
+    if all(a.__class__ is Var for a in args) and len({id(a) for a in args}) == len(args):
+        if any(a.name == "_" for a in args):
+            return None
+        return args
+    return None
 
 
 class PlanLibrary:
@@ -219,8 +234,13 @@ class PlanLibrary:
 
     def candidates(self, trigger: Trigger) -> list[Plan]:
         """Plans whose trigger may be relevant for ``trigger``, in program order."""
-        key = trigger.key()
-        found = self._index.get(key, ()) if key is not None else ()
+        lit = trigger.literal
+        if lit.__class__ is Literal:
+            found = self._index.get(
+                (trigger.op, trigger.kind, lit.functor, len(lit.args), lit.neg), ()
+            )
+        else:
+            found = ()
         if not self._var_plans:
             return found  # type: ignore[return-value]
         extra = [p for p in self._var_plans if p.trigger.op == trigger.op]

@@ -423,11 +423,20 @@ def _fail(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
     if not args:
         return False
     annots = tuple(resolve(a, s) for a in args)
-    err = ActionError("failed by .fail")
+    msg = "fail"
     for a in annots:
-        if a.__class__ is Literal and a.functor == "error" and a.args:
+        if a.__class__ is Literal and a.functor == "error_msg" and len(a.args) == 1:
+            msg = print_str(a.args[0])
+            break
+    err = ActionError(msg)
+    for a in annots:
+        if a.__class__ is Literal and a.functor == "error" and len(a.args) == 1:
             err.error = term_str(a.args[0])
-    err.annots = tuple(a for a in annots if not (a.__class__ is Literal and a.functor == "error"))
+    err.annots = tuple(
+        a
+        for a in annots
+        if not (a.__class__ is Literal and a.functor in ("error", "error_msg") and len(a.args) == 1)
+    )
     raise err
 
 
@@ -547,7 +556,7 @@ def _desire(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Iterator[
 def _wait(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Any:
     from robocog.bdi.agent import SUSPEND
 
-    _need(args, 1, "wait", 2)
+    _need(args, 1, "wait", 3)
     if ctx is None:
         raise ActionError(".wait can only be used in a plan body")
     i = ctx[0]
@@ -556,10 +565,21 @@ def _wait(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Any:
         ag.add_timer(float(first), i)
         return SUSPEND
     timeout = float(_num(args[1], s, "wait")) if len(args) > 1 else None
+    if len(args) > 2:
+        ag.wait_elapsed[i.id] = (args[2], ag.clock)
     trig = _trigger_of(first)
-    if trig is None:
+    if trig is not None:
+        ag.wait_event(trig, i, timeout)
+        return SUSPEND
+    from robocog.bdi.logic import holds
+    from robocog.bdi.terms import And, Not, Or, Rel
+
+    f = args[0]
+    if resolve(f, s).__class__ not in (Literal, Rel, And, Or, Not):
         raise ActionError(f".wait: cannot wait for {term_str(first)}")
-    ag.wait_event(trig, i, timeout)
+    if holds(ag, f, s, trail):
+        return True
+    ag.wait_formula(f, i, timeout)
     return SUSPEND
 
 
@@ -687,3 +707,203 @@ def _stop_mas(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Any:
 
 
 __all__ = ["LIBRARY", "internal", "NIL"]
+
+
+# ---------------------------------------------------------------- more of Jason's library
+@internal("asserta")
+def _asserta(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
+    _need(args, 1, "asserta")
+    return _assert(ag, resolve(args[0], s), at_end=False)
+
+
+@internal("assertz")
+def _assertz(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
+    _need(args, 1, "assertz")
+    return _assert(ag, resolve(args[0], s), at_end=True)
+
+
+def _assert(ag: Agent, lit: Term, at_end: bool) -> bool:
+    from robocog.bdi.terms import SOURCE_SELF
+
+    if lit.__class__ is not Literal:
+        raise ActionError("assert: argument must be a literal")
+    if not lit.sources():
+        lit = lit.add_annots((SOURCE_SELF,))
+    if ag.bb.add(lit, at_end=at_end) is not None:
+        ag.post(_event("+", P.BELIEF, lit))
+    return True
+
+
+@internal("puts")
+def _puts(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
+    import re
+
+    _need(args, 1, "puts", 2)
+    text = resolve(args[0], s)
+    if text.__class__ is not str:
+        raise ActionError(".puts expects a string")
+    values = {v.name: v for v in s if v.__class__ is Var}
+
+    def sub(m: re.Match) -> str:
+        from robocog.bdi.parser import ParseError, parse_term
+
+        src = m.group(1)
+        try:
+            t = parse_term(src)
+        except ParseError:
+            return m.group(0)
+        from robocog.bdi.unifier import variables
+
+        mapping = {v: values[v.name] for v in variables(t) if v.name in values}
+        t = resolve(resolve(t, mapping), s)
+        return print_str(t)
+
+    out = re.sub(r"#\{([^}]*)\}", sub, text)
+    if len(args) > 1:
+        return _out(out, args[1], s, trail)
+    ag.print(out)
+    return True
+
+
+@internal("printf")
+def _printf(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
+    import re
+
+    if not args:
+        raise ActionError(".printf needs a format")
+    fmt = resolve(args[0], s)
+    if fmt.__class__ is not str:
+        raise ActionError(".printf: the format must be a string")
+    vals = [resolve(a, s) for a in args[1:]]
+    k = 0
+
+    def sub(m: re.Match) -> str:
+        nonlocal k
+        spec = m.group(0)
+        if spec == "%%":
+            return "%"
+        if spec == "%n":
+            return "\n"
+        if k >= len(vals):
+            raise ActionError(".printf: not enough arguments")
+        v = vals[k]
+        k += 1
+        conv = spec[-1]
+        try:
+            if conv == "s":
+                return spec % print_str(v)
+            if conv == "d":
+                return spec % int(v)
+            if conv in "feg":
+                return spec % float(v)
+        except (TypeError, ValueError) as exc:
+            raise ActionError(f".printf: {exc}") from exc
+        return spec
+
+    ag.print(re.sub(r"%[-#+ 0,(]*\d*(?:\.\d+)?[sdfegn%]", sub, fmt))
+    return True
+
+
+def _sublists(items: list) -> Iterator[Term]:
+    for i in range(len(items)):
+        for j in range(len(items), i, -1):
+            yield make_list(items[i:j])
+    yield NIL
+
+
+@internal("prefix")
+def _prefix(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Iterator[None]:
+    _need(args, 2, "prefix")
+    v = resolve(args[1], s)
+    if v.__class__ is str:
+        return _each((v[:j] for j in range(len(v), -1, -1)), args[0], s, trail)
+    items = _list(v, s, "prefix")
+    return _each((make_list(items[:j]) for j in range(len(items), -1, -1)), args[0], s, trail)
+
+
+@internal("suffix")
+def _suffix(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Iterator[None]:
+    _need(args, 2, "suffix")
+    v = resolve(args[1], s)
+    if v.__class__ is str:
+        return _each((v[j:] for j in range(len(v) + 1)), args[0], s, trail)
+    items = _list(v, s, "suffix")
+    return _each((make_list(items[j:]) for j in range(len(items) + 1)), args[0], s, trail)
+
+
+@internal("sublist")
+def _sublist(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Iterator[None]:
+    _need(args, 2, "sublist")
+    return _each(_sublists(_list(args[1], s, "sublist")), args[0], s, trail)
+
+
+@internal("replace")
+def _replace(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
+    import re
+
+    _need(args, 4, "replace")
+    text = _text(args[0], s)
+    pattern = _text(args[1], s)
+    repl = _text(args[2], s)
+    try:
+        out = re.sub(pattern, repl.replace("\\", "\\\\"), text)
+    except re.error as exc:
+        raise ActionError(f".replace: {exc}") from exc
+    return _out(out, args[3], s, trail)
+
+
+@internal("copy_term")
+def _copy_term(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
+    _need(args, 2, "copy_term")
+    return _out(resolve(args[0], s, {}), args[1], s, trail)
+
+
+@internal("add_annot")
+def _add_annot(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
+    _need(args, 3, "add_annot")
+    t = resolve(args[0], s)
+    a = resolve(args[1], s)
+    if t.__class__ is Literal:
+        extra = list(iter_list(a)) if is_list(a) else [a]
+        t = t.add_annots(extra)
+    elif is_list(t):
+        extra = list(iter_list(a)) if is_list(a) else [a]
+        t = make_list([x.add_annots(extra) if x.__class__ is Literal else x for x in iter_list(t)])
+    return _out(t, args[2], s, trail)
+
+
+@internal("eval")
+def _eval(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
+    _need(args, 2, "eval")
+    from robocog.bdi.logic import holds
+
+    mark = len(trail)
+    ok = holds(ag, args[1], s, trail)
+    undo(s, trail, mark)
+    return _out(Literal("true" if ok else "false"), args[0], s, trail)
+
+
+@internal("shuffle")
+def _shuffle(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
+    _need(args, 2, "shuffle")
+    items = _list(args[0], s, "shuffle")
+    rng = getattr(ag, "rng", None)
+    if rng is None:
+        rng = ag.rng = random.Random(0)
+    rng.shuffle(items)
+    return _out(make_list(items), args[1], s, trail)
+
+
+@internal("set_random_seed")
+def _set_random_seed(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
+    _need(args, 1, "set_random_seed")
+    ag.rng = random.Random(int(_num(args[0], s, "set_random_seed")))
+    return True
+
+
+@internal("drop_event")
+def _drop_event(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
+    _need(args, 1, "drop_event")
+    goal = resolve(args[0], s)
+    ag.C.keep_events(lambda e: not (e.intention is None and _unifies(goal, e.trigger.literal)))
+    return True

@@ -13,9 +13,9 @@ subset of those of ``b`` (so a query ``p[source(percept)]`` finds only perceived
 from __future__ import annotations
 
 import math
+import random
 
 from robocog.bdi.terms import (
-    NIL,
     And,
     Arith,
     Body,
@@ -217,7 +217,7 @@ def resolve(t: Term, s: dict, fresh: dict | None = None) -> Term:
         if t.ground:
             return t
         items = []
-        while t.__class__ is Cons:
+        while t.__class__ is Cons and not t.ground:
             items.append(resolve(t.head, s, fresh))
             t = t.tail
             while t.__class__ is Var:
@@ -225,7 +225,8 @@ def resolve(t: Term, s: dict, fresh: dict | None = None) -> Term:
                 if v is None:
                     break
                 t = v
-        out = resolve(t, s, fresh) if t.__class__ is not Nil else NIL
+        # a ground tail (typically an accumulator) is shared, not copied
+        out = t if t.__class__ is Cons or t.__class__ is Nil else resolve(t, s, fresh)
         for item in reversed(items):
             out = Cons(item, out)
         return out
@@ -292,7 +293,7 @@ def _apply_op(op: str, x, y):  # noqa: ANN001, ANN202 - numbers
         except (OverflowError, ZeroDivisionError) as exc:
             raise EvalError(str(exc)) from exc
         if isinstance(r, complex):
-            raise EvalError("complex result")
+            return math.nan  # as Java's Math.pow
         if r == int(r) and abs(r) < 2**63 if math.isfinite(r) else False:
             return int(r)
         return r
@@ -368,9 +369,26 @@ def evaluate(t: Term, s: dict, fresh: dict | None = None, strict: bool = True) -
 def _call(t: Arith, s: dict, fresh: dict | None, strict: bool) -> Term:
     """Jason's arithmetic functions ``math.abs(X)``, ``math.max(X, Y)``, ..."""
     lit = t.left
+    if lit.functor == ".count":
+        return _count(lit.args[0], s)
     args = [evaluate(a, s, fresh, strict) for a in lit.args]
+    if lit.functor == ".length":
+        v = args[0]
+        if v.__class__ is str:
+            return len(v)
+        if v.__class__ is Cons or v.__class__ is Nil:
+            n = 0
+            while v.__class__ is Cons:
+                n += 1
+                v = v.tail
+            return n
+        raise EvalError(f".length: {v!r} is not a list or a string")
     name = lit.functor[5:]
-    if name in ("sum", "average") and len(args) == 1 and args[0].__class__ in (Cons, Nil):
+    if (
+        name in ("sum", "average", "mean", "median", "max", "min", "std_dev")
+        and len(args) == 1
+        and args[0].__class__ in (Cons, Nil)
+    ):
         items = []
         x = args[0]
         while x.__class__ is Cons:
@@ -379,7 +397,20 @@ def _call(t: Arith, s: dict, fresh: dict | None, strict: bool) -> Term:
         if all(i.__class__ in (int, float) for i in items):
             if name == "sum":
                 return _norm(sum(items))
-            return sum(items) / len(items) if items else 0
+            if not items:
+                raise EvalError(f"{lit.functor} of an empty list")
+            if name in ("average", "mean"):
+                return sum(items) / len(items)
+            if name == "max":
+                return max(items)
+            if name == "min":
+                return min(items)
+            if name == "median":
+                srt = sorted(items)
+                mid = len(srt) // 2
+                return srt[mid] if len(srt) % 2 else (srt[mid - 1] + srt[mid]) / 2
+            mean = sum(items) / len(items)
+            return math.sqrt(sum((x - mean) ** 2 for x in items) / (len(items) - 1 or 1))
     if not all(a.__class__ in (int, float) for a in args):
         return Arith("call", Literal(lit.functor, tuple(args)))
     fn = _FUNCTIONS.get((name, len(args)))
@@ -389,6 +420,26 @@ def _call(t: Arith, s: dict, fresh: dict | None, strict: bool) -> Term:
         return fn(*args)
     except (ValueError, OverflowError, ZeroDivisionError) as exc:
         raise EvalError(f"{lit.functor}: {exc}") from exc
+
+
+_RNG = random.Random(0)
+
+#: the agent whose cycle is running, for functions that read beliefs (``.count``)
+current_agent: list = [None]
+
+
+def _count(query: Term, s: dict) -> int:
+    agent = current_agent[0]
+    if agent is None:
+        raise EvalError(".count needs an agent")
+    from robocog.bdi.logic import solve
+
+    n = 0
+    trail: list = []
+    for _ in solve(agent, query, s, trail):
+        n += 1
+    undo(s, trail, 0)
+    return n
 
 
 def _round(x: float) -> int:
@@ -414,6 +465,10 @@ _FUNCTIONS = {
     ("atan2", 2): math.atan2,
     ("mod", 2): lambda x, y: _apply_op("mod", x, y),
     ("signum", 1): lambda x: (x > 0) - (x < 0),
+    ("acos", 1): math.acos,
+    ("asin", 1): math.asin,
+    ("random", 0): lambda: _RNG.random(),
+    ("random", 1): lambda x: _RNG.random() * x,
 }
 
 

@@ -115,6 +115,7 @@ def run_garbage(
     rounds: int,
     json_path: Path | None,
     out: Path | None,
+    budget: float | None = None,
 ) -> ExperimentResult:
     """Shared by ``experiment garbage`` and ``demo``: run, print the table, write files."""
     from rich.console import Console
@@ -143,10 +144,13 @@ def run_garbage(
             config=config,
             rounds=rounds,
             advance=lambda: progress.advance(task),
+            budget=budget,
         )
     console.print(summary_table(result))
     for m in result.minds.values():
         console.print(escape(mind_status(m)))
+        if m.cut_short:
+            console.print(f"{m.name}: {m.cut_short} runs left out to keep within the time budget")
     acc = result.accumulation
     if acc is not None and acc.unavailable is None:
         console.print(

@@ -21,6 +21,12 @@ def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--rounds", type=int, default=4, help="NARS's learning rounds (default 4)")
     parser.add_argument("--out", type=Path, default=Path("robocog-demo"), metavar="DIR")
     parser.add_argument("--json", type=Path, metavar="FILE", help="also write the results as JSON")
+    parser.add_argument(
+        "--budget",
+        type=float,
+        default=100.0,
+        help="seconds of wall time for all runs (default 100): a slow mind runs fewer",
+    )
 
 
 def run(args: argparse.Namespace) -> int:
@@ -37,5 +43,6 @@ def run(args: argparse.Namespace) -> int:
         rounds=args.rounds,
         json_path=args.json,
         out=args.out,
+        budget=args.budget if args.budget > 0 else None,
     )
     return 0 if any(m.runs for m in result.minds.values()) else 1

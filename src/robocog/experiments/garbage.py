@@ -53,6 +53,11 @@ class RunResult:
     reason_p99_ms: float
     trajectory: list[tuple[float, float]] = field(default_factory=list, repr=False)
     items: list[dict[str, Any]] = field(default_factory=list, repr=False)
+    notes: list[str] = field(default_factory=list)
+    #: the mind's evidence for picking at the end of the run: "trash" (the background
+    #: rule) and each tipped instance it formed a hypothesis for -> (frequency, confidence)
+    evidence: dict[str, tuple[float, float]] = field(default_factory=dict)
+    tipped: list[str] = field(default_factory=list)
 
     @property
     def rate(self) -> float:
@@ -68,6 +73,7 @@ class MindResult:
     runs: list[RunResult] = field(default_factory=list)
     unavailable: str | None = None
     error: str | None = None
+    cut_short: int = 0  # runs not started because the time budget was spent
 
     @property
     def ok(self) -> bool:
@@ -79,6 +85,32 @@ class MindResult:
         """Objects collected over objects placed, pooled over the runs."""
         placed = sum(r.objects for r in self.runs)
         return sum(r.collected for r in self.runs) / placed if placed else None
+
+    def pick_evidence(self) -> dict[str, Any]:
+        """The end-of-run evidence for picking, over the runs that report it."""
+        general = [r.evidence["trash"] for r in self.runs if "trash" in r.evidence]
+        tipped = [
+            r.evidence[i] for r in self.runs for i in r.tipped if i in r.evidence and i != "trash"
+        ]
+        out: dict[str, Any] = {}
+        if general:
+            out["background_rule"] = {
+                "runs": len(general),
+                "mean_frequency": statistics.fmean(f for f, _c in general),
+                "mean_confidence": statistics.fmean(c for _f, c in general),
+            }
+        tipped_total = sum(len(r.tipped) for r in self.runs if r.evidence)
+        if tipped_total:
+            out["tipped_instances"] = {
+                "tipped": tipped_total,
+                "with_hypothesis": len(tipped),
+                "mean_frequency": statistics.fmean(f for f, _c in tipped) if tipped else None,
+            }
+        return out
+
+    def notes(self) -> list[str]:
+        """What the mind had to adapt for its engine, once each."""
+        return list(dict.fromkeys(n for r in self.runs for n in r.notes))
 
     def causes(self) -> dict[str, int]:
         """Objects missed, by cause, over all runs."""
@@ -100,6 +132,14 @@ class MindResult:
             entry["reason"] = self.unavailable
         if self.error:
             entry["reason"] = self.error
+        if self.cut_short:
+            entry["runs_skipped_for_time"] = self.cut_short
+        notes = self.notes()
+        if notes:
+            entry["notes"] = notes
+        evidence = self.pick_evidence()
+        if evidence:
+            entry["pick_evidence"] = evidence
         if self.runs:
             entry.update(
                 {
@@ -207,8 +247,13 @@ def run_once(
     world = GarbageField(config, seed=seed)
     mind = spec.make(world, seed)
     loop = Loop(world, mind)
+    evidence: dict[str, tuple[float, float]] = {}
     try:
         loop.run(frame_budget(config), until=lambda: world.done)
+        ask = getattr(mind, "pick_evidence", None)
+        if callable(ask):
+            tipped = [t.instance for t in world.objects() if not t.upright]
+            evidence = ask(tipped)
     finally:
         close = getattr(mind, "close", None)
         if callable(close):
@@ -245,6 +290,9 @@ def run_once(
         reason_p99_ms=stats["reason_p99_ms"],
         trajectory=list(world.trajectory) if keep_path else [],
         items=items if keep_path else [],
+        notes=list(getattr(mind, "notes", [])),
+        evidence=evidence,
+        tipped=[t.instance for t in world.objects() if not t.upright],
     )
 
 
@@ -253,8 +301,15 @@ def run_mind(
     config: GarbageConfig,
     seeds: Sequence[int],
     advance: Callable[[], None] | None = None,
+    deadline: float | None = None,
 ) -> MindResult:
-    """Every run of one mind; a mind that cannot run is reported, not raised."""
+    """Every run of one mind; a mind that cannot run is reported, not raised.
+
+    With a ``deadline`` (a ``time.perf_counter()`` value) no run starts after it, so a
+    slow engine ends with fewer runs rather than overrunning; ``cut_short`` says so.
+    """
+    import time
+
     result = MindResult(spec.name)
     try:
         why = spec.probe()
@@ -264,6 +319,9 @@ def run_mind(
         result.unavailable = why
         return result
     for i, seed in enumerate(seeds):
+        if deadline is not None and i > 0 and time.perf_counter() > deadline:
+            result.cut_short = len(seeds) - i
+            break
         try:
             result.runs.append(run_once(spec, config, seed, keep_path=i == 0))
         except Exception as exc:
@@ -275,10 +333,16 @@ def run_mind(
 
 
 def learn_accumulation(
-    spec: MindSpec, config: GarbageConfig, seed: int, rounds: int
+    spec: MindSpec,
+    config: GarbageConfig,
+    seed: int,
+    rounds: int,
+    deadline: float | None = None,
 ) -> Accumulation:
     """Let a NARS mind collect for several rounds of one field, then ask where trash is
     seen (the mind must offer ``ask``, ``trash_places`` and ``new_round``)."""
+    import time
+
     from robocog.minds.nars_mind import TRASH_QUESTION
 
     hotspots_idx = sorted(config.hotspots, key=lambda i: -config.hotspots[i])
@@ -293,6 +357,8 @@ def learn_accumulation(
     seen: dict[str, int] = dict.fromkeys(world.route, 0)
     try:
         for r in range(rounds):
+            if r and deadline is not None and time.perf_counter() > deadline:
+                break
             if r:
                 world.new_round()
                 mind.new_round()
@@ -379,20 +445,30 @@ def run_experiment(
     config: GarbageConfig | None = None,
     rounds: int = 0,
     advance: Callable[[], None] | None = None,
+    budget: float | None = None,
 ) -> ExperimentResult:
-    """Every mind on the same ``runs`` seeds; then, if ``rounds``, NARS's learning phase."""
+    """Every mind on the same ``runs`` seeds; then, if ``rounds``, NARS's learning phase.
+
+    ``budget`` (seconds of wall time) is shared out: each mind may start runs until its
+    share ends, and the learning phase gets the last share.
+    """
     import time
 
     start = time.perf_counter()
     config = config or GarbageConfig()
     seeds = [seed * 1000 + i for i in range(runs)]
-    minds = {s.name: run_mind(s, config, seeds, advance) for s in specs}
+    shares = len(specs) + (1 if rounds > 0 else 0)
+
+    def deadline(k: int) -> float | None:
+        return None if budget is None else start + budget * (k + 1) / max(1, shares)
+
+    minds = {s.name: run_mind(s, config, seeds, advance, deadline(k)) for k, s in enumerate(specs)}
     accumulation = None
     learners = [s for s in specs if s.name in ("NARS", "ONA")]
     ready = [s for s in learners if minds[s.name].ok] or learners
     if rounds > 0 and ready:
         try:
-            accumulation = learn_accumulation(ready[0], config, seed, rounds)
+            accumulation = learn_accumulation(ready[0], config, seed, rounds, deadline(len(specs)))
         except Exception as exc:
             accumulation = Accumulation(
                 rounds, None, [], {}, [], unavailable=f"{type(exc).__name__}: {exc}"

@@ -19,9 +19,9 @@ from robocog.experiments.garbage import CAUSES, PAPER, ExperimentResult, MindRes
 from robocog.worlds.garbage import GarbageField
 
 CAUSE_TEXT = {
-    "detection": "never detected by the camera",
+    "detection": "at its checkpoint, but never detected by the camera",
     "grasp": "grasp failed (missed, or lying over after a miss)",
-    "decision": "seen and graspable, but never picked (or not dropped)",
+    "decision": "seen and graspable but never picked, not dropped, or its checkpoint skipped",
     "time": "not reached: the battery ran out before its checkpoint",
 }
 
@@ -73,6 +73,25 @@ def explain(result: ExperimentResult) -> list[str]:
             f"attempts at objects already lying over, spending {futile_s:.0f} s of "
             f"simulated time on them."
         )
+    for name, m in ran.items():
+        ev = m.pick_evidence()
+        rule = ev.get("background_rule")
+        if rule:
+            text = (
+                f"At the end of a run {name}'s evidence for "
+                "`<(<trash --> [see]> &/ ^pick) =/> <gripper --> [hold]>>` was frequency "
+                f"{rule['mean_frequency']:.2f}, confidence {rule['mean_confidence']:.2f} on "
+                "average (given as 1.00, 0.90)."
+            )
+            tipped = ev.get("tipped_instances")
+            if tipped and tipped["with_hypothesis"]:
+                text += (
+                    f" For {tipped['with_hypothesis']} of the {tipped['tipped']} objects "
+                    "left lying over it had formed "
+                    "`<(<{instance} --> [see]> &/ ^pick) =/> <gripper --> [hold]>>`, with "
+                    f"frequency {tipped['mean_frequency']:.2f} on average."
+                )
+            out.append(text)
     for nars in ("NARS", "ONA"):
         if nars not in ran or "BDI" not in ran:
             continue
@@ -81,14 +100,16 @@ def explain(result: ExperimentResult) -> list[str]:
         bf = sum(r.futile_picks for r in b.runs) / max(1, len(b.runs))
         gap = (n.success_rate or 0) - (b.success_rate or 0)
         out.append(
-            f"The gap is {100 * gap:+.0f} points for {nars}. Per run, BDI re-picked objects "
-            f"lying over {bf:.1f} times and {nars} {nf:.1f} times: the BDI plan's context "
-            "`see(X) & trash(X)` still holds for a tipped bottle, so it tries again until "
-            "the camera happens to miss it, while the reasoner's hypothesis for picking "
-            "meets negative evidence with each grasp that brings no "
-            "`<gripper --> [hold]>`, and moving on to the next checkpoint wins. The time "
-            f"BDI loses this way is missing at the end of the route: {b.causes()['time']} "
-            f"objects (BDI) against {n.causes()['time']} ({nars}) were never reached."
+            f"The gap is {100 * gap:+.0f} points for {nars}. Per run, BDI picked at objects "
+            f"lying over {bf:.1f} times and {nars} {nf:.1f} times. The BDI plan's context "
+            "`see(X) & trash(X)` still holds for a tipped bottle, so the agent tries again "
+            "until the camera happens to miss it. The reasoner instead weighs another pick "
+            "against moving on: each failed grasp is followed by `<gripper --> [hold]>` "
+            "denied instead of confirmed, which is evidence against the pick hypothesis "
+            "that was just used, and after frames without a successful operation the "
+            "route goal is there to be weighed against it. The time BDI loses is missing "
+            f"at the end of the route: {b.causes()['time']} objects (BDI) against "
+            f"{n.causes()['time']} ({nars}) were never reached."
         )
     return out
 
@@ -113,6 +134,8 @@ def markdown(result: ExperimentResult, images: dict[str, str]) -> str:
     ]
     lines += [f"| {a} | {b} | {c} | {d} |" for a, b, c, d in comparison_rows(result)]
     for name, m in result.minds.items():
+        for note in m.notes():
+            lines += ["", f"*{name}:* {note}"]
         if m.unavailable:
             lines += ["", f"**{name} did not run:** {m.unavailable}"]
         if m.error:

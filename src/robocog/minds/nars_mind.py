@@ -48,6 +48,17 @@ if TYPE_CHECKING:
 
 TRASH_QUESTION = "<<({SELF} * {?1}) --> at> =/> <trash --> [see]>>?"
 
+#: The first rule as the paper prints it, and the same rule bracketed as ONA's reader
+#: needs it (ONA 0.9.2 reads the printed form as another term). A reasoner that rejects
+#: the printed form is given the bracketed one, and the mind notes it.
+PRINTED_GOTO_RULE = (
+    "<<(gripper --> [open]) &/ <({SELF} * (next * $P)) --> ^goto> =/> <({SELF} * {$P}) --> at>>."
+)
+BRACKETED_GOTO_RULE = (
+    "<(<gripper --> [open]> &/ <({SELF} * (next * $P)) --> ^goto>) =/> <({SELF} * {$P}) --> at>>."
+)
+BRACKETED: dict[str, str] = {PRINTED_GOTO_RULE: BRACKETED_GOTO_RULE}
+
 
 class NotReady(RuntimeError):
     """The reasoner cannot drive the robot yet; the message says what is missing."""
@@ -89,9 +100,11 @@ class NarsMind:
     ) -> None:
         self.settings = settings or NarsSettings()
         self.places = list(places)
-        self.nar = (
-            nar if nar is not None else NAR(seed=self.settings.seed, **self.settings.overrides)
-        )
+        if nar is None:
+            from robocog.nars import NAR  # the engine is needed only when none is given
+
+            nar = NAR(seed=self.settings.seed, **self.settings.overrides)
+        self.nar = nar
         self.lines: deque[str] = deque(maxlen=self.settings.transcript or 1)
         if self.settings.transcript:
             self.nar.output = self.lines.append
@@ -102,6 +115,7 @@ class NarsMind:
         self._last_place: str | None = None
         self._holding = False
         self.inputs = 0
+        self.notes: list[str] = []  # what had to be adapted for this reasoner
         self.decisions: list[tuple[str, str | None]] = []
         self._setup(background() if knowledge is None else list(knowledge))
 
@@ -115,7 +129,13 @@ class NarsMind:
         for op in OPERATIONS:
             self.nar.register_operation(op, self._callback(op))
         for line in knowledge:
-            self._input(line)
+            try:
+                self._input(line)
+            except NotReady as exc:
+                if line not in BRACKETED:
+                    raise
+                self._input(BRACKETED[line])
+                self.notes.append(f"read {BRACKETED[line]!r} for the printed {line!r} ({exc})")
 
     def _callback(self, op: str):  # noqa: ANN202 - the reasoner's callback type
         def execute(args: object = None) -> None:
@@ -154,11 +174,13 @@ class NarsMind:
         place = [ln for ln in self._frame if ln.startswith("<({SELF} * ")]
         for line in place:
             self._input(line)
+        kinds: dict[str, None] = {}
         for question in self._questions:  # what is seen, as what it is, right after where
             answer = self.ask(question)
             if answer is not None:
                 event = seen_as(question, *answer)
-                if event is not None:
+                if event is not None and event not in kinds:
+                    kinds[event] = None
                     self._input(event)
         for line in self._frame:
             if line not in place:
@@ -222,11 +244,27 @@ class NarsMind:
         return self.places[i + 1] if i + 1 < len(self.places) else "start"
 
     def ask(self, question: str) -> tuple[str, float, float] | None:
-        """The reasoner's answer as (statement, frequency, confidence), or None."""
+        """The reasoner's answer as (statement, frequency, confidence), or None.
+
+        A question the reasoner cannot read raises its error (naming line and column).
+        """
         answer = self.nar.ask(question)
         if answer is None:
             return None
         return str(answer.term), float(answer.truth.f), float(answer.truth.c)
+
+    def pick_evidence(self, instances: Sequence[str] = ()) -> dict[str, tuple[float, float]]:
+        """The reasoner's evidence that picking brings ``<gripper --> [hold]>``: for the
+        background rule and, where it formed one, for each named instance (Section V.D's
+        ``<(<{instanceX} --> [see]> &/ ^pick) =/> <gripper --> [hold]>>``)."""
+        out: dict[str, tuple[float, float]] = {}
+        subjects = {"trash": "<trash --> [see]>"}
+        subjects.update({i: f"<{{{i}}} --> [see]>" for i in instances})
+        for key, subject in subjects.items():
+            answer = self.ask(f"<({subject} &/ ^pick) =/> <gripper --> [hold]>>?")
+            if answer is not None:
+                out[key] = (answer[1], answer[2])
+        return out
 
     def trash_places(self) -> list[tuple[str, float, float, float]]:
         """Every checkpoint with the evidence for ``<<(SELF at P)> =/> <trash --> [see]>>``,

@@ -20,14 +20,10 @@ import subprocess
 from collections.abc import Callable
 from dataclasses import dataclass
 
-from robocog.minds.nars_mind import background
+from robocog.minds.nars_mind import BRACKETED_GOTO_RULE, PRINTED_GOTO_RULE, background
 
-PRINTED_GOTO_RULE = (
-    "<<(gripper --> [open]) &/ <({SELF} * (next * $P)) --> ^goto> =/> <({SELF} * {$P}) --> at>>."
-)
-ONA_GOTO_RULE = (
-    "<(<gripper --> [open]> &/ <({SELF} * (next * $P)) --> ^goto>) =/> <({SELF} * {$P}) --> at>>."
-)
+#: the first rule bracketed as ONA's reader needs it
+ONA_GOTO_RULE = BRACKETED_GOTO_RULE
 
 
 @dataclass(frozen=True)

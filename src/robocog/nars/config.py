@@ -30,6 +30,9 @@ class Config:
     eternal_input_usage_boost: int = 1_000_000
     question_priming: float = 0.1
     event_belief_distance: int = 20
+    similarity_distance: float = 1.0
+    #: events also revise their concept's eternal belief (ONA 0.9.2 does; off by default)
+    eternalize_events: bool = False
     # temporal
     max_sequence_len: int = 3
     precondition_consequence_distance: int = 20

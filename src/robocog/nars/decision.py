@@ -35,6 +35,45 @@ class Decision:
     implication: Implication | None = None
     precondition: Event | None = None
     babbled: bool = False
+    #: the specialization of a general implication that has no evidence of its own yet
+    missing_specific: Term | None = None
+
+
+def _measurement(a: Term) -> tuple[str, float] | None:
+    """``B_0.8`` -> ("B", 0.8): a name carrying a measured value."""
+    name = a.name
+    if a.op is not None or name is None or "_" not in name:
+        return None
+    head, _, value = name.rpartition("_")
+    try:
+        return head, float(value)
+    except ValueError:
+        return None
+
+
+def _has_measurement(t: Term) -> bool:
+    return any(_measurement(a) is not None for a in t.atoms())
+
+
+def _numeric_similarity(general: Term, specific: Term, distance: float) -> float | None:
+    """1 - |v1 - v2| / distance over differing measured names (product over them);
+    None if the terms differ otherwise."""
+    if general is specific:
+        return 1.0
+    if general.op is None or specific.op is None:
+        m1, m2 = _measurement(general), _measurement(specific)
+        if m1 is None or m2 is None or m1[0] != m2[0]:
+            return None
+        return max(0.0, 1.0 - abs(m1[1] - m2[1]) / distance)
+    if general.op != specific.op or len(general.args) != len(specific.args):
+        return None
+    sim = 1.0
+    for a, b in zip(general.args, specific.args, strict=True):
+        s = _numeric_similarity(a, b, distance)
+        if s is None:
+            return None
+        sim *= s
+    return sim
 
 
 def _ground(t: Term) -> bool:
@@ -49,6 +88,8 @@ class DecisionMixin:
         self.goal_layers = [
             EventQueue(cfg.cycling_goal_events_max) for _ in range(cfg.cycling_goal_events_layers)
         ]
+        #: concepts that recently received a goal (newest last), for the negative-outcome veto
+        self.recent_goal_concepts: dict[Concept, None] = {}
 
     def _add_goal(self, g: Event, priority: float, layer: int) -> None:
         layer = min(layer, len(self.goal_layers) - 1)
@@ -85,6 +126,11 @@ class DecisionMixin:
         mem = self.memory  # type: ignore[attr-defined]
         c = mem.conceptualize(g.term, now)
         c.goal_spike = gp
+        recent = self.recent_goal_concepts
+        recent.pop(c, None)
+        recent[c] = None
+        while len(recent) > 64:
+            del recent[next(iter(recent))]
         best = self._suggest(gp, c)
         if best is not None and best.desire >= cfg.decision_threshold:
             return best
@@ -123,7 +169,22 @@ class DecisionMixin:
         mem = self.memory  # type: ignore[attr-defined]
         if _ground(pre):
             c = mem.find(pre)
-            return [c.belief_spike] if c is not None and c.belief_spike is not None else []
+            if c is not None and c.belief_spike is not None:
+                return [c.belief_spike]
+            if not _has_measurement(pre):
+                return []
+            # numeric similarity: B_0.8 stands in for B_0.9, weakened by their distance
+            out_n: list[Event] = []
+            dist = self.config.similarity_distance  # type: ignore[attr-defined]
+            for c in self.time_index:  # type: ignore[attr-defined]
+                b = c.belief_spike
+                if b is None:
+                    continue
+                sim = _numeric_similarity(pre, c.term, dist)
+                if sim is not None and sim > 0.0:
+                    t = tf.analogy(b.truth, Truth(1.0, sim))
+                    out_n.append(Event(pre, b.type, t, b.stamp, b.occurrence_time, b.creation_time))
+            return out_n
         out = []
         for c in self.time_index:  # type: ignore[attr-defined]
             if c.belief_spike is not None and _ground(c.term) and unify(pre, c.term) is not None:
@@ -134,14 +195,19 @@ class DecisionMixin:
         """The goal's concept and those whose (general) term the goal instantiates."""
         out: list[tuple[Concept, dict[Term, Term]]] = [(c, {})]
         seen = {c}
+        general_goal = g.term.has_var
         for table in self.table_index.values():  # type: ignore[attr-defined]
             for post in table:
-                if post in seen or not post.term.has_var:
+                if post in seen:
                     continue
-                b = unify(post.term, g.term)
-                if b is not None:
-                    seen.add(post)
-                    out.append((post, b))
+                if post.term.has_var:
+                    b = unify(post.term, g.term)
+                    if b is not None:
+                        seen.add(post)
+                        out.append((post, b))
+                elif general_goal and unify(g.term, post.term) is not None:
+                    seen.add(post)  # a goal with variables is served by its instances
+                    out.append((post, {}))
         return out
 
     def _suggest(self, g: Event, c: Concept) -> Decision | None:
@@ -180,13 +246,58 @@ class DecisionMixin:
                         op_g = apply(op, b2)
                         if not _ground(op_g) or not executable(op_g):
                             continue
+                        missing = None
+                        if imp.term.has_var:
+                            spec = apply(apply(imp.term, bind), b2) if bind else apply(imp.term, b2)
+                            if _ground(spec):
+                                own = self._specific(spec, opi)
+                                if own is None:
+                                    missing = spec
+                                elif own.truth.c > 0.05 and own.truth.f < 0.5:
+                                    continue  # this instance is known not to work
                         pt = tf.projection(spike.truth, spike.occurrence_time, now)
-                        desire = expectation(tf.deduction(gd, pt))
-                        if best is None or desire > best.desire:
-                            best = Decision(desire, op_g, imp, spike)
+                        dtruth = tf.goal_deduction(gd, pt)
+                        desire = expectation(dtruth)
+                        if (best is None or desire > best.desire) and not self._vetoed(
+                            c, op_g, opi, spike, pt, dtruth
+                        ):
+                            best = Decision(desire, op_g, imp, spike, missing_specific=missing)
         if best is not None and best.desire < cfg.decision_threshold:
             return best  # reported to babbling suppression; not executed
         return best
+
+    def _specific(self, term: Term, opi: int) -> Implication | None:
+        """The stored implication ``term`` (ground) in its predicate's table ``opi``."""
+        post = self.memory.find(term.args[1])  # type: ignore[attr-defined]
+        if post is None or post.precondition_beliefs is None:
+            return None
+        for imp in post.precondition_beliefs[opi].items:
+            if imp.term is term:
+                return imp
+        return None
+
+    def _vetoed(
+        self, c: Concept, op: Term, opi: int, spike: Event, pt: Truth, desire: Truth
+    ) -> bool:
+        """ConsiderNegativeOutcomes: another recent goal (e.g. one to avoid) for which
+        the same operation after the same condition is undesired vetoes it."""
+        cfg = self.config  # type: ignore[attr-defined]
+        now = self.time  # type: ignore[attr-defined]
+        for gc in self.recent_goal_concepts:
+            gs = gc.goal_spike
+            if gc is c or gs is None or now - gs.occurrence_time > cfg.neg_goal_age_max:
+                continue
+            tables = gc.precondition_beliefs
+            if tables is None or opi >= len(tables):
+                continue
+            for imp in tables[opi].items:
+                pre, op2 = split_precondition(imp.term.args[0])
+                if op2 is None or unify(pre, spike.term) is None or unify(op2, op) is None:
+                    continue
+                other = tf.goal_deduction(tf.goal_deduction(gs.truth, imp.truth), pt)
+                if expectation(tf.revision(desire, other)) < 0.5:
+                    return True
+        return False
 
     def _subgoals(self, g: Event, c: Concept, priority: float, layer: int) -> None:
         cfg = self.config  # type: ignore[attr-defined]
@@ -246,6 +357,22 @@ class DecisionMixin:
         self.stamp_base += 1  # type: ignore[attr-defined]
         self._add_event(e, 1.0, is_input=True)  # type: ignore[attr-defined]
         self.cycles(1)  # type: ignore[attr-defined]
+        if d.missing_specific is not None and d.precondition is not None:
+            # assume failure of the untried specialization until its outcome shows up
+            cfg = self.config  # type: ignore[attr-defined]
+            neg = tf.eternalize(
+                tf.induction(Truth(0.0, cfg.anticipation_confidence), d.precondition.truth)
+            )
+            general = d.implication
+            self._add_implication(  # type: ignore[attr-defined]
+                d.missing_specific,
+                neg,
+                (),
+                general.dt if general else 0.0,
+                False,
+                0.0,
+                general.creation_time if general else None,  # a copy of the general link
+            )
 
 
 __all__ = ["Decision", "DecisionMixin", "compound"]

@@ -82,9 +82,9 @@ def apply_single(table: RuleTable, term: Term, t: Truth, d: Derivation) -> None:
 def apply_double(table: RuleTable, t1: Term, t2: Term, v1: Truth, v2: Truth, d: Derivation) -> None:
     """Two-premise rules in both premise orders (truth arguments follow the pattern)."""
     emit = d.emit
-    for r in table.double_rules(t1.op, t2.op):
+    for r in table.candidates(t1, t2):
         r.apply(t1, t2, v1, v2, emit)  # type: ignore[misc]
-    for r in table.double_rules(t2.op, t1.op):
+    for r in table.candidates(t2, t1):
         r.apply(t2, t1, v2, v1, emit)  # type: ignore[misc]
 
 

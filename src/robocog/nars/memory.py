@@ -32,7 +32,8 @@ class Concept:
         "precondition_beliefs",
         "implication_links",
         "priority",
-        "last_selection_time",
+        "priority_time",
+        "selected_time",
         "process_id",
     )
 
@@ -50,7 +51,8 @@ class Concept:
         self.precondition_beliefs: list[Table] | None = None
         self.implication_links: Table | None = None
         self.priority = 0.0
-        self.last_selection_time = 0
+        self.priority_time = 0  # when ``priority`` was set (decay is applied lazily)
+        self.selected_time = -(10**9)  # when an event of this concept was last selected
         self.process_id = 0
 
     def use(self, now: int, eternal_input: bool, boost: int) -> None:

@@ -210,6 +210,8 @@ class NAR(SensorimotorMixin, DecisionMixin):
                 c.anticipation_confidence = float(value)
             elif cmd == "questionpriming":
                 c.question_priming = float(value)
+            elif cmd == "similaritydistance":
+                c.similarity_distance = float(value)
             elif cmd == "currenttime":
                 self.time = int(value)
             elif cmd == "stampid":
@@ -241,7 +243,6 @@ class NAR(SensorimotorMixin, DecisionMixin):
                 self.time = max(1, self.time - 1)
             elif cmd in (
                 "setoparg",
-                "similaritydistance",
                 "restrictedconceptcreation",
                 "setvalue",
                 "space",
@@ -294,14 +295,14 @@ class NAR(SensorimotorMixin, DecisionMixin):
     # ------------------------------------------------------------- priorities
     def _priority(self, c: Concept) -> float:
         """Concept priority with the per-cycle decay applied lazily."""
-        dt = self.time - c.last_selection_time
+        dt = self.time - c.priority_time
         if dt <= 0:
             return c.priority
         return c.priority * self.config.concept_durability**dt
 
     def _set_priority(self, c: Concept, p: float) -> None:
         c.priority = p
-        c.last_selection_time = self.time
+        c.priority_time = self.time
 
     # ----------------------------------------------------------------- events
     def _add_event(
@@ -367,12 +368,25 @@ class NAR(SensorimotorMixin, DecisionMixin):
                 c.belief_spike = self._revision_and_choice(c.belief_spike, e)[0]
             else:
                 c.predicted_belief = self._revision_and_choice(c.predicted_belief, e)[0]
+            if not self.config.eternalize_events:
+                if is_input:
+                    self._print("Input: " + e.line(priority))
+                return
+            # ONA 0.9.2 also keeps the event's evidence as a (weaker) eternal belief
+            eternal = Event(e.term, BELIEF, tf.eternalize(e.truth), e.stamp, ETERNAL, now, e.dt)
+            belief, revised = self._revision_and_choice(c.belief, eternal)
+            belief.creation_time = now
+            c.belief = belief
             if is_input:
                 self._print("Input: " + e.line(priority))
+            if revised:
+                self._add_event(belief, priority, revised=True)
             return
         belief, revised = self._revision_and_choice(c.belief, e)
         belief.creation_time = now
         c.belief = belief
+        if e.term.op in ("==>", "<=>"):
+            self._note_link(e.term)
         if self.pending_questions:
             self._check_pending(c)
         if is_input:
@@ -427,9 +441,13 @@ class NAR(SensorimotorMixin, DecisionMixin):
             if self._shows(priority):
                 self._print("Selected: " + e.line(priority))
             if e.occurrence_time != ETERNAL:
+                sc = self.memory.find(e.term)
+                if sc is not None:
+                    sc.selected_time = self.time
                 self._process_belief_event(e, priority)
                 if e.is_input:
                     self._anticipate(e)
+        self._forward_links()
         self._process_goals()
         if popped is not None:
             self._semantic_inference(popped[1], popped[0])
@@ -467,7 +485,7 @@ class NAR(SensorimotorMixin, DecisionMixin):
         self.matched_total += len(chosen)
         for c, cp in chosen:
             belief = c.belief
-            if belief is None:
+            if belief is None and (e.occurrence_time == ETERNAL or c.belief_spike is None):
                 continue
             if (
                 e.occurrence_time != ETERNAL
@@ -476,6 +494,8 @@ class NAR(SensorimotorMixin, DecisionMixin):
                 < cfg.event_belief_distance
             ):
                 belief = c.belief_spike.projected(e.occurrence_time)
+            if belief is None:
+                continue  # a spike too far from the event
             if overlap(e.stamp, belief.stamp):
                 continue
             c.use(now, False, 0)
@@ -678,6 +698,11 @@ class NAR(SensorimotorMixin, DecisionMixin):
             "op_names": self.op_names,
             "stats": self.stats,
             "pending": self.pending_questions,
+            "time_index": self.time_index,
+            "table_index": self.table_index,
+            "pre_index": self.pre_index,
+            "goal_layers": self.goal_layers,
+            "recent_goal_concepts": self.recent_goal_concepts,
         }
         fd, tmp = tempfile.mkstemp(dir=path.parent or ".", prefix=path.name, suffix=".tmp")
         try:
@@ -711,6 +736,9 @@ class NAR(SensorimotorMixin, DecisionMixin):
         nar.op_names = state["op_names"]
         nar.stats = state["stats"]
         nar.pending_questions = state.get("pending", {})
+        for key in ("time_index", "table_index", "pre_index", "goal_layers", "recent_goal_concepts"):
+            if key in state:
+                setattr(nar, key, state[key])
         return nar
 
     def _adopt(self, other: NAR) -> None:
@@ -733,7 +761,11 @@ def _needs_existing_concept(e: Event) -> bool:
     t = e.term
     if t.op == "&&" and (t.has_dep_var or e.occurrence_time != ETERNAL):
         return True
-    if t.op is not None and len(t.args) == 2 and (t.args[0].op in _IMAGES or t.args[1].op in _IMAGES):
+    if (
+        t.op is not None
+        and len(t.args) == 2
+        and (t.args[0].op in _IMAGES or t.args[1].op in _IMAGES)
+    ):
         return True
     return bool(t.flags & F_COMPOSED)
 

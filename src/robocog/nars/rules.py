@@ -333,6 +333,7 @@ class RuleTable:
         self.double: dict[tuple[str, str], list[Rule]] = {}
         self._cache: dict[tuple[str | None, str | None], list[Rule]] = {}
         self._single_cache: dict[str | None, list[Rule]] = {}
+        self._shape_cache: dict[tuple[object, ...], list[Rule]] = {}
         for p1, p2, c, fn, vi, lvl in _RULES:
             if lvl > level:
                 continue
@@ -360,6 +361,36 @@ class RuleTable:
             self._single_cache[op] = got
         return got
 
+    def candidates(self, t1: Term, t2: Term) -> list[Rule]:
+        """The rules that can match this premise pair, judged by the connectors of the
+        premises and of their two components and by which components are identical;
+        the (few) survivors run the full matcher. Cached per such shape."""
+        a1 = t1.args
+        a2 = t2.args
+        if len(a1) != 2 or len(a2) != 2:
+            return self.double_rules(t1.op, t2.op)
+        x0, x1 = a1
+        y0, y1 = a2
+        key = (
+            t1.op,
+            t2.op,
+            x0.op,
+            x1.op,
+            y0.op,
+            y1.op,
+            (x0 is x1)
+            | (x0 is y0) << 1
+            | (x0 is y1) << 2
+            | (x1 is y0) << 3
+            | (x1 is y1) << 4
+            | (y0 is y1) << 5,
+        )
+        got = self._shape_cache.get(key)
+        if got is None:
+            got = [r for r in self.double_rules(t1.op, t2.op) if _fits(r, key)]
+            self._shape_cache[key] = got
+        return got
+
     def double_rules(self, op1: str | None, op2: str | None) -> list[Rule]:
         """Two-premise rules whose premises can have connectors ``op1``, ``op2``."""
         got = self._cache.get((op1, op2))
@@ -372,6 +403,31 @@ class RuleTable:
                     got.extend(self.double.get((a, c), []))
             self._cache[(op1, op2)] = got
         return got
+
+
+_PAIRS = ((0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3))
+
+
+def _fits(r: Rule, key: tuple[object, ...]) -> bool:
+    """Could rule ``r`` match a premise pair of shape ``key`` (see ``candidates``)?"""
+    comps: list[Term | None] = []
+    for p, k in ((r.p1, 0), (r.p2, 1)):
+        if p is None or _is_pvar(p):
+            comps += [None, None]
+            continue
+        if p.op != key[k] or len(p.args) != 2:
+            return False
+        for i, a in enumerate(p.args):
+            if not _is_pvar(a) and a.op != key[2 + 2 * k + i]:
+                return False
+            comps.append(a)
+    eq = key[6]
+    for bit, (i, j) in enumerate(_PAIRS):
+        a, b = comps[i], comps[j]
+        if a is not None and b is not None and a is b and _is_pvar(a):
+            if not eq >> bit & 1:  # type: ignore[operator]
+                return False
+    return True
 
 
 # ---------------------------------------------------------------- variable introduction
@@ -502,18 +558,7 @@ def atom_appears_twice(t: Term) -> bool:
 
 def nested_hol_statement(t: Term) -> bool:
     """Filter: two ==>/<=> or more than two =/> in one term."""
-    if t.op is None or (t.op not in (IMPLICATION, EQUIVALENCE, TEMPORAL_IMPLICATION) and not t.has_var and t.complexity < 7):
-        return False
-    imp = 0
-    temp = 0
-    for s in t.walk():
-        if s.op in (IMPLICATION, EQUIVALENCE):
-            imp += 1
-        elif s.op == TEMPORAL_IMPLICATION:
-            temp += 1
-        if imp >= 2 or temp > 2:
-            return True
-    return False
+    return t.n_imp >= 2 or t.n_temp > 2
 
 
 def inh_or_sim_has_dep_var(t: Term) -> bool:

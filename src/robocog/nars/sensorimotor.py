@@ -56,7 +56,9 @@ def executable(op: Term) -> bool:
         return True
     s = op.args[0]
     first = s.args[0] if s.op == "*" else s
-    return str(first) == "{SELF}" or first.is_var
+    if first.op == "{}" and len(first.args) == 1:
+        first = first.args[0]  # {SELF} or {$1}
+    return first.name == "SELF" or first.is_var
 
 
 class SensorimotorMixin:
@@ -66,6 +68,11 @@ class SensorimotorMixin:
         self.time_index: deque[Concept] = deque(maxlen=self.config.occurrence_time_index_size)  # type: ignore[attr-defined]
         #: op id -> concepts with implications in that table
         self.table_index: dict[int, dict[Concept, None]] = {}
+        #: (precondition without op, op id) -> concepts with such implications
+        self.pre_index: dict[tuple[Term, int], dict[Concept, None]] = {}
+        #: declarative links by subject: ground subject -> {link term}; general ones apart
+        self.links_by_subject: dict[Term, dict[Term, None]] = {}
+        self.general_links: dict[Term, None] = {}
 
     # ------------------------------------------------------------- operations
     def op_id(self, op: Term) -> int:
@@ -78,7 +85,14 @@ class SensorimotorMixin:
 
     # ------------------------------------------------------------ implications
     def _add_implication(
-        self, term: Term, t: Truth, stamp: tuple[int, ...], dt: float, is_input: bool, priority: float
+        self,
+        term: Term,
+        t: Truth,
+        stamp: tuple[int, ...],
+        dt: float,
+        is_input: bool,
+        priority: float,
+        creation_time: int | None = None,
     ) -> Implication | None:
         """Store ``<pre =/> post>`` in the table of ``post`` for its operation."""
         subject, predicate = term.args
@@ -97,10 +111,11 @@ class SensorimotorMixin:
         target.use(now, is_input, cfg.eternal_input_usage_boost)
         source = mem.conceptualize(pre, now)
         source.use(now, is_input, cfg.eternal_input_usage_boost)
-        imp = Implication(term, t, stamp, dt, now, pre)
+        imp = Implication(term, t, stamp, dt, now if creation_time is None else creation_time, pre)
         table = target.tables(cfg.operations_max, cfg.table_size)[opi]
         stored = table.add_and_revise(imp, cfg.stamp_size)
         self.table_index.setdefault(opi, {})[target] = None
+        self.pre_index.setdefault((pre, opi), {})[target] = None
         if stored is not None and not is_input and self._shows(priority):  # type: ignore[attr-defined]
             self._print(  # type: ignore[attr-defined]
                 f"Derived: dt={dt:f} {term}. Priority={priority:f} Stamp={fmt(stamp)} {t}"
@@ -118,6 +133,72 @@ class SensorimotorMixin:
         if tables is None or opi >= len(tables):
             return []
         return tables[opi].items
+
+    # ------------------------------------------------------ declarative links
+    def _note_link(self, term: Term) -> None:
+        """Index an eternal ``==>``/``<=>`` belief by its condition (both sides of ``<=>``)."""
+        sides = [term.args[0]] if term.op == "==>" else [term.args[0], term.args[1]]
+        for side in sides:
+            if side.has_var:
+                self.general_links[term] = None
+                while len(self.general_links) > 4 * self.config.table_size:  # type: ignore[attr-defined]
+                    del self.general_links[next(iter(self.general_links))]
+            else:
+                self.links_by_subject.setdefault(side, {})[term] = None
+
+    def _forward_links(self) -> None:
+        """Events that just happened travel forward through ``==>``/``<=>`` beliefs:
+        the consequence gets a belief event at the same time (deduction / analogy)."""
+        cfg = self.config  # type: ignore[attr-defined]
+        now = self.time  # type: ignore[attr-defined]
+        mem = self.memory  # type: ignore[attr-defined]
+        if not self.links_by_subject and not self.general_links:
+            return
+        fresh = [
+            c
+            for c in self.time_index
+            if c.belief_spike is not None
+            and now - c.belief_spike.creation_time <= cfg.belief_last_used_tolerance
+            and not c.term.has_var
+        ]
+        for c in fresh:
+            spike = c.belief_spike
+            links = list(self.links_by_subject.get(c.term, ()))
+            for g in self.general_links:
+                links.append(g)
+            for link in links[: cfg.top_k_declarative_implications * 4]:
+                lc = mem.find(link)
+                if lc is None or lc.belief is None:
+                    self.links_by_subject.get(c.term, {}).pop(link, None)
+                    continue
+                a, b = link.args
+                for cond, concl in ((a, b), (b, a)) if link.op == "<=>" else ((a, b),):
+                    bind = unify(cond, c.term)
+                    if bind is None:
+                        continue
+                    target = apply(concl, bind)
+                    if target.has_var or overlap(spike.stamp, lc.belief.stamp):
+                        continue
+                    fn = tf.deduction if link.op == "==>" else tf.analogy
+                    t = fn(lc.belief.truth, spike.truth)
+                    if t.c < cfg.min_confidence:
+                        continue
+                    tcon = mem.conceptualize(target, now)
+                    old = tcon.belief_spike
+                    if old is not None and (
+                        old.occurrence_time > spike.occurrence_time
+                        or (old.occurrence_time == spike.occurrence_time and old.truth.c >= t.c)
+                    ):
+                        continue
+                    tcon.belief_spike = Event(
+                        target,
+                        BELIEF,
+                        t,
+                        merge(spike.stamp, lc.belief.stamp, cfg.stamp_size),
+                        spike.occurrence_time,
+                        now,
+                    )
+                    self._note_event(tcon)
 
     # -------------------------------------------------------------- induction
     def _note_event(self, c: Concept) -> None:
@@ -141,17 +222,26 @@ class SensorimotorMixin:
         window = cfg.precondition_consequence_distance
         if not e.term.is_op:
             # procedural: <(pre &/ op) =/> e> for an op between pre and e
-            for opc in self.time_index:
+            recent = [
+                c
+                for c in self.time_index
+                if c.belief_spike is not None
+                and abs(c.belief_spike.occurrence_time - e.occurrence_time) < window
+            ]
+            for opc in recent:
                 op_ev = opc.belief_spike
                 if op_ev is None or not opc.term.is_op:
                     continue
                 if not (0 <= e.occurrence_time - op_ev.occurrence_time < window):
                     continue
-                if op_ev.occurrence_time >= e.occurrence_time and op_ev.occurrence_time != e.occurrence_time:
+                if (
+                    op_ev.occurrence_time >= e.occurrence_time
+                    and op_ev.occurrence_time != e.occurrence_time
+                ):
                     continue
                 if overlap(op_ev.stamp, e.stamp):
                     continue
-                for pc in self.time_index:
+                for pc in recent:
                     pre = pc.belief_spike
                     if pre is None or pc.term.is_op or pc is opc:
                         continue
@@ -179,7 +269,9 @@ class SensorimotorMixin:
                 self._induce(b, None, e, priority)
             if _sequence_length(c.term) + 1 <= cfg.max_sequence_len and not _has_op(c.term):
                 seq = compound(SEQUENCE, (c.term, e.term))
-                t = tf.intersection(tf.projection(b.truth, b.occurrence_time, e.occurrence_time), e.truth)
+                t = tf.intersection(
+                    tf.projection(b.truth, b.occurrence_time, e.occurrence_time), e.truth
+                )
                 sequences.append(
                     Event(
                         seq,
@@ -198,10 +290,13 @@ class SensorimotorMixin:
         mem = self.memory  # type: ignore[attr-defined]
         c = mem.conceptualize(se.term, self.time)  # type: ignore[attr-defined]
         old = c.belief_spike
-        if old is None or old.occurrence_time < se.occurrence_time or (
-            old.occurrence_time == se.occurrence_time and se.truth.c > old.truth.c
+        if (
+            old is None
+            or old.occurrence_time < se.occurrence_time
+            or (old.occurrence_time == se.occurrence_time and se.truth.c > old.truth.c)
         ):
             c.belief_spike = se
+        c.selected_time = self.time  # type: ignore[attr-defined]
         self._note_event(c)
 
     def _induce(self, pre: Event, op: Event | None, post: Event, priority: float) -> None:
@@ -241,7 +336,7 @@ class SensorimotorMixin:
         cfg = self.config  # type: ignore[attr-defined]
         now = self.time  # type: ignore[attr-defined]
         opi = self.op_id(e.term) if e.term.is_op else 0
-        targets = self.table_index.get(opi)
+        targets = self.table_index.get(opi) if opi else self.pre_index.get((e.term, 0))
         if not targets:
             return
         mem = self.memory  # type: ignore[attr-defined]
@@ -276,7 +371,7 @@ class SensorimotorMixin:
                 ):
                     continue
                 neg = tf.eternalize(
-                    tf.induction(Truth(0.0, cfg.anticipation_confidence), pre_t)
+                    tf.induction(Truth(0.0, cfg.anticipation_confidence), spike.truth)
                 )
                 post.tables(cfg.operations_max, cfg.table_size)[opi].add_and_revise(
                     Implication(imp.term, neg, (), imp.dt, now, imp.source), cfg.stamp_size

@@ -57,6 +57,8 @@ class Term:
         "is_op",
         "cache",
         "flags",
+        "n_imp",
+        "n_temp",
     )
 
     op: str | None
@@ -194,6 +196,8 @@ def atom(name: str) -> Term:
     t.is_op = name[0] == "^"
     t.cache = None
     t.flags = 0
+    t.n_imp = 0
+    t.n_temp = 0
     if len(_TABLE) >= _SWEEP_AT[0]:
         _sweep()
     _TABLE[key] = t
@@ -218,9 +222,13 @@ def compound(op: str, args: tuple[Term, ...]) -> Term:
         t.complexity += len(args)
     t.is_var = False
     flags = 0
+    n_imp = 1 if op in _IMPS else 0
+    n_temp = 1 if op == "=/>" else 0
     hv = hq = hi = hd = False
     for a in args:
         flags |= a.flags
+        n_imp += a.n_imp
+        n_temp += a.n_temp
         hv = hv or a.has_var
         hq = hq or a.has_query_var
         hi = hi or a.has_indep_var
@@ -232,6 +240,8 @@ def compound(op: str, args: tuple[Term, ...]) -> Term:
     elif op in _IMAGE_OPS:
         flags |= F_IMAGE
     t.flags = flags
+    t.n_imp = n_imp  # ==> and <=> inside (conclusion filter: at most one)
+    t.n_temp = n_temp  # =/> inside (at most two)
     t.has_var = hv
     t.has_query_var = hq
     t.has_indep_var = hi

@@ -168,7 +168,6 @@ class GarbageField:
         self.events: list[Event] = []
         self.futile_seconds = 0.0  # spent on picks at objects lying over
         self._last_pose_time = -math.inf
-        self._last_frame: list[tuple[Trash, Detection]] = []
         self.new_round()
 
     # ---- setting up a round -------------------------------------------------------
@@ -247,16 +246,13 @@ class GarbageField:
         c = self.config
         self.clock += c.frame_seconds
         out: list[Percept] = []
-        frame: list[tuple[Trash, Detection]] = []
         for t in self.trash:
             if not t.on_field:
                 continue
             detection = self._sense(t)
             if detection is not None:
                 t.times_seen += 1
-                frame.append((t, detection))
                 out.append(detection)
-        self._last_frame = frame
         out.append(self._lidar())
         out.append(Gripper(self.holding.instance if self.holding else None))
         if self.clock - self._last_pose_time >= c.localisation_period - 1e-9:
@@ -503,9 +499,10 @@ class GarbageField:
     def failure_cause(self, t: Trash) -> str | None:
         """Why an object was not collected, in the paper's terms (None if it was).
 
-        ``detection``: the camera never reported it; ``grasp``: it was picked at but the
-        grasp failed (it may have been tipped over); ``decision``: it was seen and
-        graspable but the mind never tried, or carried it and never dropped it;
+        ``detection``: the robot was at its checkpoint but the camera never reported
+        it; ``grasp``: it was picked at but the grasp failed (it may have been tipped
+        over); ``decision``: it was seen and graspable but the mind never tried, carried
+        it and never dropped it, or ended the route without going to its checkpoint;
         ``time``: the battery ran out before the robot reached its checkpoint.
         """
         if t.collected:
@@ -516,8 +513,8 @@ class GarbageField:
             return "grasp"
         if t.times_seen > 0:
             return "decision"
-        if t.checkpoint not in self.visited and self.out_of_time:
-            return "time"
+        if t.checkpoint not in self.visited:
+            return "time" if self.out_of_time else "decision"
         return "detection"
 
     def describe(self) -> dict[str, object]:
