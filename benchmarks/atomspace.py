@@ -141,6 +141,7 @@ def compare(names, pairs, clears, work, rounds: int, with_hyperon: bool):  # noq
 
         def cold(pats: list = pats) -> int:
             matcher._CACHE.clear()
+            matcher._CLAUSES.clear()
             return sum(len(query(r_space, p)) for p in pats)
 
         def warm(pats: list = pats) -> int:
@@ -148,6 +149,7 @@ def compare(names, pairs, clears, work, rounds: int, with_hyperon: bool):  # noq
 
         def getlink(gets: list = gets) -> int:
             matcher._CACHE.clear()
+            matcher._CLAUSES.clear()
             return sum(len(r_space.execute(g).out) for g in gets)
 
         row = {"cold": best_of(cold, rounds), "warm": best_of(warm, rounds)}

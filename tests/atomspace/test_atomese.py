@@ -166,3 +166,39 @@ def test_names_with_quotes_and_backslashes() -> None:
     n = C('say "hi" \\ bye')
     assert read_atom(write(n)) == n
     assert P("x") != read_atom(write(n))
+
+
+R2L = """
+(EvaluationLink (stv 1 1)
+  (PredicateNode
+    "is.v@5fdee4a0-7ad4-4aa7-9172-55a137c3dbdf"
+    (stv 9.75697e-13 0.00124844))
+  (ListLink
+    (ConceptNode
+      "cat.n@e425545c-ceea-4eee-931b-a6c312d66d58")
+    (ConceptNode
+      "animal.n@1813a95c-0c44-46f6-bad3-7232f6ff8616")))
+(InheritanceLink (stv 1 1)
+  (InterpretationNode
+    "sentence@c9bf0479-2636-4a8b-901c-38d1305ed29e_parse_0_interpretation_$X"
+    (stv 9.75697e-13 0.00124844))
+  (DefinedLinguisticConceptNode
+    "DeclarativeSpeechAct" (stv 9.75697e-13 0.00124844)))
+(ImplicationLink (stv 1 1)
+  (PredicateNode "is.v@5fdee4a0-7ad4-4aa7-9172-55a137c3dbdf" (stv 9.75697e-13 0.00124844))
+  (PredicateNode "be" (stv 9.75697e-13 0.00124844)))
+"""
+
+
+def test_relex2logic_output_of_section_2_2_3_3_loads() -> None:
+    s = AtomSpace()
+    top = s.load_atomese(R2L)
+    assert [a.type for a in top] == ["EvaluationLink", "InheritanceLink", "ImplicationLink"]
+    assert all(s.get_tv(a) == stv(1, 1) for a in top)
+    is_v = P("is.v@5fdee4a0-7ad4-4aa7-9172-55a137c3dbdf")
+    assert s.get_tv(is_v) == stv(9.75697e-13, 0.00124844)
+    assert len(s.incoming(is_v)) == 2  # one atom, shared by both links
+    assert (
+        s.get_tv(Node("DefinedLinguisticConceptNode", "DeclarativeSpeechAct")).confidence
+        == 0.00124844
+    )

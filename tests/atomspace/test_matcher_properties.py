@@ -105,3 +105,19 @@ def test_a_bound_argument_is_found_through_the_index() -> None:
     # a constant that is not in the space gives no candidates at all
     missing = compile_pattern(ev("on", C("nowhere"), V("$y"))).alts[0].mandatory[0]
     assert list(_candidates(s, missing, {})) == []
+
+
+def test_rules_share_compiled_clauses_but_not_across_typings() -> None:
+    x = V("$x")
+    body = Link("AndLink", ev("clear", x), Link("InheritanceLink", x, C("object")))
+    pinned = Link("AndLink", *body.out, Link("EqualLink", x, C("bolt")))
+    a = compile_pattern(body).alts[0].mandatory
+    b = compile_pattern(pinned).alts[0].mandatory
+    assert {id(c) for c in a} == {id(c) for c in b}
+    typed = Link("TypedVariableLink", x, Node("TypeNode", "ConceptNode"))
+    c = compile_pattern(body, typed).alts[0].mandatory
+    assert not {id(k) for k in c} & {id(k) for k in a}
+    s = AtomSpace()
+    s.add(ev("clear", Node("PredicateNode", "p")))
+    s.add(Link("InheritanceLink", Node("PredicateNode", "p"), C("object")))
+    assert query(s, body) != [] and query(s, body, typed) == []

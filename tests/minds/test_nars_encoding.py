@@ -17,6 +17,7 @@ from robocog.minds.nars_encoding import (
     goal_at,
     gripper_event,
     gripper_events,
+    not_seen,
     obstacle_event,
     place_event,
     recall_questions,
@@ -124,3 +125,7 @@ def test_a_sighting_is_reported_under_the_kind_the_reasoner_names() -> None:
     assert seen_as(q, "<cup --> trash>", 1.0, 0.9) is None
     assert seen_as(q, "<bottle --> (trash & glass)>", 1.0, 0.9) is None
     assert seen_as(q, None, 0.0, 0.0) is None
+
+
+def test_a_kind_not_in_view_is_denied() -> None:
+    assert not_seen("trash") == "<trash --> [see]>. :|: {0.0 0.9}"

@@ -171,3 +171,19 @@ def test_a_reasoner_that_rejects_the_printed_goto_rule_gets_it_bracketed() -> No
     )
     assert len(mind.notes) == 1 and "column 91" in mind.notes[0]
     assert NarsMind(["p0"], nar=Recorder(lambda r: [])).notes == []  # type: ignore[arg-type]
+
+
+def test_a_kind_once_seen_is_reported_missing_when_out_of_view() -> None:
+    nar = Recorder(lambda r: [])
+    mind = NarsMind(["p0"], nar=nar)  # type: ignore[arg-type]
+    mind.perceive(_frame(seen=False))
+    mind.decide()
+    assert "<trash --> [see]>. :|: {0.0 0.9}" not in nar.inputs  # nothing looked for yet
+    mind.perceive(_frame(seen=True))
+    mind.decide()
+    mind.perceive(_frame(seen=False))
+    start = len(nar.inputs)
+    mind.decide()
+    frame = nar.inputs[start:]
+    assert frame[0] == "<({SELF} * {p0}) --> at>. :|:"
+    assert frame[1] == "<trash --> [see]>. :|: {0.0 0.9}"

@@ -119,3 +119,9 @@ def test_print_then_parse_is_identity(t) -> None:  # noqa: ANN001 - hypothesis v
 
     t = normalize_variables(t)
     assert parse_term(str(t)) is t
+
+
+def test_hostile_lines_are_errors_not_crashes() -> None:
+    for text in ["<" * 3000 + "a", "(" * 300 + "a" + ")" * 300 + ".", "x" * 5000 + ".", "\x00."]:
+        with pytest.raises(NarseseError):
+            parse_sentence(text)

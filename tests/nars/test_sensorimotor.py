@@ -5,6 +5,7 @@ from __future__ import annotations
 import pytest
 
 from robocog.nars import NAR, Term
+from robocog.nars import truth as tf
 from robocog.nars.narsese import parse_term
 
 
@@ -132,6 +133,14 @@ def test_seed_background_knowledge_loads_and_picks() -> None:
     ]:
         nar.add_input(line)
     assert "^pick executed with args " in out
+    rule = "<(<trash --> [see]> &/ ^pick) =/> <gripper --> [hold]>>?"
+    before = nar.ask(rule)
+    for _ in range(3):  # the pick fails: the gripper stays open
+        for line in ["<gripper --> [open]>. :|:", "<bottle --> [see]>. :|:", "G! :|:", "5"]:
+            nar.add_input(line)
+    after = nar.ask(rule)
+    assert before is not None and after is not None
+    assert tf.expectation(after.truth) < tf.expectation(before.truth)
     nar.add_input("<({SELF} * {cp2}) --> at>! :|:")
     assert "^goto executed with args ({SELF} * (next * cp2))" in out
 

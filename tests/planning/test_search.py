@@ -84,3 +84,17 @@ def test_tree_levels_count_the_thesis_tree() -> None:
     levels = tree_levels(task, 2)
     # pickup a or b; then putdown, stack on t, stack on the other object
     assert levels == [1, 2, 6]
+
+
+@pytest.mark.parametrize("seed", range(10))
+def test_goal_test_on_creation_gives_the_same_length_with_fewer_iterations(seed: int) -> None:
+    rng = random.Random(300 + seed)
+    scene = random_scene(rng, rng.randint(1, 4), rng.randint(0, 2))
+    task = build_task(scene, random_goal(rng, scene))
+    taken = bfs(task, "first", goal_test="taken")
+    created = bfs(task, "first", goal_test="created")
+    assert (taken.plan is None) == (created.plan is None)
+    if taken.plan is not None:
+        assert len(created.plan) == len(taken.plan)
+        assert task.validate(created.plan)
+        assert created.iterations <= taken.iterations

@@ -20,7 +20,7 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
 from robocog.atomspace import types as _t
-from robocog.atomspace.atoms import Atom, Link, Node, _raw_link, _raw_node
+from robocog.atomspace.atoms import Atom, Node, _raw_link, _raw_node
 from robocog.atomspace.values import TruthValue, Value
 
 if TYPE_CHECKING:
@@ -113,10 +113,6 @@ def parse(text: str, source: str = "<string>", env: dict[str, Atom] | None = Non
     """
     if not isinstance(text, str):
         raise TypeError("Atomese text must be a str")
-    if len(text) > _FAST_MIN and not env:
-        fast = _fast_parse(text)
-        if fast is not None:
-            return fast
     names: dict[str, Atom] = dict(env or {})
     result = Parsed(names=names)
     tvs = result.tvs
@@ -183,94 +179,6 @@ def parse(text: str, source: str = "<string>", env: dict[str, Atom] | None = Non
     if stack:
         _items, fl, fc = stack[-1]
         raise err("unclosed '(' (missing ')')", fl, fc)
-    return result
-
-
-#: texts at least this long try the fast reader first
-_FAST_MIN = 4096
-_FAST_TOKEN = re.compile(r'(\s*(?:;[^\n]*\s*)*)(\(|\)|"(?:[^"\\]|\\.)*"|[^\s()";\']+)')
-_TRAILING = re.compile(r"\s*(?:;[^\n]*\s*)*\Z")
-
-
-class _Fallback(Exception):
-    """The fast reader met something it leaves to the full reader."""
-
-
-def _fast_parse(text: str) -> Parsed | None:
-    """Read the plain bulk of Atomese (nodes with string names, links, stv) without
-    tracking places; None when the text needs the full reader, which then also gives
-    any error its line and column. Knowledge bases of 10^6 atoms load through here."""
-    pairs = _FAST_TOKEN.findall(text)
-    tail = _TRAILING.match(text, sum(len(a) + len(b) for a, b in pairs))
-    if tail is None:
-        return None  # some character no token covers: let the full reader report it
-    resolve = _t.resolve
-    node_types = _t.NODE_TYPES
-    unordered = _t.UNORDERED
-    memo: dict[Atom, Atom] = {}
-    result = Parsed()
-    forms = result.forms
-    tvs = result.tvs
-    stack: list[list] = []
-    cur: list | None = None
-    try:
-        for _skip, tok in pairs:
-            c = tok[0]
-            if c == "(":
-                stack.append(cur)  # type: ignore[arg-type]
-                cur = []
-            elif c == ")":
-                items = cur
-                cur = stack.pop()
-                if not items:
-                    raise _Fallback
-                head = items[0]
-                if head == "stv":
-                    if cur is None or len(items) != 3:
-                        raise _Fallback
-                    value: object = TruthValue(float(items[1]), float(items[2]))
-                    cur.append(value)
-                    continue
-                full = resolve(head)
-                if full is None or head[0] == '"':
-                    raise _Fallback
-                tv = None
-                args = items[1:]
-                if args and isinstance(args[-1], TruthValue):
-                    tv = args.pop()
-                if full in node_types:
-                    if len(args) != 1:
-                        raise _Fallback
-                    name = args[0]
-                    if name.__class__ is not str or name[0] != '"':
-                        raise _Fallback
-                    name = name[1:-1]
-                    if "\\" in name:
-                        name = _ESCAPE.sub(lambda e: e.group(1), name)
-                    atom: Atom = tuple.__new__(Node, (full, name))
-                else:
-                    for a in args:
-                        if a.__class__ is str or isinstance(a, TruthValue):
-                            raise _Fallback
-                    out = tuple(args)
-                    if full in unordered:
-                        out = tuple(sorted(out))
-                    atom = tuple.__new__(Link, (full, out))
-                atom = memo.setdefault(atom, atom)
-                if tv is not None:
-                    tvs.append((atom, tv))
-                if cur is None:
-                    forms.append(Form(atom, False, 0, 0))
-                else:
-                    cur.append(atom)
-            else:
-                if cur is None:
-                    raise _Fallback
-                cur.append(tok)
-    except (_Fallback, IndexError, ValueError, TypeError):
-        return None
-    if stack or cur is not None:
-        return None
     return result
 
 

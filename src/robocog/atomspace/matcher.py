@@ -271,6 +271,24 @@ def _compile(
     return t.seal()
 
 
+_CLAUSES: dict[tuple, _Clause] = {}
+_CLAUSES_MAX = 8192
+
+
+def clause_of(atom: Atom, varset: frozenset[Atom], allowed: dict) -> _Clause:
+    """The compiled clause, shared by every pattern that holds the same clause with the
+    same variables and types: a rule's clauses are compiled once however many ways it
+    is pinned down (the planner adds EqualLinks to a rule's body for each object)."""
+    key = (atom, tuple([(v, allowed.get(v)) for v in _all_vars(atom) if v in varset]))
+    c = _CLAUSES.get(key)
+    if c is None:
+        c = _Clause(atom, varset, allowed)
+        if len(_CLAUSES) >= _CLAUSES_MAX:
+            _CLAUSES.clear()
+        _CLAUSES[key] = c
+    return c
+
+
 def _all_vars(atom: Atom) -> Iterable[Atom]:
     if atom.__class__ is Node:
         if atom[0] == "VariableNode":
@@ -486,7 +504,7 @@ class _CompiledAlt:
 
     def __init__(self, alt: _Alt, varset: frozenset[Atom], allowed: dict) -> None:
         self.allowed = allowed
-        self.mandatory = [_Clause(c, varset, allowed) for c in alt.mandatory]
+        self.mandatory = [clause_of(c, varset, allowed) for c in alt.mandatory]
         self.bound_vars: set[Atom] = set()
         for c in self.mandatory:
             self.bound_vars |= c.vars
@@ -501,7 +519,7 @@ class _CompiledAlt:
         for a in alt.absent:
             outer = frozenset(v for v in _all_vars(a) if v in bindable)
             local = frozenset(v for v in _all_vars(a) if v not in bindable)
-            self.absent.append((_Clause(a, outer | local, {**allowed}), outer))
+            self.absent.append((clause_of(a, outer | local, allowed), outer))
             self.absent_vars |= {v for v in local if v in varset}
         self.enum_vars = [v for v in varset if v in self.eval_vars and v not in self.bound_vars]
 

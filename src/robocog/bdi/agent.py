@@ -33,6 +33,28 @@ from robocog.bdi.beliefs import BeliefBase
 from robocog.bdi.circumstance import Circumstance, Event, IntendedMeans, Intention
 from robocog.bdi.logic import ActionError, holds, solve
 from robocog.bdi.parser import ParseError, Program, Rule, parse_literal, parse_program, parse_term
+from robocog.bdi.plans import (
+    ACHIEVE,
+    ACHIEVE_NF,
+    ACHIEVE_STEP,
+    ACTION,
+    ADD_BEL,
+    ADD_BEL_END,
+    ADD_BEL_NF,
+    BELIEF,
+    CONSTRAINT,
+    DEL_ADD_BEL,
+    DEL_BEL,
+    DEL_BEL_NF,
+    FOR,
+    FOR_NEXT,
+    IF,
+    INTERNAL,
+    TEST,
+    TEST_STEP,
+    WHILE,
+    WHILE_AGAIN,
+)
 from robocog.bdi.terms import (
     SOURCE_PERCEPT,
     SOURCE_SELF,
@@ -161,10 +183,10 @@ class Agent:
             if not isinstance(b, Rule):
                 lit = _with_source(resolve(b, {}))
                 if is_ground(lit):
-                    self.post(Event(P.Trigger("+", P.BELIEF, lit), None))
+                    self.post(Event(P.Trigger("+", BELIEF, lit), None))
         for g in prog.goals:
             lit = _with_source(resolve(g, {}, {}))
-            self.C.events.append(Event(P.Trigger("+", P.ACHIEVE, lit), None))
+            self.C.events.append(Event(P.Trigger("+", ACHIEVE, lit), None))
 
     def add_plan(self, plan: P.Plan | str, at_end: bool = True) -> None:
         """Add a plan (object or source text) to the plan library."""
@@ -228,19 +250,19 @@ class Agent:
         """Add a belief (``source(self)`` unless annotated) and its ``+b`` event."""
         lit = _with_source(resolve(_as_literal(belief), {}))
         if self.bb.add(lit) is not None:
-            self.post(Event(P.Trigger("+", P.BELIEF, lit), None))
+            self.post(Event(P.Trigger("+", BELIEF, lit), None))
 
     def remove_belief(self, belief: str | Literal) -> None:
         """Remove a belief (its ``source(self)`` unless annotated) and post ``-b``."""
         lit = _with_source(resolve(_as_literal(belief), {}))
         gone = self.bb.remove(lit)
         if gone is not None:
-            self.post(Event(P.Trigger("-", P.BELIEF, gone), None))
+            self.post(Event(P.Trigger("-", BELIEF, gone), None))
 
     def add_goal(self, goal: str | Literal) -> None:
         """Post ``+!goal`` as a new (external) goal."""
         lit = _with_source(resolve(_as_literal(goal), {}, {}))
-        self.post(Event(P.Trigger("+", P.ACHIEVE, lit), None))
+        self.post(Event(P.Trigger("+", ACHIEVE, lit), None))
 
     def beliefs(self, functor: str | None = None) -> list[Literal]:
         """The facts in the belief base (optionally of one functor), newest first."""
@@ -294,7 +316,7 @@ class Agent:
             self._check_event_waiters(ev.trigger)
         elif (
             ev.intention is None
-            and ev.trigger.kind == P.BELIEF
+            and ev.trigger.kind == BELIEF
             and not self._custom_event
             and not self.pl.has_candidate(ev.trigger)
         ):
@@ -394,12 +416,12 @@ class Agent:
         for lit in [p for p in old if p not in new]:
             gone = self.bb.remove(lit.add_annots((SOURCE_PERCEPT,)))
             if gone is not None:
-                self.post(Event(P.Trigger("-", P.BELIEF, gone), None))
+                self.post(Event(P.Trigger("-", BELIEF, gone), None))
         for lit in new:
             if lit not in old:
                 b = lit.add_annots((SOURCE_PERCEPT,))
                 if self.bb.add(b) is not None:
-                    self.post(Event(P.Trigger("+", P.BELIEF, b), None))
+                    self.post(Event(P.Trigger("+", BELIEF, b), None))
         self._perceived = dict(new)
 
     def _process_message(self, msg: Message) -> None:
@@ -508,13 +530,13 @@ class Agent:
             s: dict = {}
             trail: list = []
             if unify(plan.trigger.literal, ev.trigger.literal, s, trail):
-                if plan.context is None or self._context(plan, s, trail):
+                if plan.cond is None or self._context(plan, s, trail):
                     out.append((plan, s))
         return out
 
     def _context(self, plan: P.Plan, s: dict, trail: list) -> bool:
         try:
-            return holds(self, plan.context, s, trail)
+            return holds(self, plan.cond, s, trail)
         except Exception as exc:  # noqa: BLE001 - a bad context is just false
             self.warn(f"error in the context of {plan.trigger!r}: {exc}")
             return False
@@ -522,38 +544,58 @@ class Agent:
     def _deliberate(self, ev: Event) -> bool:
         """Handle one event; False when it was discarded without using the cycle."""
         trig = ev.trigger
-        cands = self.pl.candidates(trig)
+        pl = self.pl
+        got = trig.cands
+        if got is not None and got[0] is pl and got[1] == pl.version:
+            cands = got[2]
+        else:
+            cands = pl.candidates(trig)
+        if not cands:
+            i = ev.intention
+            if trig.kind == BELIEF:
+                if i is None:
+                    return False
+                # a belief change of this intention that no plan handles: carry on
+                if not i.dropped:
+                    self._advance(i)
+                return True
+            self._no_plan(ev, "relevant")
+            return True
         option = None
-        if cands:
-            if self._custom_option:
-                option = self.select_option(self.applicable_options(ev))
-            else:
-                lit = trig.literal
-                trail: list = []
-                for plan in cands:
-                    params = plan.params
-                    if params is not None and lit.__class__ is Literal and not lit.neg:
-                        s: dict = dict(zip(params, lit.args, strict=True))
-                        matched = True
+        if self._custom_option:
+            option = self.select_option(self.applicable_options(ev))
+        else:
+            lit = trig.literal
+            simple = lit.__class__ is Literal and not lit.neg
+            trail: list = []
+            for plan in cands:
+                params = plan.params
+                if params is not None and simple:
+                    # the candidates have the event's arity: zip pairs them all
+                    if len(params) == 1:
+                        s: dict = {params[0]: lit.args[0]}
                     else:
-                        s = {}
-                        matched = unify(plan.trigger.literal, lit, s, trail)
-                    if matched:
-                        ctx = plan.context
-                        if ctx is None:
-                            option = (plan, s)
-                            break
-                        try:
-                            if holds(self, ctx, s, trail):
-                                option = (plan, s)
-                                break
-                        except Exception as exc:  # noqa: BLE001 - a bad context is just false
-                            self.warn(f"error in the context of {plan.trigger!r}: {exc}")
-                    trail.clear()
+                        s = dict(zip(params, lit.args)) if params else {}  # noqa: B905
+                else:
+                    s = {}
+                    if not unify(plan.trigger.literal, lit, s, trail):
+                        trail.clear()
+                        continue
+                ctx = plan.cond
+                if ctx is None:
+                    option = (plan, s)
+                    break
+                try:
+                    if holds(self, ctx, s, trail):
+                        option = (plan, s)
+                        break
+                except Exception as exc:  # noqa: BLE001 - a bad context is just false
+                    self.warn(f"error in the context of {plan.trigger!r}: {exc}")
+                trail.clear()
         if option is None:
-            if ev.intention is None and trig.kind == P.BELIEF:
+            if ev.intention is None and trig.kind == BELIEF:
                 return False
-            self._no_plan(ev, "applicable" if cands else "relevant")
+            self._no_plan(ev, "applicable")
             return True
         plan, s = option
         im = IntendedMeans(plan, trig, s, plan.body)
@@ -565,26 +607,30 @@ class Agent:
             return True
         if i.dropped:
             return True
-        if self.tail_recursion and i.stack:
-            top = i.stack[-1]
-            t1 = top.trigger
+        stack = i.stack
+        if stack and self.tail_recursion:
+            top = stack[-1]
             cur = top.cur
-            if (
-                cur is not None
-                and cur[1] is None
-                and t1.op == "+"
-                and trig.op == "+"
-                and t1.kind != P.BELIEF
-                and trig.kind != P.BELIEF
-                and t1.literal.__class__ is Literal
-                and trig.literal.__class__ is Literal
-                and t1.literal.functor == trig.literal.functor
-                and len(t1.literal.args) == len(trig.literal.args)
-            ):
-                i.stack.pop()
-                im.ret = self._tro_ret(top)
-        i.stack.append(im)
-        self._requeue(i)
+            if cur is not None and cur[1] is None and trig.op == "+" and trig.kind != BELIEF:
+                t1 = top.trigger
+                l1 = t1.literal
+                l2 = trig.literal
+                if (
+                    t1.op == "+"
+                    and t1.kind != BELIEF
+                    and l1.__class__ is Literal
+                    and l2.__class__ is Literal
+                    and l1.functor == l2.functor
+                    and len(l1.args) == len(l2.args)
+                ):
+                    stack.pop()
+                    ret = top.ret
+                    im.ret = ret if ret is not None and ret[0] == "fixed" else self._tro_ret(top)
+        stack.append(im)
+        if self._has_atomic:
+            self._requeue(i)
+        else:
+            self.C.running.append(i)
         return True
 
     def _tro_ret(self, top: IntendedMeans) -> Any:
@@ -604,7 +650,7 @@ class Agent:
 
     def _no_plan(self, ev: Event, what: str) -> None:
         trig = ev.trigger
-        if trig.op == "+" and trig.kind != P.BELIEF:
+        if trig.op == "+" and trig.kind != BELIEF:
             msg = f"Found a goal for which there is no {what} plan: {trig!r}"
             fail_ev = self._failure_event(ev.intention, trig, in_stack=False)
             if fail_ev is not None:
@@ -618,7 +664,7 @@ class Agent:
             # a belief change of this intention that no plan handles: carry on
             if not ev.intention.dropped:
                 self._advance(ev.intention)
-        elif trig.kind != P.BELIEF:
+        elif trig.kind != BELIEF:
             self.warn(f"no {what} plan for {trig!r}")
 
     # ------------------------------------------------------------------ failure
@@ -628,7 +674,7 @@ class Agent:
         """Jason's search for the ``-!g`` event that handles a failure in ``i``."""
         pl = self.pl
         if i is None or not i.stack:
-            if tevent.kind != P.BELIEF and tevent.op == "+":
+            if tevent.kind != BELIEF and tevent.op == "+":
                 ft = P.Trigger("-", tevent.kind, tevent.literal)
                 if pl.has_candidate(ft):
                     return Event(ft, i)
@@ -638,7 +684,7 @@ class Agent:
             seq.append((im.trigger, im))
         last = len(seq) - 1
         pos = 0
-        if in_stack and tevent.kind != P.BELIEF and tevent.op == "-":
+        if in_stack and tevent.kind != BELIEF and tevent.op == "-":
             # failure inside a failure plan: skip down past the goal it was handling
             goal = resolve(tevent.literal, i.stack[-1].s)
             found = False
@@ -653,7 +699,7 @@ class Agent:
             pos += 1
             t, im = seq[pos]
             ft = P.Trigger("-", t.kind, t.literal)
-        if t.kind != P.BELIEF and pl.has_candidate(ft):
+        if t.kind != BELIEF and pl.has_candidate(ft):
             lit = resolve(t.literal, im.s) if im is not None else t.literal
             return Event(P.Trigger("-", t.kind, lit), i)
         return None
@@ -774,14 +820,19 @@ class Agent:
 
     def _advance(self, i: Intention) -> None:
         """Jason's ``removeActionReQueue`` followed by ``ClrInt``."""
-        im = i.stack[-1]
-        if im.cur is not None:
-            im.cur = im.cur[1]
-        if im.cur is None:
+        stack = i.stack
+        im = stack[-1]
+        cur = im.cur
+        if cur is not None:
+            cur = im.cur = cur[1]
+        if cur is None:
             self._clear(i)
-            if not i.stack:
+            if not stack:
                 return
-        self._requeue(i)
+        if self._has_atomic:
+            self._requeue(i)
+        else:
+            self.C.running.append(i)
 
     def _clear(self, i: Intention) -> None:
         """Pop finished intended means, giving their result back to the caller."""
@@ -792,19 +843,19 @@ class Agent:
                 return
             stack.pop()
             trig = top.trigger
-            if trig.op == "-" and trig.kind != P.BELIEF and stack:
+            if trig.op == "-" and trig.kind != BELIEF and stack:
                 # a failure plan finished: drop everything down to the failed goal
                 goal = resolve(trig.literal, top.s)
                 im = stack[-1]
                 if im.cur is None or not (
-                    im.cur[0].kind == P.ACHIEVE_STEP and _unifies(im.cur[0].term, goal, im.s)
+                    im.cur[0].kind == ACHIEVE_STEP and _unifies(im.cur[0].term, goal, im.s)
                 ):
                     im = stack.pop()
                 while stack and not (
-                    (im.trigger.kind != P.BELIEF and _unifies(im.trigger.literal, goal, im.s))
+                    (im.trigger.kind != BELIEF and _unifies(im.trigger.literal, goal, im.s))
                     or (
                         im.cur is not None
-                        and im.cur[0].kind == P.ACHIEVE_STEP
+                        and im.cur[0].kind == ACHIEVE_STEP
                         and _unifies(im.cur[0].term, goal, im.s)
                     )
                 ):
@@ -846,7 +897,7 @@ class Agent:
         k = step.kind
         s = im.s
         try:
-            if k == P.INTERNAL:
+            if k == INTERNAL:
                 lit = step.term
                 fn = self._internal.get(lit.functor)
                 if fn is None:
@@ -867,36 +918,44 @@ class Agent:
                         self._advance(i)
                     else:
                         self.fail_intention(i, "ia_failed", "")
-            elif k == P.ACHIEVE_STEP:
-                goal = step.state
-                if goal is None:
-                    goal = step.term
-                    if goal.__class__ is Literal:
-                        goal = step.state = _with_source(goal)
-                lit = resolve(goal, s, {})
-                if lit.__class__ is not Literal:
-                    raise ActionError(f"{term_str(lit)} is not a goal", "body_var_without_value")
-                if lit is not goal and goal.__class__ is not Literal:
-                    lit = _with_source(lit)
-                trig = P.Trigger("+", P.ACHIEVE, lit)
+            elif k == ACHIEVE_STEP:
+                trig = step.cache
+                if trig is None:
+                    goal = step.state
+                    if goal is None:
+                        goal = step.term
+                        if goal.__class__ is Literal:
+                            goal = step.state = _with_source(goal)
+                    if goal.__class__ is Literal and goal.ground:
+                        # a goal without variables: the same trigger every time
+                        trig = step.cache = P.Trigger("+", ACHIEVE, goal)
+                    else:
+                        lit = resolve(goal, s, {})
+                        if lit.__class__ is not Literal:
+                            raise ActionError(
+                                f"{term_str(lit)} is not a goal", "body_var_without_value"
+                            )
+                        if lit is not goal and goal.__class__ is not Literal:
+                            lit = _with_source(lit)
+                        trig = self._trigger(step, "+", ACHIEVE, lit)
                 if self._event_waiters or self._has_atomic:
                     self.post(Event(trig, i))
                 else:
                     self.C.events.append(Event(trig, i))
-            elif k == P.ADD_BEL or k == P.ADD_BEL_NF or k == P.ADD_BEL_END:
+            elif k == ADD_BEL or k == ADD_BEL_NF or k == ADD_BEL_END:
                 self._add_belief_step(i, step, s)
-            elif k == P.DEL_ADD_BEL:
+            elif k == DEL_ADD_BEL:
                 self._del_add_step(i, step, s)
-            elif k == P.DEL_BEL or k == P.DEL_BEL_NF:
+            elif k == DEL_BEL or k == DEL_BEL_NF:
                 self._del_belief_step(i, step, s)
-            elif k == P.CONSTRAINT:
+            elif k == CONSTRAINT:
                 if holds(self, step.term, s, []):
                     self._advance(i)
                 else:
                     self.fail_intention(
                         i, "constraint_failed", f"Constraint {step!r} was not satisfied"
                     )
-            elif k == P.ACTION:
+            elif k == ACTION:
                 lit = resolve(step.term, s)
                 if lit.__class__ is Var:
                     raise ActionError(f"variable {lit.name} has no value", "body_var_without_value")
@@ -916,19 +975,19 @@ class Agent:
                             self.fail_intention(i, "ia_failed", "")
                 else:
                     self._act(i, lit)
-            elif k == P.TEST_STEP:
+            elif k == TEST_STEP:
                 self._test_step(i, step, s)
-            elif k == P.ACHIEVE_NF:
+            elif k == ACHIEVE_NF:
                 lit = resolve(step.term, s, {})
                 if lit.__class__ is not Literal:
                     raise ActionError(f"{term_str(lit)} is not a goal", "body_var_without_value")
-                self.post(Event(P.Trigger("+", P.ACHIEVE, _with_source(lit)), None))
+                self.post(Event(P.Trigger("+", ACHIEVE, _with_source(lit)), None))
                 self._advance(i)
-            elif k == P.IF:
+            elif k == IF:
                 self._if_step(i, im, step)
-            elif k == P.WHILE or k == P.WHILE_AGAIN:
+            elif k == WHILE or k == WHILE_AGAIN:
                 self._while_step(i, im, step)
-            elif k == P.FOR or k == P.FOR_NEXT:
+            elif k == FOR or k == FOR_NEXT:
                 self._for_step(i, im, step)
             else:
                 raise ActionError(f"cannot execute {step!r}")
@@ -944,23 +1003,23 @@ class Agent:
 
     # ---- body formulas
     def _add_belief_step(self, i: Intention, step: P.Step, s: dict) -> None:
-        lit = resolve(step.term, s, {})
+        lit = resolve(_sourced(step), s, {})
         if lit.__class__ is not Literal:
             raise ActionError(f"{term_str(lit)} is not a belief", "body_var_without_value")
         lit = _with_source(lit)
-        added = self.bb.add(lit, at_end=step.kind == P.ADD_BEL_END)
+        added = self.bb.add(lit, at_end=step.kind == ADD_BEL_END)
         if added is None:
             self._advance(i)
             return
-        trig = P.Trigger("+", P.BELIEF, lit)
-        if step.kind == P.ADD_BEL_NF:
+        trig = self._trigger(step, "+", BELIEF, lit)
+        if step.kind == ADD_BEL_NF:
             self.post(Event(trig, None))
             self._advance(i)
         else:
             self.post(Event(trig, i))
 
     def _del_belief_step(self, i: Intention, step: P.Step, s: dict) -> None:
-        lit = resolve(step.term, s)
+        lit = resolve(_sourced(step), s)
         if lit.__class__ is not Literal:
             raise ActionError(f"{term_str(lit)} is not a belief", "body_var_without_value")
         lit = _with_source(lit)
@@ -968,8 +1027,8 @@ class Agent:
         if gone is None:
             self._advance(i)
             return
-        trig = P.Trigger("-", P.BELIEF, gone)
-        if step.kind == P.DEL_BEL_NF:
+        trig = self._trigger(step, "-", BELIEF, gone)
+        if step.kind == DEL_BEL_NF:
             self.post(Event(trig, None))
             self._advance(i)
         else:
@@ -992,18 +1051,35 @@ class Agent:
         return None
 
     def _del_add_step(self, i: Intention, step: P.Step, s: dict) -> None:
-        lit = resolve(step.term, s, {})
+        lit = resolve(_sourced(step), s, {})
         if lit.__class__ is not Literal:
             raise ActionError(f"{term_str(lit)} is not a belief", "body_var_without_value")
         lit = _with_source(lit)
-        gone = self.bb.remove_first(lit.key, lit.annots)
+        gone = self.bb.remove_first((lit.functor, len(lit.args), lit.neg), lit.annots)
         if gone is not None:
-            self.post(Event(P.Trigger("-", P.BELIEF, gone), None))
+            self.post(Event(self._trigger(step, "-", BELIEF, gone), None))
         added = self.bb.add(lit)
         if added is None:
             self._advance(i)
             return
-        self.post(Event(P.Trigger("+", P.BELIEF, lit), i))
+        self.post(Event(self._trigger(step, "+", BELIEF, lit), i))
+
+    def _trigger(self, step: P.Step, op: str, kind: str, lit: Literal) -> P.Trigger:
+        """The trigger of an event posted by ``step``, with its candidate plans (which
+        depend only on the step's functor and arity, so they are looked up once)."""
+        trig = P.Trigger(op, kind, lit)
+        if step.term.__class__ is Literal:
+            pl = self.pl
+            rel = step.rel
+            if rel is None or rel[0] is not pl or rel[1] != pl.version:
+                rel = step.rel = (pl, pl.version, {})
+            got = rel[2].get(op)
+            if got is None:
+                pl.candidates(trig)
+                rel[2][op] = trig.cands
+            else:
+                trig.cands = got
+        return trig
 
     def _test_step(self, i: Intention, step: P.Step, s: dict) -> None:
         f = step.term
@@ -1013,7 +1089,7 @@ class Agent:
         lit = deref(f, s)
         if lit.__class__ is Literal and not lit.functor.startswith("."):
             lit = _with_source(resolve(lit, s, {}))
-            trig = P.Trigger("+", P.TEST, lit)
+            trig = P.Trigger("+", TEST, lit)
             if self.pl.has_candidate(trig):
                 self.post(Event(trig, i))
                 return
@@ -1036,9 +1112,9 @@ class Agent:
 
     def _while_step(self, i: Intention, im: IntendedMeans, step: P.Step) -> None:
         s = im.s
-        if step.kind == P.WHILE:
+        if step.kind == WHILE:
             backup = dict(s)
-            loop = P.Step(P.WHILE_AGAIN, step.term, step.blocks, step.line, backup)
+            loop = P.Step(WHILE_AGAIN, step.term, step.blocks, step.line, backup)
         else:
             backup = step.state
             s.clear()
@@ -1053,14 +1129,14 @@ class Agent:
 
     def _for_step(self, i: Intention, im: IntendedMeans, step: P.Step) -> None:
         s = im.s
-        if step.kind == P.FOR:
+        if step.kind == FOR:
             backup = dict(s)
             sols: list[dict] = []
             work = dict(s)
             for _ in solve(self, step.term, work, []):
                 sols.append(dict(work))
             state = (iter(sols), backup)
-            loop = P.Step(P.FOR_NEXT, step.term, step.blocks, step.line, state)
+            loop = P.Step(FOR_NEXT, step.term, step.blocks, step.line, state)
         else:
             state = step.state
             loop = step
@@ -1091,7 +1167,7 @@ class Agent:
             for pos in range(len(i.stack) - 1, -1, -1):
                 im = i.stack[pos]
                 t = im.trigger
-                if t.kind == P.ACHIEVE and t.op == "+" and _unifies(goal, t.literal, {}):
+                if t.kind == ACHIEVE and t.op == "+" and _unifies(goal, t.literal, {}):
                     break
             else:
                 continue
@@ -1124,7 +1200,7 @@ class Agent:
                 lambda e: (
                     not (
                         e.intention is None
-                        and e.trigger.kind == P.ACHIEVE
+                        and e.trigger.kind == ACHIEVE
                         and _unifies(goal, e.trigger.literal, {})
                     )
                 )
@@ -1141,6 +1217,23 @@ class Agent:
         if i in C.running:
             C.running.remove(i)
         C.keep_events(lambda e: e.intention is not i)
+
+
+def _sourced(step: P.Step) -> Term:
+    """The belief term of a ``+b``/``-b``/``-+b`` step with ``source(self)`` added when it
+    has no source (computed once: resolving keeps ground annotations as they are)."""
+    got = step.cache
+    if got is None:
+        term = step.term
+        got = term
+        if term.__class__ is Literal:
+            for a in term.annots:
+                if not is_ground(a):
+                    break
+            else:
+                got = _with_source(term)
+        step.cache = got
+    return got
 
 
 def _is_atomic(i: Intention) -> bool:

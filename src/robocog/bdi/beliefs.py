@@ -64,7 +64,13 @@ class BeliefBase:
         if new:
             self._size += 1
         if value.__class__ is Literal and value.ground and value.args:
-            sub = self._first.setdefault(key, {}).setdefault(value.args[0], {})
+            first = self._first.get(key)
+            if first is None:
+                first = self._first[key] = {}
+            a0 = value.args[0]
+            sub = first.get(a0)
+            if sub is None:
+                sub = first[a0] = {}
             if at_end and new and sub:
                 items = list(sub.items())
                 sub.clear()
@@ -72,29 +78,43 @@ class BeliefBase:
                 sub.update(items)
             else:
                 sub[k] = value
-        elif new:
+        elif new and not (value.__class__ is Literal and value.ground):
             self._mixed[key] = self._mixed.get(key, 0) + 1
 
     def _del(self, key: tuple, k: object) -> None:
-        bucket = self._index[key]
-        value = bucket.pop(k)
+        value = self._index[key].pop(k)
         self._size -= 1
         if value.__class__ is Literal and value.ground and value.args:
-            sub = self._first[key][value.args[0]]
+            first = self._first[key]
+            a0 = value.args[0]
+            sub = first[a0]
             del sub[k]
             if not sub:
-                del self._first[key][value.args[0]]
-        else:
+                del first[a0]
+        elif not (value.__class__ is Literal and value.ground):
             self._mixed[key] -= 1
 
     # ---- changes
     def add(self, lit: Literal, at_end: bool = False) -> Literal | None:
         """Add ``lit``; returns what was added (annotations new to the base) or ``None``."""
-        key = lit.key
+        key = (lit.functor, len(lit.args), lit.neg)
         if lit.ground:
             k = lit.args
             bucket = self._index.get(key)
             old = bucket.get(k) if bucket else None
+            if old is None and not at_end and bucket is not None and k:
+                # the common case: a new ground fact with arguments, at the front
+                bucket[k] = lit
+                self._size += 1
+                first = self._first.get(key)
+                if first is None:
+                    first = self._first[key] = {}
+                sub = first.get(k[0])
+                if sub is None:
+                    first[k[0]] = {k: lit}
+                else:
+                    sub[k] = lit
+                return lit
             if old is not None:
                 merged = sort_annots(old.annots + lit.annots)
                 if merged == old.annots:
@@ -155,7 +175,10 @@ class BeliefBase:
             if old.__class__ is not Literal:
                 continue
             oa = old.annots
-            if all(a in oa for a in annots):
+            for a in annots:
+                if a not in oa:
+                    break
+            else:
                 return self._take_annots(key, k, old, annots)
         return None
 
@@ -278,6 +301,43 @@ class BeliefBase:
                 vals = sub.values()
         mark = len(trail)
         for b in reversed(vals):
+            if unify(pattern, b, s, trail):
+                return True
+            undo(s, trail, mark)
+        return False
+
+    def first_det(self, pattern: Literal, s: dict, trail: list) -> bool | None:
+        """Like :meth:`first`, but only decides when the answer is unique: True (the one
+        fact that can match did, bindings kept in ``s``), False (nothing matches) or
+        ``None`` (rules, non-ground facts or several candidates: use :meth:`query`)."""
+        key = (pattern.functor, len(pattern.args), pattern.neg)
+        bucket = self._index.get(key)
+        if not bucket:
+            return False
+        if self._mixed.get(key):
+            return None
+        args = pattern.args
+        if pattern.ground and not pattern.annots:
+            if args:
+                sub = self._first[key].get(args[0])
+                return bool(sub) and args in sub
+            return args in bucket
+        vals = bucket
+        if args:
+            a0 = args[0]
+            while a0.__class__ is Var:
+                v = s.get(a0)
+                if v is None:
+                    break
+                a0 = v
+            if a0.__class__ is not Var and is_ground(a0):
+                vals = self._first[key].get(a0)
+                if not vals:
+                    return False
+        if len(vals) != 1:
+            return None
+        for b in vals.values():
+            mark = len(trail)
             if unify(pattern, b, s, trail):
                 return True
             undo(s, trail, mark)

@@ -94,6 +94,21 @@ def holds(agent: Agent, f: Term, s: dict, trail: list) -> bool:
                 return True
             undo(s, trail, mark)
             return False
+        if (
+            left.__class__ is Literal
+            and left.functor[0] != "."
+            and (left.args or left.functor not in _TRUTH)
+        ):
+            # a fact query with at most one answer needs no backtracking either
+            mark = len(trail)
+            got = agent.bb.first_det(left, s, trail)
+            if got is False:
+                return False
+            if got is True:
+                if holds(agent, f.right, s, trail):
+                    return True
+                undo(s, trail, mark)
+                return False
     elif c is Not:
         mark = len(trail)
         if holds(agent, f.arg, s, trail):
@@ -107,6 +122,19 @@ def holds(agent: Agent, f: Term, s: dict, trail: list) -> bool:
     for _ in solve(agent, f, s, trail):
         return True
     return False
+
+
+def right_assoc(f: Term) -> Term:
+    """``(a & b) & c`` as ``a & (b & c)``: the same solutions in the same order, but the
+    left side of each conjunction is a single formula, which :func:`holds` can often
+    decide without a generator."""
+    if f.__class__ is And:
+        left = f.left
+        if left.__class__ is And:
+            return right_assoc(And(left.left, And(left.right, f.right)))
+        right = right_assoc(f.right)
+        return f if right is f.right else And(left, right)
+    return f
 
 
 def relation(f: Rel, s: dict, trail: list) -> bool:

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 
+from robocog.bdi.logic import right_assoc
 from robocog.bdi.terms import Literal, Term, Var, term_str
 
 # trigger kinds
@@ -21,12 +22,14 @@ TEST = "?"
 class Trigger:
     """``+!g``, ``-!g``, ``+?g``, ``-?g``, ``+b`` or ``-b``."""
 
-    __slots__ = ("op", "kind", "literal")
+    __slots__ = ("op", "kind", "literal", "cands")
 
     def __init__(self, op: str, kind: str, literal: Term) -> None:
         self.op = op
         self.kind = kind
         self.literal = literal
+        #: (plan library, its version, candidate plans), filled in by the library
+        self.cands: tuple | None = None
 
     @property
     def is_goal(self) -> bool:
@@ -89,7 +92,7 @@ class Step:
     written, for failure annotations.
     """
 
-    __slots__ = ("kind", "term", "blocks", "line", "state")
+    __slots__ = ("kind", "term", "blocks", "line", "state", "cache", "rel")
 
     def __init__(
         self, kind: int, term: Term, blocks: tuple = (), line: int = 0, state: object = None
@@ -99,6 +102,11 @@ class Step:
         self.blocks = blocks
         self.line = line
         self.state = state
+        #: what executing the step can compute once (a ready trigger, the term with its
+        #: ``source(self)`` annotation); filled in by the agent at first use
+        self.cache: object = None
+        #: (plan library, version, {op: candidate plans}) for the events the step posts
+        self.rel: tuple | None = None
 
     def __repr__(self) -> str:
         if self.kind in _PREFIX:
@@ -149,7 +157,17 @@ def chain_steps(c: Chain) -> list[Step]:
 class Plan:
     """``@label trigger : context <- body.``"""
 
-    __slots__ = ("label", "trigger", "context", "body", "source", "line", "order", "params")
+    __slots__ = (
+        "label",
+        "trigger",
+        "context",
+        "cond",
+        "body",
+        "source",
+        "line",
+        "order",
+        "params",
+    )
 
     def __init__(
         self,
@@ -163,6 +181,8 @@ class Plan:
         self.label = label
         self.trigger = trigger
         self.context = context
+        #: the context as it is evaluated (conjunctions grouped to the right)
+        self.cond = right_assoc(context) if context is not None else None
         self.body = body
         self.source = source
         self.line = line
@@ -199,10 +219,13 @@ class PlanLibrary:
         self._var_plans: list[Plan] = []
         self._counter = 0
         self._labels: dict[str, Plan] = {}
+        #: changes with every addition or removal (invalidates cached candidates)
+        self.version = 0
 
     def add(self, plan: Plan, at_end: bool = True) -> None:
         """Add a plan (at the end of program order, or at the beginning)."""
         self._counter += 1
+        self.version += 1
         plan.order = self._counter if at_end else -self._counter
         if plan.label is not None:
             name = plan.label.functor
@@ -224,6 +247,7 @@ class PlanLibrary:
         if plan is None:
             return False
         self._plans.remove(plan)
+        self.version += 1
         key = plan.trigger.key()
         (self._var_plans if key is None else self._index[key]).remove(plan)
         return True
@@ -234,6 +258,9 @@ class PlanLibrary:
 
     def candidates(self, trigger: Trigger) -> list[Plan]:
         """Plans whose trigger may be relevant for ``trigger``, in program order."""
+        got = trigger.cands
+        if got is not None and got[0] is self and got[1] == self.version:
+            return got[2]
         lit = trigger.literal
         if lit.__class__ is Literal:
             found = self._index.get(
@@ -241,11 +268,12 @@ class PlanLibrary:
             )
         else:
             found = ()
-        if not self._var_plans:
-            return found  # type: ignore[return-value]
-        extra = [p for p in self._var_plans if p.trigger.op == trigger.op]
-        extra = [p for p in extra if p.trigger.kind == trigger.kind]
-        return sorted([*found, *extra], key=lambda p: p.order)
+        if self._var_plans:
+            extra = [p for p in self._var_plans if p.trigger.op == trigger.op]
+            extra = [p for p in extra if p.trigger.kind == trigger.kind]
+            found = sorted([*found, *extra], key=lambda p: p.order)
+        trigger.cands = (self, self.version, found)
+        return found  # type: ignore[return-value]
 
     def has_candidate(self, trigger: Trigger) -> bool:
         """True if some plan may handle ``trigger``."""

@@ -19,6 +19,7 @@ from typing import Any
 Term = Any  # Var | Literal | Cons | Nil | Arith | Rel | And | Or | Not | Body | str | int | float
 
 _fresh = itertools.count(1)
+_new = object.__new__
 
 
 class Var:
@@ -70,10 +71,10 @@ class Literal:
         self.ground = g
         self._hash = None
 
-    @classmethod
-    def make(cls, functor: str, args: tuple, annots: tuple, neg: bool, ground: bool) -> Literal:
+    @staticmethod
+    def make(functor: str, args: tuple, annots: tuple, neg: bool, ground: bool) -> Literal:
         """Build without re-checking groundness (the caller knows it)."""
-        obj = cls.__new__(cls)
+        obj = _new(Literal)
         obj.functor = functor
         obj.args = args
         obj.annots = annots

@@ -95,7 +95,7 @@ def unify(a: Term, b: Term, s: dict, trail: list) -> bool:
                 if aa != ba:
                     return False
             else:
-                for x, y in zip(aa, ba, strict=True):
+                for x, y in zip(aa, ba):  # noqa: B905 - same length, checked above
                     if not unify(x, y, s, trail):
                         return False
             if a.annots:
@@ -204,6 +204,12 @@ def resolve(t: Term, s: dict, fresh: dict | None = None) -> Term:
             args.append(a)
         annots = t.annots
         if annots:
+            for a in annots:
+                if a.__class__ is Var or not is_ground(a):
+                    break
+            else:
+                # ground annotations (typically ``source(self)``) are kept as they are
+                return Literal.make(t.functor, tuple(args), annots, t.neg, ground)
             annots = sort_annots([resolve(a, s, fresh) for a in annots])
             if ground:
                 for a in annots:

@@ -156,6 +156,11 @@ def seen_as(question: str, answer: str | None, f: float, c: float) -> str | None
     return f"<{m.group(2)} --> [see]>. :|: {{{f:.6f} {conf:.6f}}}"
 
 
+def not_seen(kind: str) -> str:
+    """A kind looked for and not in view this frame: ``<trash --> [see]>`` denied."""
+    return f"<{atom(kind)} --> [see]>. :|: {{0.0 0.9}}"
+
+
 def goal_at(place: str) -> str:
     """The goal of being at a place: ``<({SELF} * {p3}) --> at>! :|:``."""
     return f"<({{SELF}} * {{{atom(place)}}}) --> at>! :|:"

@@ -11,7 +11,9 @@ that predicted it loses evidence (Section V.D).
 For each label in view the mind asks the reasoner what it is (``<bottle --> ?1>?``) and
 reports the sighting under the answer as well (``<trash --> [see]>``), so the category
 comes from the reasoner's own knowledge yet enters as an event it can learn from; a
-sighting it would only derive is soon crowded out of its attention.
+sighting it would only derive is soon crowded out of its attention. Once a kind has
+been reported, a frame without it says so (``<trash --> [see]>. :|: {0.0 0.9}``), so
+that being at a checkpoint where no trash is seen is evidence too.
 
 The operator's knowledge of the checkpoints (Section V.C, step 4) enters as a goal:
 when ``patience`` frames have passed without an operation that succeeded (nothing
@@ -37,6 +39,7 @@ from robocog.minds.nars_encoding import (
     encode,
     goal_at,
     gripper_events,
+    not_seen,
     recall_questions,
     seen_as,
 )
@@ -111,6 +114,7 @@ class NarsMind:
         self._executed: list[tuple[str, str | None]] = []
         self._frame: list[str] = []
         self._questions: list[str] = []
+        self._kinds: set[str] = set()  # kinds of things reported seen so far
         self._idle = 0
         self._last_place: str | None = None
         self._holding = False
@@ -174,14 +178,18 @@ class NarsMind:
         place = [ln for ln in self._frame if ln.startswith("<({SELF} * ")]
         for line in place:
             self._input(line)
-        kinds: dict[str, None] = {}
+        seen_kinds: dict[str, None] = {}
         for question in self._questions:  # what is seen, as what it is, right after where
             answer = self.ask(question)
             if answer is not None:
                 event = seen_as(question, *answer)
-                if event is not None and event not in kinds:
-                    kinds[event] = None
+                if event is not None and event not in seen_kinds:
+                    seen_kinds[event] = None
+                    self._kinds.add(event.split(" -->")[0].lstrip("<"))
                     self._input(event)
+        seen = {e.split(" -->")[0].lstrip("<") for e in seen_kinds}
+        for kind in sorted(self._kinds - seen):  # looked for, and not there
+            self._input(not_seen(kind))
         for line in self._frame:
             if line not in place:
                 self._input(line)

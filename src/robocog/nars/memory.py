@@ -10,7 +10,7 @@ names (ONA stops at 255 atoms), and is cleaned when a concept leaves.
 from __future__ import annotations
 
 import heapq
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 
 from .event import ETERNAL, Event
 from .table import Table
@@ -77,17 +77,27 @@ def _key(e: Event) -> tuple[object, ...]:
 
 
 class EventQueue:
-    """Bounded max-priority queue of events (ONA's cycling events)."""
+    """Bounded max-priority queue of events (ONA's cycling events).
 
-    __slots__ = ("items", "capacity", "keys")
+    Priorities live in a plain list beside the events, so finding the weakest or the
+    strongest item is one C-level ``min``/``max`` over at most a few hundred floats.
+    """
+
+    __slots__ = ("events", "prio", "capacity", "keys")
 
     def __init__(self, capacity: int) -> None:
-        self.items: list[list[object]] = []  # [priority, event]
+        self.events: list[Event] = []
+        self.prio: list[float] = []
         self.capacity = capacity
         self.keys: dict[tuple[object, ...], int] = {}
 
     def __len__(self) -> int:
-        return len(self.items)
+        return len(self.events)
+
+    @property
+    def items(self) -> list[tuple[float, Event]]:
+        """(priority, event) pairs, for inspection."""
+        return list(zip(self.prio, self.events, strict=True))
 
     def contains(self, e: Event) -> bool:
         """True if an equal event is queued."""
@@ -103,37 +113,42 @@ class EventQueue:
 
     def push(self, e: Event, priority: float) -> bool:
         """Add ``e``; a full queue evicts its weakest item or rejects a weaker newcomer."""
-        items = self.items
-        if len(items) >= self.capacity:
-            i_min = min(range(len(items)), key=lambda i: items[i][0])  # type: ignore[arg-type,return-value]
-            if priority < items[i_min][0]:  # type: ignore[operator]
+        prio = self.prio
+        if len(prio) >= self.capacity:
+            m = min(prio)
+            if priority < m:
                 return False
-            self._forget(items[i_min][1])  # type: ignore[arg-type]
-            items[i_min] = [priority, e]
+            i = prio.index(m)
+            self._forget(self.events[i])
+            self.events[i] = e
+            prio[i] = priority
         else:
-            items.append([priority, e])
+            self.events.append(e)
+            prio.append(priority)
         k = _key(e)
         self.keys[k] = self.keys.get(k, 0) + 1
         return True
 
     def pop(self) -> tuple[float, Event] | None:
         """Remove and return the highest-priority event."""
-        items = self.items
-        if not items:
+        prio = self.prio
+        if not prio:
             return None
-        i_max = max(range(len(items)), key=lambda i: items[i][0])  # type: ignore[arg-type,return-value]
-        p, e = items.pop(i_max)
-        self._forget(e)  # type: ignore[arg-type]
-        return p, e  # type: ignore[return-value]
+        i = prio.index(max(prio))
+        p = prio.pop(i)
+        e = self.events.pop(i)
+        self._forget(e)
+        return p, e
 
     def decay(self, factor: float) -> None:
         """Forget a little: every priority times ``factor``."""
-        for x in self.items:
-            x[0] *= factor  # type: ignore[operator]
+        if self.prio:
+            self.prio = [p * factor for p in self.prio]
 
     def clear(self) -> None:
         """Drop every item."""
-        self.items.clear()
+        self.events.clear()
+        self.prio.clear()
         self.keys.clear()
 
 
@@ -149,6 +164,13 @@ class Memory:
         self.belief_events = EventQueue(events_max)
         self.next_concept_id = 1
         self.evictions = 0
+        #: called with each concept that leaves, so owners of other indexes can clean up
+        self.on_remove: Callable[[Concept], None] | None = None
+
+    def __getstate__(self) -> dict[str, object]:
+        state = dict(self.__dict__)
+        state["on_remove"] = None  # re-attached by the owner after loading
+        return state
 
     def __len__(self) -> int:
         return len(self.concepts)
@@ -188,6 +210,8 @@ class Memory:
     def remove(self, c: Concept) -> None:
         """Forget concept ``c`` and its index entries."""
         self.concepts.pop(c.term, None)
+        if self.on_remove is not None:
+            self.on_remove(c)
         for a in _index_atoms(c.term):
             d = self.atom_index.get(a)
             if d is not None:

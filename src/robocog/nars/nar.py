@@ -90,6 +90,7 @@ class NAR(SensorimotorMixin, DecisionMixin):
         self.pending_questions: dict[Term, None] = {}
         self._init_sensorimotor()
         self._init_goals()
+        self.memory.on_remove = self._forget_concept
 
     def rand(self) -> int:
         """ONA's ``myrand``: the POSIX example LCG, 0..32767."""
@@ -485,7 +486,7 @@ class NAR(SensorimotorMixin, DecisionMixin):
         self.matched_total += len(chosen)
         for c, cp in chosen:
             belief = c.belief
-            if belief is None and (e.occurrence_time == ETERNAL or c.belief_spike is None):
+            if belief is None:
                 continue
             if (
                 e.occurrence_time != ETERNAL
@@ -494,8 +495,6 @@ class NAR(SensorimotorMixin, DecisionMixin):
                 < cfg.event_belief_distance
             ):
                 belief = c.belief_spike.projected(e.occurrence_time)
-            if belief is None:
-                continue  # a spike too far from the event
             if overlap(e.stamp, belief.stamp):
                 continue
             c.use(now, False, 0)
@@ -620,7 +619,7 @@ class NAR(SensorimotorMixin, DecisionMixin):
         if not s_names or not p_names:
             return
         idx = self.memory.atom_index
-        limit = 200
+        limit = 50_000
         side_p: dict[Term, list[Concept]] = {}
         for a in p_names:
             for c in itertools.islice(idx.get(a, ()), limit):
@@ -701,6 +700,8 @@ class NAR(SensorimotorMixin, DecisionMixin):
             "time_index": self.time_index,
             "table_index": self.table_index,
             "pre_index": self.pre_index,
+            "links_by_subject": self.links_by_subject,
+            "general_links": self.general_links,
             "goal_layers": self.goal_layers,
             "recent_goal_concepts": self.recent_goal_concepts,
         }
@@ -736,7 +737,13 @@ class NAR(SensorimotorMixin, DecisionMixin):
         nar.op_names = state["op_names"]
         nar.stats = state["stats"]
         nar.pending_questions = state.get("pending", {})
-        for key in ("time_index", "table_index", "pre_index", "goal_layers", "recent_goal_concepts"):
+        for key in (
+            "time_index",
+            "table_index",
+            "pre_index",
+            "goal_layers",
+            "recent_goal_concepts",
+        ):
             if key in state:
                 setattr(nar, key, state[key])
         return nar
@@ -748,6 +755,7 @@ class NAR(SensorimotorMixin, DecisionMixin):
         self.__dict__.update(other.__dict__)
         self.output = keep_output
         self._answer_cbs, self._derivation_cbs, self._execution_cbs, self.operations = cbs
+        self.memory.on_remove = self._forget_concept
 
 
 _IMAGES = frozenset({"/1", "/2", "\\1", "\\2"})

@@ -59,6 +59,8 @@ DT.2: /dt=-?[0-9]+(\.[0-9]+)?/
 """
 
 TERM_GRAMMAR_START = "term"
+#: ONA reads at most 1023 characters a line; longer terms are beyond its term size too
+MAX_LINE = 4096
 
 
 class NarseseError(ValueError):
@@ -222,9 +224,13 @@ def _error(text: str, exc: Exception, line: int) -> NarseseError:
 
 def parse_sentence(text: str, line: int = 1) -> Sentence:
     """Parse one Narsese sentence such as ``<a --> b>. :|: {1.0 0.9}``."""
+    if len(text) > MAX_LINE:
+        raise NarseseError(line, MAX_LINE + 1, f"line longer than {MAX_LINE} characters")
     try:
         tree = _SENTENCE.parse(text)
         return _BUILD.transform(tree)  # type: ignore[no-any-return]
+    except RecursionError:
+        raise NarseseError(line, 1, "term nested too deeply") from None
     except UnexpectedInput as exc:
         raise _error(text, exc, line) from None
     except Exception as exc:  # noqa: BLE001 - a transformer check, reported with position

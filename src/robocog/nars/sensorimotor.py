@@ -107,10 +107,11 @@ class SensorimotorMixin:
         now = self.time  # type: ignore[attr-defined]
         mem = self.memory  # type: ignore[attr-defined]
         cfg = self.config  # type: ignore[attr-defined]
-        target = mem.conceptualize(predicate, now)
-        target.use(now, is_input, cfg.eternal_input_usage_boost)
+        # the source first: making the target last means nothing evicts it before it is indexed
         source = mem.conceptualize(pre, now)
         source.use(now, is_input, cfg.eternal_input_usage_boost)
+        target = mem.conceptualize(predicate, now)
+        target.use(now, is_input, cfg.eternal_input_usage_boost)
         imp = Implication(term, t, stamp, dt, now if creation_time is None else creation_time, pre)
         table = target.tables(cfg.operations_max, cfg.table_size)[opi]
         stored = table.add_and_revise(imp, cfg.stamp_size)
@@ -133,6 +134,37 @@ class SensorimotorMixin:
         if tables is None or opi >= len(tables):
             return []
         return tables[opi].items
+
+    def _forget_concept(self, c: Concept) -> None:
+        """Drop an evicted concept from the implication, link and time indexes."""
+        try:
+            self.time_index.remove(c)
+        except ValueError:
+            pass
+        tables = c.precondition_beliefs
+        if tables is not None:
+            for opi, table in enumerate(tables):
+                if not table.items:
+                    continue
+                d = self.table_index.get(opi)
+                if d is not None:
+                    d.pop(c, None)
+                for imp in table.items:
+                    key = (imp.source, opi)
+                    targets = self.pre_index.get(key)  # type: ignore[arg-type]
+                    if targets is not None:
+                        targets.pop(c, None)
+                        if not targets:
+                            del self.pre_index[key]  # type: ignore[arg-type]
+        t = c.term
+        if t.op in ("==>", "<=>"):
+            self.general_links.pop(t, None)
+            for side in t.args:
+                d2 = self.links_by_subject.get(side)
+                if d2 is not None:
+                    d2.pop(t, None)
+                    if not d2:
+                        del self.links_by_subject[side]
 
     # ------------------------------------------------------ declarative links
     def _note_link(self, term: Term) -> None:

@@ -51,6 +51,12 @@ def configure(parser: argparse.ArgumentParser) -> None:
         default="global",
         help="BFS: drop states seen anywhere (global) or only on the same branch (branch)",
     )
+    parser.add_argument(
+        "--goal-test",
+        choices=("created", "taken"),
+        default="created",
+        help="BFS: test the goal when a state is created (default) or taken from the queue",
+    )
     parser.add_argument("--max-seconds", type=float, default=None, help="time limit for A*")
     parser.add_argument("--json", action="store_true", help="print the result as JSON")
     parser.add_argument(
@@ -100,6 +106,7 @@ def run(args: argparse.Namespace) -> int:
                 quick_names=names,
                 max_seconds=args.max_seconds,
                 style="pddl",
+                goal_test=args.goal_test,
             )
         else:
             objects, facts, goal = list(args.objects), args.facts, args.goal
@@ -121,6 +128,7 @@ def run(args: argparse.Namespace) -> int:
                 mode=args.mode,
                 max_iterations=args.max_iterations,
                 prune=args.prune,
+                goal_test=args.goal_test,
             )
     except (PlanningError, EnglishError, PDDLError, OSError, KeyError) as exc:
         print(f"robocog plan: {exc}", file=sys.stderr)

@@ -222,6 +222,7 @@ class Planner:
         prune: str = "global",
         strict: bool = False,
         engine: str = "compiled",
+        goal_test: str = "created",
     ) -> PlanResult:
         """Search a plan from *scene* to *goal* (facts or request sentences).
 
@@ -254,6 +255,7 @@ class Planner:
             max_nodes=self.max_nodes,
             max_seconds=self.max_seconds,
             started=start,
+            goal_test=goal_test,
         )
         if added and not strict:
             result.extra["learnt_objects"] = added
@@ -325,11 +327,13 @@ def solve_task(
     style: str = "atomese",
     view: BlocksView | None = None,
     reduce: bool = True,
+    goal_test: str = "created",
 ) -> PlanResult:
     """Search *task* in *mode* and wrap the outcome as a ``PlanResult``.
 
     With ``reduce`` A* skips the moves ``reductions.BlocksReduction`` shows unnecessary
-    (only when the goal is about supports alone); plans stay shortest.
+    (only when the goal is about supports alone); plans stay shortest. ``goal_test``
+    is passed to the BFS modes (see ``search.bfs``).
     """
     if mode not in ALL_MODES:
         raise PlanningError(f"unknown mode {mode!r}; choose one of {', '.join(ALL_MODES)}")
@@ -346,10 +350,14 @@ def solve_task(
         result = astar(space, h, max_nodes=max_nodes, max_seconds=max_seconds)
     elif mode == "quick":
         space = task.restricted(quick_names or set())
-        result = bfs(space, "quick", max_iterations, prune=prune, max_nodes=max_nodes)
+        result = bfs(
+            space, "quick", max_iterations, prune=prune, max_nodes=max_nodes, goal_test=goal_test
+        )
     else:
         try:
-            result = bfs(task, mode, max_iterations, prune=prune, max_nodes=max_nodes)
+            result = bfs(
+                task, mode, max_iterations, prune=prune, max_nodes=max_nodes, goal_test=goal_test
+            )
         except ValueError as exc:
             raise PlanningError(str(exc)) from None
     plan: list[Operator] = result.plan or []

@@ -121,7 +121,7 @@ class FactIndex:
     def __init__(self, facts: Iterable[Fact]) -> None:
         self.facts = frozenset(facts)
         self.by_pred: dict[tuple[str, int], list[Fact]] = {}
-        for fact in self.facts:
+        for fact in sorted(self.facts):  # sorted: the same order in every process
             self.by_pred.setdefault((fact[0], len(fact)), []).append(fact)
 
 

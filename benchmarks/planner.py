@@ -10,9 +10,9 @@ same time limit per task. Every plan is replayed by a validator written here fro
 PDDL semantics (independent of the planner's grounding), and the table gives plan length,
 expanded states and time, and the time ratios peer/robocog.
 
-    python benchmarks/planning.py                 # everything, 60 s per task
-    python benchmarks/planning.py --tasks 1-12 --timeout 10 --peers robocog,pyperplan
-    python benchmarks/planning.py --json results.json
+    python benchmarks/planner.py                 # everything, 60 s per task
+    python benchmarks/planner.py --tasks 1-12 --timeout 10 --peers robocog,pyperplan
+    python benchmarks/planner.py --json results.json
 """
 
 from __future__ import annotations
