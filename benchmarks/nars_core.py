@@ -131,7 +131,7 @@ def stream(count: int, seed: int, capacity: int) -> int:
         elif i >= count - window:
             last.append(dt)
         biggest = max(biggest, len(nar.memory))
-        if (i + 1) % 100_000 == 0:
+        if (i + 1) % max(1, count // 10) == 0:
             rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
             print(
                 f"{i + 1:>9} lines  {len(nar.memory):>5} concepts  peak RSS {rss:.0f} MB",

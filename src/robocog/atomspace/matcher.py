@@ -28,6 +28,7 @@ from typing import TYPE_CHECKING
 
 from robocog.atomspace import types as _t
 from robocog.atomspace.atoms import Atom, Link, Node, variables_of
+from robocog.atomspace.fastpath import fast_query
 
 if TYPE_CHECKING:
     from robocog.atomspace.space import AtomSpace
@@ -818,6 +819,10 @@ def query(
     VariableNode) or an iterable of VariableNodes; by default every variable in the
     body is free.
     """
+    if variables is None and limit is None:
+        found = fast_query(space, body)
+        if found is not None:
+            return found
     decl: Atom | None
     if variables is None or isinstance(variables, Atom):
         decl = variables  # type: ignore[assignment]

@@ -60,6 +60,22 @@ def bulk() -> Iterator[None]:
             gc.enable()
 
 
+def _relation_keys(link: Atom) -> list[tuple]:
+    """The keys of ``link`` in the relation index, if it is a relation ``(R c (L
+    leaves...))`` (a node, then a link): one per leaf, ``(leaf, its position, c, R, L,
+    number of leaves)``; the index maps each key to the set of inner links ``(L ...)``."""
+    out = link[1]
+    if len(out) != 2:
+        return []
+    c, inner = out
+    if c.__class__ is not Node or inner.__class__ is not Link:
+        return []
+    typ = link[0]
+    itype, leaves = inner
+    m = len(leaves)
+    return [(y, j, c, typ, itype, m) for j, y in enumerate(leaves)]
+
+
 class AtomSpace:
     """A typed hypergraph of unique atoms with truth values and key-value Values."""
 
@@ -73,6 +89,8 @@ class AtomSpace:
         "_hidden",
         "_owned_inc",
         "_owned_typ",
+        "_relations",
+        "_owned_rel",
         "functions",
         "name",
     )
@@ -88,6 +106,10 @@ class AtomSpace:
         # copy-on-write bookkeeping: None = every set is ours; else the keys we own
         self._owned_inc: set[Atom] | None = None
         self._owned_typ: set[str] | None = None
+        # the relation index: (leaf, position, c, R, L, arity) -> the inner links of
+        # the relations (R c (L ... leaf ...)) in the space (see _relation_keys)
+        self._relations: dict[tuple, set[Link]] = {}
+        self._owned_rel: set[tuple] | None = None
         self.functions: dict[str, GroundedFunction] = parent.functions if parent is not None else {}
         self.name = name
 
@@ -126,10 +148,13 @@ class AtomSpace:
         new._by_type = self._by_type.copy()
         new._tv = self._tv.copy()
         new._values = self._values.copy()  # inner dicts are replaced, never mutated
+        new._relations = self._relations.copy()
         self._owned_inc = set()
         self._owned_typ = set()
+        self._owned_rel = set()
         new._owned_inc = set()
         new._owned_typ = set()
+        new._owned_rel = set()
         return new
 
     # ------------------------------------------------------------------ lookup
@@ -233,7 +258,12 @@ class AtomSpace:
         """
         if atom[0] in _UNIQUE_KEYED and atom.__class__ is Link and atom[1]:
             self._unique_keyed(atom)
-        if self._parent is None and self._owned_inc is None and self._owned_typ is None:
+        if (
+            self._parent is None
+            and self._owned_inc is None
+            and self._owned_typ is None
+            and self._owned_rel is None
+        ):
             found = self._atoms.get(atom)
             if found is None:
                 found = self._add_flat(atom)
@@ -285,12 +315,23 @@ class AtomSpace:
                 atom = tuple.__new__(Link, (atom[0], tuple(new)))
             atoms[atom] = atom
             inc = self._incoming
+            holds_link = False
             for c in new:
                 s = inc.get(c)
                 if s is None:
                     inc[c] = {atom}
                 else:
                     s.add(atom)
+                if c.__class__ is Link:
+                    holds_link = True
+            if holds_link:
+                rel = self._relations
+                for key in _relation_keys(atom):
+                    s = rel.get(key)
+                    if s is None:
+                        rel[key] = {new[1]}
+                    else:
+                        s.add(new[1])
         elif cls is Node:
             atoms[atom] = atom
         else:
@@ -330,6 +371,8 @@ class AtomSpace:
         if atom.__class__ is Link:
             for x in atom[1]:
                 self._inc_set_w(x).add(atom)
+            for key in _relation_keys(atom):
+                self._rel_set_w(key).add(atom[1][1])
         return atom
 
     def _inc_set_w(self, atom: Atom) -> set[Link]:
@@ -345,6 +388,31 @@ class AtomSpace:
             self._incoming[atom] = s
             owned.add(atom)
         return s
+
+    def _rel_set_w(self, key: tuple) -> set[Link]:
+        s = self._relations.get(key)
+        owned = self._owned_rel
+        if s is None:
+            s = set()
+            self._relations[key] = s
+            if owned is not None:
+                owned.add(key)
+        elif owned is not None and key not in owned:
+            s = set(s)
+            self._relations[key] = s
+            owned.add(key)
+        return s
+
+    def relation(self, leaf: Atom, j: int, c: Atom, outer: str, inner: str, arity: int) -> set[Link]:
+        """The inner links ``(inner ...)`` of arity ``arity`` holding ``leaf`` at
+        position ``j`` of the relations ``(outer c (inner ...))`` in this space.
+
+        The index behind the matcher's fast path for the commonest clause,
+        ``(EvaluationLink (PredicateNode "on") (ListLink B ?y))``: everything but the
+        other leaves is in the key. Flat spaces only (a frame's index holds its own
+        atoms); the returned set must not be modified.
+        """
+        return self._relations.get((leaf, j, c, outer, inner, arity), _EMPTY)
 
     def _typ_set_w(self, type: str) -> set[Atom]:
         s = self._by_type.get(type)
@@ -396,6 +464,14 @@ class AtomSpace:
                         s.discard(atom)
                         if not s:
                             del self._incoming[x]
+                for key in _relation_keys(atom):
+                    s = self._relations.get(key)
+                    inner = atom[1][1]
+                    if s is not None and inner in s:
+                        s = self._rel_set_w(key)
+                        s.discard(inner)
+                        if not s:
+                            del self._relations[key]
             self._incoming.pop(atom, None)
         self._tv.pop(atom, None)
         self._values.pop(atom, None)

@@ -30,7 +30,14 @@ from typing import TYPE_CHECKING, Any
 from robocog.bdi import plans as P
 from robocog.bdi.actions import ActionFn, ActionHandle, to_python
 from robocog.bdi.beliefs import BeliefBase
-from robocog.bdi.circumstance import Circumstance, Event, IntendedMeans, Intention
+from robocog.bdi.circumstance import (
+    Circumstance,
+    Event,
+    IntendedMeans,
+    Intention,
+    new_event,
+    new_im,
+)
 from robocog.bdi.logic import ActionError, holds, solve
 from robocog.bdi.parser import ParseError, Program, Rule, parse_literal, parse_program, parse_term
 from robocog.bdi.plans import (
@@ -58,6 +65,8 @@ from robocog.bdi.plans import (
 from robocog.bdi.terms import (
     SOURCE_PERCEPT,
     SOURCE_SELF,
+    Arith,
+    Cons,
     Literal,
     Term,
     Var,
@@ -97,6 +106,16 @@ def _with_source(lit: Literal, src: Literal = SOURCE_SELF) -> Literal:
 @functools.lru_cache(maxsize=4096)
 def _parse_cached(text: str) -> Literal:
     return parse_literal(text)
+
+
+@functools.lru_cache(maxsize=4096)
+def _bare_cached(text: str) -> Literal:
+    return parse_literal(text).without_annots()
+
+
+def _bare(x: str | Literal) -> Literal:
+    """A percept as a literal without annotations."""
+    return _bare_cached(x) if x.__class__ is str else _as_literal(x).without_annots()
 
 
 def _as_literal(x: str | Literal) -> Literal:
@@ -233,8 +252,8 @@ class Agent:
 
     def set_percepts(self, percepts: Iterable[str | Literal]) -> None:
         """Replace all percepts at once (what the sensors report now)."""
-        new = {_as_literal(p).without_annots(): None for p in percepts}
-        if list(new) != list(self._percepts):
+        new = dict.fromkeys(map(_bare, percepts))
+        if (new or self._percepts) and list(new) != list(self._percepts):
             self._percepts = new
             self._percepts_dirty = True
 
@@ -352,10 +371,41 @@ class Agent:
         events = C.events
         running = C.running
         step = self.step
-        while max_cycles is None or n < max_cycles:
-            if events or running or C.atomic_intention is not None:
-                step()
+        # the cycle of step(), inlined for the common case (nothing to sense, no atomic
+        # plan, default selection functions); anything else goes through step()
+        inline = (
+            type(self).step is Agent.step and not self._custom_event and not self._custom_intention
+        )
+        deliberate = self._deliberate
+        execute = self._execute
+        feedback = self._feedback
+        waiting = self._waiting_actions
+        mailbox = self.mailbox
+        limit = sys.maxsize if max_cycles is None else max_cycles
+        popleft = events.popleft
+        next_intention = running.popleft
+        while n < limit:
+            if events or running or feedback or C.atomic_intention is not None:
                 n += 1
+                if (
+                    inline
+                    and not self._percepts_dirty
+                    and not mailbox
+                    and not self._timers
+                    and not self._formula_waiters
+                    and not self._has_atomic
+                ):
+                    current_agent[0] = self
+                    self.cycle += 1
+                    while events:
+                        if deliberate(popleft()):
+                            break
+                    if feedback or waiting:
+                        self._process_feedback()
+                    if running:
+                        execute(next_intention())
+                else:
+                    step()
                 continue
             if self.is_idle():
                 if advance_clock and self._timers:
@@ -413,13 +463,16 @@ class Agent:
         self._percepts_dirty = False
         new = self._percepts
         old = self._perceived
+        # percepts are kept without annotations: source(percept) is their only one
         for lit in [p for p in old if p not in new]:
-            gone = self.bb.remove(lit.add_annots((SOURCE_PERCEPT,)))
+            gone = self.bb.remove(
+                Literal.make(lit.functor, lit.args, (SOURCE_PERCEPT,), lit.neg, lit.ground)
+            )
             if gone is not None:
                 self.post(Event(P.Trigger("-", BELIEF, gone), None))
         for lit in new:
             if lit not in old:
-                b = lit.add_annots((SOURCE_PERCEPT,))
+                b = Literal.make(lit.functor, lit.args, (SOURCE_PERCEPT,), lit.neg, lit.ground)
                 if self.bb.add(b) is not None:
                     self.post(Event(P.Trigger("+", BELIEF, b), None))
         self._perceived = dict(new)
@@ -530,13 +583,13 @@ class Agent:
             s: dict = {}
             trail: list = []
             if unify(plan.trigger.literal, ev.trigger.literal, s, trail):
-                if plan.cond is None or self._context(plan, s, trail):
+                if plan.test is None or self._context(plan, s, trail):
                     out.append((plan, s))
         return out
 
     def _context(self, plan: P.Plan, s: dict, trail: list) -> bool:
         try:
-            return holds(self, plan.cond, s, trail)
+            return plan.test(self, s, trail)
         except Exception as exc:  # noqa: BLE001 - a bad context is just false
             self.warn(f"error in the context of {plan.trigger!r}: {exc}")
             return False
@@ -561,44 +614,48 @@ class Agent:
                 return True
             self._no_plan(ev, "relevant")
             return True
-        option = None
         if self._custom_option:
             option = self.select_option(self.applicable_options(ev))
+            if option is None:
+                return self._no_option(ev)
+            plan, s = option
         else:
             lit = trig.literal
             simple = lit.__class__ is Literal and not lit.neg
-            trail: list = []
+            trail: list = []  # emptied after each plan that is not applicable
             for plan in cands:
-                params = plan.params
-                if params is not None and simple:
-                    # the candidates have the event's arity: zip pairs them all
-                    if len(params) == 1:
-                        s: dict = {params[0]: lit.args[0]}
+                bind = plan.bind
+                if bind == -2 and lit.__class__ is Literal and lit.ground:
+                    # a ground trigger without annotations against a ground event of
+                    # the same predicate: unification is equality of the arguments
+                    if plan.trigger.literal.args != lit.args:
+                        continue
+                    s = {}
+                elif bind >= 0 and simple:
+                    # the candidates have the event's arity: the parameters take its args
+                    if bind == 1:
+                        s: dict = {plan.params[0]: lit.args[0]}
+                    elif bind == 0:
+                        s = {}
                     else:
-                        s = dict(zip(params, lit.args)) if params else {}  # noqa: B905
+                        s = dict(zip(plan.params, lit.args))  # noqa: B905
                 else:
                     s = {}
                     if not unify(plan.trigger.literal, lit, s, trail):
                         trail.clear()
                         continue
-                ctx = plan.cond
-                if ctx is None:
-                    option = (plan, s)
+                test = plan.test
+                if test is None:
                     break
                 try:
-                    if holds(self, ctx, s, trail):
-                        option = (plan, s)
+                    if test(self, s, trail):
                         break
                 except Exception as exc:  # noqa: BLE001 - a bad context is just false
                     self.warn(f"error in the context of {plan.trigger!r}: {exc}")
                 trail.clear()
-        if option is None:
-            if ev.intention is None and trig.kind == BELIEF:
-                return False
-            self._no_plan(ev, "applicable")
-            return True
-        plan, s = option
-        im = IntendedMeans(plan, trig, s, plan.body)
+            else:
+                return self._no_option(ev)
+        im = new_im(plan, trig, s, plan.body)
         i = ev.intention
         if i is None:
             i = Intention()
@@ -608,10 +665,10 @@ class Agent:
         if i.dropped:
             return True
         stack = i.stack
-        if stack and self.tail_recursion:
-            top = stack[-1]
-            cur = top.cur
-            if cur is not None and cur[1] is None and trig.op == "+" and trig.kind != BELIEF:
+        top = stack[-1] if stack else None
+        cur = top.cur if top is not None else None
+        if cur is not None and cur[1] is None and self.tail_recursion:
+            if trig.op == "+" and trig.kind != BELIEF:
                 t1 = top.trigger
                 l1 = t1.literal
                 l2 = trig.literal
@@ -631,6 +688,14 @@ class Agent:
             self._requeue(i)
         else:
             self.C.running.append(i)
+        return True
+
+    def _no_option(self, ev: Event) -> bool:
+        """No applicable plan for ``ev``: False when it is discarded without using the
+        cycle (an external belief change), else the failure of its goal."""
+        if ev.intention is None and ev.trigger.kind == BELIEF:
+            return False
+        self._no_plan(ev, "applicable")
         return True
 
     def _tro_ret(self, top: IntendedMeans) -> Any:
@@ -781,7 +846,20 @@ class Agent:
         if self.C.pending.pop(i.id, None) is None or i.dropped:
             return
         if ok:
-            self._advance(i)
+            # the action succeeded: on to the next formula (``_advance``)
+            stack = i.stack
+            im = stack[-1]
+            cur = im.cur
+            if cur is not None:
+                cur = im.cur = cur[1]
+            if cur is None:
+                self._clear(i)
+                if not stack:
+                    return
+            if self._has_atomic:
+                self._requeue(i)
+            else:
+                self.C.running.append(i)
         else:
             self.fail_intention(i, "action_failed", reason)
 
@@ -795,7 +873,7 @@ class Agent:
         fn, raw = entry
         if raw:
             return fn(*action.args)
-        return fn(*[to_python(a) for a in action.args])
+        return fn(*map(to_python, action.args))
 
     def _act(self, i: Intention, lit: Literal) -> None:
         try:
@@ -805,7 +883,9 @@ class Agent:
             self._feedback.append((i, False, str(exc), lit))
             return
         self.C.pending[i.id] = (i, "action")
-        if isinstance(result, ActionHandle):
+        if result is True or result is None:
+            self._feedback.append((i, True, "", lit))
+        elif isinstance(result, ActionHandle):
             result.action = lit
             self._waiting_actions.append((result, i))
         else:
@@ -888,16 +968,77 @@ class Agent:
 
     def _execute(self, i: Intention) -> None:
         """Execute one formula of the top intended means of ``i`` (Jason's ExecInt)."""
-        im = i.stack[-1]
+        stack = i.stack
+        im = stack[-1]
         cur = im.cur
         if cur is None:
-            self._advance(i)
+            # an empty body (``<- true``): the plan is finished at once
+            self._clear(i)
+            if stack:
+                if self._has_atomic:
+                    self._requeue(i)
+                else:
+                    self.C.running.append(i)
             return
         step = cur[0]
         k = step.kind
         s = im.s
         try:
-            if k == INTERNAL:
+            if k == ACHIEVE_STEP:
+                trig = step.cache
+                if trig is None:
+                    goal = step.state
+                    if goal is None:
+                        goal = step.term
+                        if goal.__class__ is Literal:
+                            goal = step.state = _with_source(goal)
+                    if goal.__class__ is Literal and goal.ground:
+                        # a goal without variables: the same trigger every time
+                        trig = step.cache = P.Trigger("+", ACHIEVE, goal)
+                    else:
+                        memo = _memo(step, goal, s)
+                        if memo is not None:
+                            trig = memo
+                        else:
+                            lit = resolve(goal, s, {})
+                            if lit.__class__ is not Literal:
+                                raise ActionError(
+                                    f"{term_str(lit)} is not a goal", "body_var_without_value"
+                                )
+                            if lit is not goal and goal.__class__ is not Literal:
+                                lit = _with_source(lit)
+                            trig = self._trigger(step, "+", ACHIEVE, lit)
+                            _remember(step, goal, s, trig)
+                if self._event_waiters or self._has_atomic:
+                    self.post(Event(trig, i))
+                else:
+                    self.C.events.append(new_event(trig, i))
+            elif k == ACTION:
+                lit = _memo(step, step.term, s)
+                if lit is None:
+                    lit = resolve(step.term, s)
+                    _remember(step, step.term, s, lit)
+                if lit.__class__ is Var:
+                    raise ActionError(f"variable {lit.name} has no value", "body_var_without_value")
+                if lit.__class__ is not Literal:
+                    raise ActionError(f"{term_str(lit)} is not an action")
+                if lit.functor[0] == ".":
+                    fn = self._internal.get(lit.functor)
+                    if fn is None:
+                        raise ActionError(f"unknown internal action {lit.functor}")
+                    r = fn(self, lit.args, s, [], (i, im, step))
+                    if r is False:
+                        self.fail_intention(i, "ia_failed", "")
+                    elif r is not SUSPEND and r is not DONE:
+                        if r is True or r is None or any(True for _ in r):
+                            self._advance(i)
+                        else:
+                            self.fail_intention(i, "ia_failed", "")
+                else:
+                    self._act(i, lit)
+            elif k == DEL_ADD_BEL:
+                self._del_add_step(i, step, s)
+            elif k == INTERNAL:
                 lit = step.term
                 fn = self._internal.get(lit.functor)
                 if fn is None:
@@ -918,34 +1059,8 @@ class Agent:
                         self._advance(i)
                     else:
                         self.fail_intention(i, "ia_failed", "")
-            elif k == ACHIEVE_STEP:
-                trig = step.cache
-                if trig is None:
-                    goal = step.state
-                    if goal is None:
-                        goal = step.term
-                        if goal.__class__ is Literal:
-                            goal = step.state = _with_source(goal)
-                    if goal.__class__ is Literal and goal.ground:
-                        # a goal without variables: the same trigger every time
-                        trig = step.cache = P.Trigger("+", ACHIEVE, goal)
-                    else:
-                        lit = resolve(goal, s, {})
-                        if lit.__class__ is not Literal:
-                            raise ActionError(
-                                f"{term_str(lit)} is not a goal", "body_var_without_value"
-                            )
-                        if lit is not goal and goal.__class__ is not Literal:
-                            lit = _with_source(lit)
-                        trig = self._trigger(step, "+", ACHIEVE, lit)
-                if self._event_waiters or self._has_atomic:
-                    self.post(Event(trig, i))
-                else:
-                    self.C.events.append(Event(trig, i))
             elif k == ADD_BEL or k == ADD_BEL_NF or k == ADD_BEL_END:
                 self._add_belief_step(i, step, s)
-            elif k == DEL_ADD_BEL:
-                self._del_add_step(i, step, s)
             elif k == DEL_BEL or k == DEL_BEL_NF:
                 self._del_belief_step(i, step, s)
             elif k == CONSTRAINT:
@@ -955,26 +1070,6 @@ class Agent:
                     self.fail_intention(
                         i, "constraint_failed", f"Constraint {step!r} was not satisfied"
                     )
-            elif k == ACTION:
-                lit = resolve(step.term, s)
-                if lit.__class__ is Var:
-                    raise ActionError(f"variable {lit.name} has no value", "body_var_without_value")
-                if lit.__class__ is not Literal:
-                    raise ActionError(f"{term_str(lit)} is not an action")
-                if lit.functor.startswith("."):
-                    fn = self._internal.get(lit.functor)
-                    if fn is None:
-                        raise ActionError(f"unknown internal action {lit.functor}")
-                    r = fn(self, lit.args, s, [], (i, im, step))
-                    if r is False:
-                        self.fail_intention(i, "ia_failed", "")
-                    elif r is not SUSPEND and r is not DONE:
-                        if r is True or r is None or any(True for _ in r):
-                            self._advance(i)
-                        else:
-                            self.fail_intention(i, "ia_failed", "")
-                else:
-                    self._act(i, lit)
             elif k == TEST_STEP:
                 self._test_step(i, step, s)
             elif k == ACHIEVE_NF:
@@ -1051,35 +1146,58 @@ class Agent:
         return None
 
     def _del_add_step(self, i: Intention, step: P.Step, s: dict) -> None:
-        lit = resolve(_sourced(step), s, {})
+        term = _sourced(step)
+        lit = resolve(term, s, {})
         if lit.__class__ is not Literal:
             raise ActionError(f"{term_str(lit)} is not a belief", "body_var_without_value")
-        lit = _with_source(lit)
+        if term is step.term:  # else the source is already there
+            lit = _with_source(lit)
         gone = self.bb.remove_first((lit.functor, len(lit.args), lit.neg), lit.annots)
         if gone is not None:
-            self.post(Event(self._trigger(step, "-", BELIEF, gone), None))
+            cands = self._step_cands(step, "-", BELIEF, gone)
+            if cands is None or cands[2] or self._event_waiters or self._custom_event:
+                trig = P.Trigger("-", BELIEF, gone)
+                trig.cands = cands
+                self.post(Event(trig, None))
+            # else: an external -b event that no plan handles, which post() would drop
         added = self.bb.add(lit)
         if added is None:
             self._advance(i)
             return
-        self.post(Event(self._trigger(step, "+", BELIEF, lit), i))
+        ev = new_event(self._trigger(step, "+", BELIEF, lit), i)
+        if self._has_atomic or self._event_waiters:
+            self.post(ev)
+        else:
+            self.C.events.append(ev)  # what post() does for it
 
     def _trigger(self, step: P.Step, op: str, kind: str, lit: Literal) -> P.Trigger:
         """The trigger of an event posted by ``step``, with its candidate plans (which
         depend only on the step's functor and arity, so they are looked up once)."""
         trig = P.Trigger(op, kind, lit)
-        if step.term.__class__ is Literal:
-            pl = self.pl
-            rel = step.rel
-            if rel is None or rel[0] is not pl or rel[1] != pl.version:
-                rel = step.rel = (pl, pl.version, {})
+        pl = self.pl
+        rel = step.rel
+        if rel is not None and rel[0] is pl and rel[1] == pl.version:
             got = rel[2].get(op)
-            if got is None:
-                pl.candidates(trig)
-                rel[2][op] = trig.cands
-            else:
+            if got is not None:
                 trig.cands = got
+                return trig
+        elif step.term.__class__ is Literal:
+            rel = step.rel = (pl, pl.version, {})
+        else:
+            return trig
+        pl.candidates(trig)
+        rel[2][op] = trig.cands
         return trig
+
+    def _step_cands(self, step: P.Step, op: str, kind: str, lit: Literal) -> tuple | None:
+        """What :meth:`_trigger` would put in the trigger's ``cands``."""
+        pl = self.pl
+        rel = step.rel
+        if rel is not None and rel[0] is pl and rel[1] == pl.version:
+            got = rel[2].get(op)
+            if got is not None:
+                return got
+        return self._trigger(step, op, kind, lit).cands
 
     def _test_step(self, i: Intention, step: P.Step, s: dict) -> None:
         f = step.term
@@ -1234,6 +1352,52 @@ def _sourced(step: P.Step) -> Term:
                 got = _with_source(term)
         step.cache = got
     return got
+
+
+def _memo(step: P.Step, term: Term, s: dict) -> Any:
+    """What was built from ``term`` the last time its only variable had the value it
+    has now (the very same object), or None."""
+    memo = step.memo
+    if not memo:
+        return None
+    x = s.get(memo[0])
+    while x.__class__ is Var:
+        x = s.get(x)
+    if x is memo[1] and x is not None:
+        return memo[2]
+    return None
+
+
+def _remember(step: P.Step, term: Term, s: dict, built: Any) -> None:
+    """Keep ``built`` for :func:`_memo` when ``term`` (a literal without arithmetic) has
+    a single variable whose value is ground: the same value builds the same thing."""
+    memo = step.memo
+    if memo is False:
+        return
+    if memo is None:
+        vs = variables(term) if term.__class__ is Literal and not _has_arith(term) else ()
+        if len(vs) != 1:
+            step.memo = False
+            return
+        var = vs[0]
+    else:
+        var = memo[0]
+    x = s.get(var)
+    while x.__class__ is Var:
+        x = s.get(x)
+    if x is not None and is_ground(x):
+        step.memo = (var, x, built)
+
+
+def _has_arith(t: Term) -> bool:
+    c = t.__class__
+    if c is Arith:
+        return True
+    if c is Literal:
+        return any(_has_arith(a) for a in t.args) or any(_has_arith(a) for a in t.annots)
+    if c is Cons:
+        return _has_arith(t.head) or _has_arith(t.tail)
+    return False
 
 
 def _is_atomic(i: Intention) -> bool:

@@ -16,7 +16,7 @@ from typing import Any
 from robocog.bdi.logic import solve
 from robocog.bdi.parser import Rule
 from robocog.bdi.terms import Literal, Term, Var, is_ground, sort_annots
-from robocog.bdi.unifier import rename, undo, unify
+from robocog.bdi.unifier import annots_subset, rename, undo, unify
 
 _ids = itertools.count()
 
@@ -270,11 +270,14 @@ class BeliefBase:
                     yield from solve(agent, body, s, trail)
                 undo(s, trail, mark)
 
-    def first(self, pattern: Literal, s: dict, trail: list) -> bool | None:
+    def first(
+        self, pattern: Literal, s: dict, trail: list, key: tuple | None = None
+    ) -> bool | None:
         """The first fact unifying with ``pattern`` (bindings kept in ``s``): True or
         False, or ``None`` when the predicate has rules or non-ground facts (use
-        :meth:`query` then)."""
-        key = (pattern.functor, len(pattern.args), pattern.neg)
+        :meth:`query` then). ``key`` is the pattern's predicate, when known."""
+        if key is None:
+            key = (pattern.functor, len(pattern.args), pattern.neg)
         bucket = self._index.get(key)
         if not bucket:
             return False
@@ -300,17 +303,30 @@ class BeliefBase:
                     return False
                 vals = sub.values()
         mark = len(trail)
+        annots = pattern.annots
         for b in reversed(vals):
-            if unify(pattern, b, s, trail):
-                return True
+            # unify(pattern, b) for a ground fact of the same predicate, with the
+            # common case (an unbound variable against an argument) done in place
+            for x, y in zip(pattern.args, b.args):  # noqa: B905 - same arity
+                if x.__class__ is Var and x not in s:
+                    s[x] = y
+                    trail.append(x)
+                elif not unify(x, y, s, trail):
+                    break
+            else:
+                if not annots or annots_subset(annots, b.annots, s, trail):
+                    return True
             undo(s, trail, mark)
         return False
 
-    def first_det(self, pattern: Literal, s: dict, trail: list) -> bool | None:
+    def first_det(
+        self, pattern: Literal, s: dict, trail: list, key: tuple | None = None
+    ) -> bool | None:
         """Like :meth:`first`, but only decides when the answer is unique: True (the one
         fact that can match did, bindings kept in ``s``), False (nothing matches) or
         ``None`` (rules, non-ground facts or several candidates: use :meth:`query`)."""
-        key = (pattern.functor, len(pattern.args), pattern.neg)
+        if key is None:
+            key = (pattern.functor, len(pattern.args), pattern.neg)
         bucket = self._index.get(key)
         if not bucket:
             return False

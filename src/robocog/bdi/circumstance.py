@@ -48,6 +48,28 @@ class IntendedMeans:
         return f"<im {self.trigger!r}>"
 
 
+_new = object.__new__
+
+
+def new_event(trigger: Trigger, intention: Intention | None) -> Event:
+    """``Event(trigger, intention)`` without the call to ``__init__`` (hot path)."""
+    ev = _new(Event)
+    ev.trigger = trigger
+    ev.intention = intention
+    return ev
+
+
+def new_im(plan: Plan, trigger: Trigger, s: dict, cur: Chain) -> IntendedMeans:
+    """``IntendedMeans(plan, trigger, s, cur)`` without the call to ``__init__``."""
+    im = _new(IntendedMeans)
+    im.plan = plan
+    im.trigger = trigger
+    im.s = s
+    im.cur = cur
+    im.ret = None
+    return im
+
+
 class Intention:
     """A stack of intended means; the top is the one that runs."""
 

@@ -8,7 +8,8 @@ left to right), so an agent is deterministic.
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+import operator
+from collections.abc import Callable, Iterator
 from typing import TYPE_CHECKING
 
 from robocog.bdi.terms import And, Body, Literal, Not, Or, Rel, Term, Var, compare, term_str
@@ -75,6 +76,15 @@ def solve(agent: Agent, f: Term, s: dict, trail: list) -> Iterator[None]:
 
 _TRUTH = ("true", "false")
 
+#: the comparisons ``relation`` decides at once when both sides are numbers
+_NUM_OPS = {
+    ">": operator.gt,
+    "<": operator.lt,
+    ">=": operator.ge,
+    "<=": operator.le,
+    "==": operator.eq,
+}
+
 
 def holds(agent: Agent, f: Term, s: dict, trail: list) -> bool:
     """First solution of ``f``: its bindings stay in ``s``; False leaves ``s`` unchanged."""
@@ -135,6 +145,146 @@ def right_assoc(f: Term) -> Term:
         right = right_assoc(f.right)
         return f if right is f.right else And(left, right)
     return f
+
+
+def compile_cond(f: Term) -> Callable[[Agent, dict, list], bool]:
+    """A function ``test(agent, s, trail)`` that does what ``holds(agent, f, s, trail)``
+    does, with the dispatch on the shape of ``f`` done once (plan contexts are tested
+    at every event for their trigger)."""
+    c = f.__class__
+    if c is Rel:
+        num = _NUM_OPS.get(f.op)
+        if num is not None:
+            left, right = f.left, f.right
+
+            def test_num(agent: Agent, s: dict, trail: list) -> bool:
+                a = left
+                while a.__class__ is Var:
+                    v = s.get(a)
+                    if v is None:
+                        break
+                    a = v
+                b = right
+                while b.__class__ is Var:
+                    v = s.get(b)
+                    if v is None:
+                        break
+                    b = v
+                ca = a.__class__
+                cb = b.__class__
+                if (ca is int or ca is float) and (cb is int or cb is float):
+                    return num(a, b)
+                mark = len(trail)
+                if relation(f, s, trail):
+                    return True
+                undo(s, trail, mark)
+                return False
+
+            return test_num
+
+        def test_rel(agent: Agent, s: dict, trail: list) -> bool:
+            mark = len(trail)
+            if relation(f, s, trail):
+                return True
+            undo(s, trail, mark)
+            return False
+
+        return test_rel
+    if c is Not:
+        inner = compile_cond(f.arg)
+
+        def test_not(agent: Agent, s: dict, trail: list) -> bool:
+            mark = len(trail)
+            if inner(agent, s, trail):
+                undo(s, trail, mark)
+                return False
+            return True
+
+        return test_not
+    if _is_fact_query(f):
+        key = (f.functor, len(f.args), f.neg)
+
+        def test_lit(agent: Agent, s: dict, trail: list) -> bool:
+            got = agent.bb.first(f, s, trail, key)
+            if got is not None:
+                return got
+            for _ in solve(agent, f, s, trail):
+                return True
+            return False
+
+        return test_lit
+    if c is And:
+        left = f.left
+        right = compile_cond(f.right)
+        num = _NUM_OPS.get(left.op) if left.__class__ is Rel else None
+        if num is not None:
+            # ``N > 0 & ...``: the comparison of numbers done in place
+            a0, b0 = left.left, left.right
+
+            def test_and_num(agent: Agent, s: dict, trail: list) -> bool:
+                a = a0
+                while a.__class__ is Var:
+                    v = s.get(a)
+                    if v is None:
+                        break
+                    a = v
+                b = b0
+                while b.__class__ is Var:
+                    v = s.get(b)
+                    if v is None:
+                        break
+                    b = v
+                ca = a.__class__
+                cb = b.__class__
+                if (ca is int or ca is float) and (cb is int or cb is float):
+                    return num(a, b) and right(agent, s, trail)
+                mark = len(trail)
+                if relation(left, s, trail) and right(agent, s, trail):
+                    return True
+                undo(s, trail, mark)
+                return False
+
+            return test_and_num
+        if left.__class__ is Rel or left.__class__ is Not:
+            first = compile_cond(left)
+
+            def test_and(agent: Agent, s: dict, trail: list) -> bool:
+                mark = len(trail)
+                if first(agent, s, trail) and right(agent, s, trail):
+                    return True
+                undo(s, trail, mark)
+                return False
+
+            return test_and
+        if _is_fact_query(left):
+            key = (left.functor, len(left.args), left.neg)
+
+            def test_and_lit(agent: Agent, s: dict, trail: list) -> bool:
+                mark = len(trail)
+                got = agent.bb.first_det(left, s, trail, key)
+                if got is False:
+                    return False
+                if got is True:
+                    if right(agent, s, trail):
+                        return True
+                    undo(s, trail, mark)
+                    return False
+                for _ in solve(agent, f, s, trail):
+                    return True
+                return False
+
+            return test_and_lit
+
+    def test(agent: Agent, s: dict, trail: list) -> bool:
+        return holds(agent, f, s, trail)
+
+    return test
+
+
+def _is_fact_query(f: Term) -> bool:
+    return (
+        f.__class__ is Literal and f.functor[0] != "." and bool(f.args or f.functor not in _TRUTH)
+    )
 
 
 def relation(f: Rel, s: dict, trail: list) -> bool:

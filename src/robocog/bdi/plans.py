@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 
-from robocog.bdi.logic import right_assoc
+from robocog.bdi.logic import compile_cond, right_assoc
 from robocog.bdi.terms import Literal, Term, Var, term_str
 
 # trigger kinds
@@ -92,7 +92,7 @@ class Step:
     written, for failure annotations.
     """
 
-    __slots__ = ("kind", "term", "blocks", "line", "state", "cache", "rel")
+    __slots__ = ("kind", "term", "blocks", "line", "state", "cache", "rel", "memo")
 
     def __init__(
         self, kind: int, term: Term, blocks: tuple = (), line: int = 0, state: object = None
@@ -107,6 +107,9 @@ class Step:
         self.cache: object = None
         #: (plan library, version, {op: candidate plans}) for the events the step posts
         self.rel: tuple | None = None
+        #: for a term with one variable: (variable, its last value, what was built
+        #: from it), reused while the variable has that same (ground) value
+        self.memo: tuple | None = None
 
     def __repr__(self) -> str:
         if self.kind in _PREFIX:
@@ -162,6 +165,8 @@ class Plan:
         "trigger",
         "context",
         "cond",
+        "test",
+        "bind",
         "body",
         "source",
         "line",
@@ -183,6 +188,8 @@ class Plan:
         self.context = context
         #: the context as it is evaluated (conjunctions grouped to the right)
         self.cond = right_assoc(context) if context is not None else None
+        #: ``test(agent, s, trail)``: whether the context holds (as ``holds``)
+        self.test = compile_cond(self.cond) if context is not None else None
         self.body = body
         self.source = source
         self.line = line
@@ -190,6 +197,11 @@ class Plan:
         #: the trigger's arguments when they are distinct variables and there are no
         #: annotations: relevance is then a matter of binding them
         self.params = _simple_params(trigger)
+        #: how the trigger binds: -1 by unification, else the number of parameters
+        self.bind = -1 if self.params is None else min(len(self.params), 2)
+        lit = trigger.literal if trigger is not None else None
+        if self.bind == -1 and lit.__class__ is Literal and lit.ground and not lit.annots:
+            self.bind = -2  # e.g. +!count(0): relevant to a ground event with these args
 
     def __repr__(self) -> str:
         lab = f"@{term_str(self.label)} " if self.label is not None else ""

@@ -458,18 +458,21 @@ def java_double_str(x: float) -> str:
         if s.endswith("."):
             s += "0"
         return s
-    mantissa, _, exp = f"{x:e}".partition("e")
-    digits = repr(x)
-    # shortest round-trip digits, re-expressed as d.dddE<exp>
+    # shortest round-trip digits of x, re-expressed as d.dddE<exp>
+    sign = "-" if x < 0 else ""
+    digits = repr(ax)
     if "e" in digits:
         mant, _, e2 = digits.partition("e")
-        exp_i = int(e2)
+        if "." not in mant:
+            mant += ".0"
+        return f"{sign}{mant}E{int(e2)}"
+    whole, _, frac = digits.partition(".")
+    if whole != "0":
+        exp_i = len(whole) - 1
     else:
-        exp_i = int(exp)
-        mant = repr(x / (10**exp_i))
-    if "." not in mant:
-        mant += ".0"
-    return f"{mant}E{exp_i}"
+        exp_i = -(len(frac) - len(frac.lstrip("0")) + 1)
+    sig = (whole + frac).lstrip("0").rstrip("0") or "0"
+    return f"{sign}{sig[0]}.{sig[1:] or '0'}E{exp_i}"
 
 
 _PLAIN_ATOM = set("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.")

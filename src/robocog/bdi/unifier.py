@@ -32,6 +32,8 @@ from robocog.bdi.terms import (
     sort_annots,
 )
 
+_new = object.__new__
+
 
 class EvalError(Exception):
     """An arithmetic expression could not be evaluated (unbound variable, bad type)."""
@@ -99,7 +101,7 @@ def unify(a: Term, b: Term, s: dict, trail: list) -> bool:
                     if not unify(x, y, s, trail):
                         return False
             if a.annots:
-                return _annots_subset(a.annots, b.annots, s, trail)
+                return annots_subset(a.annots, b.annots, s, trail)
             return True
         if ca is Cons:
             if cb is not Cons:
@@ -130,7 +132,8 @@ def unify(a: Term, b: Term, s: dict, trail: list) -> bool:
         return a == b
 
 
-def _annots_subset(aa: tuple, ba: tuple, s: dict, trail: list) -> bool:
+def annots_subset(aa: tuple, ba: tuple, s: dict, trail: list) -> bool:
+    """Jason's rule for annotations: each of ``aa`` unifies with one of ``ba``."""
     for x in aa:
         for y in ba:
             mark = len(trail)
@@ -197,6 +200,24 @@ def resolve(t: Term, s: dict, fresh: dict | None = None) -> Term:
                 pass
             elif a.ground:
                 pass
+            elif ac is Arith:
+                # the common ``X + 1`` / ``X - 1`` on integers, else evaluate()
+                x = a.left
+                if x.__class__ is Var:
+                    x = s.get(x)
+                y = a.right
+                if (
+                    x.__class__ is int
+                    and y.__class__ is int
+                    and (a.op == "+" or a.op == "-")
+                    and -(2**62) < x < 2**62
+                    and -(2**62) < y < 2**62
+                ):
+                    a = x + y if a.op == "+" else x - y
+                else:
+                    a = evaluate(a, s, fresh, False)
+                    if ground and a.__class__ is not int and a.__class__ is not float:
+                        ground = is_ground(a)
             else:
                 a = resolve(a, s, fresh)
                 if ground and not is_ground(a):
@@ -205,11 +226,18 @@ def resolve(t: Term, s: dict, fresh: dict | None = None) -> Term:
         annots = t.annots
         if annots:
             for a in annots:
-                if a.__class__ is Var or not is_ground(a):
+                if a.__class__ is not Literal or not a.ground:
                     break
             else:
                 # ground annotations (typically ``source(self)``) are kept as they are
-                return Literal.make(t.functor, tuple(args), annots, t.neg, ground)
+                out = _new(Literal)
+                out.functor = t.functor
+                out.args = tuple(args)
+                out.annots = annots
+                out.neg = t.neg
+                out.ground = ground
+                out._hash = None
+                return out
             annots = sort_annots([resolve(a, s, fresh) for a in annots])
             if ground:
                 for a in annots:

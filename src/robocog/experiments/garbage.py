@@ -346,7 +346,8 @@ def learn_accumulation(
     from robocog.minds.nars_mind import TRASH_QUESTION
 
     hotspots_idx = sorted(config.hotspots, key=lambda i: -config.hotspots[i])
-    long_config = replace(config, mission_time=config.mission_time * rounds)
+    # One battery per round: a round ends with its route or its battery, never later.
+    long_config = replace(config, mission_time=config.mission_time * (rounds + 1))
     world = GarbageField(long_config, seed=seed)
     hotspots = [world.route[i] for i in hotspots_idx if i < len(world.route)]
     why = spec.probe()
@@ -362,12 +363,13 @@ def learn_accumulation(
             if r:
                 world.new_round()
                 mind.new_round()
-            loop.run(frame_budget(config), until=lambda: world.route_complete or world.out_of_time)
+            ends = world.time() + config.mission_time
+            loop.run(
+                frame_budget(config), until=lambda e=ends: world.route_complete or world.time() > e
+            )
             for t in world.objects(world.rounds):
                 if t.times_seen:
                     seen[t.checkpoint] += 1
-            if world.out_of_time:
-                break
         answer = mind.ask(TRASH_QUESTION)
         ranking = mind.trash_places()
     finally:

@@ -185,7 +185,7 @@ def markdown(result: ExperimentResult, images: dict[str, str]) -> str:
             f"The field's hotspots are {', '.join(acc.hotspots) or 'none'}; {acc.mind}'s "
             "evidence per checkpoint, best first:",
             "",
-            "| place | frequency | confidence | expectation | rounds with trash seen |",
+            "| place | frequency | confidence | expectation | objects seen there |",
             "|---|---|---|---|---|",
         ]
         for place, f, c, e in acc.ranking:

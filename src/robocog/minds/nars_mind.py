@@ -13,7 +13,11 @@ reports the sighting under the answer as well (``<trash --> [see]>``), so the ca
 comes from the reasoner's own knowledge yet enters as an event it can learn from; a
 sighting it would only derive is soon crowded out of its attention. Once a kind has
 been reported, a frame without it says so (``<trash --> [see]>. :|: {0.0 0.9}``), so
-that being at a checkpoint where no trash is seen is evidence too.
+that being at a checkpoint where no trash is seen is evidence too. The place is told
+when the robot arrives (and when localisation reports a change), not again every
+second while it stays, as the paper's patrol reported each checkpoint on arrival: so
+each visit is one piece of evidence for ``<<({SELF} * {p3}) --> at> =/> <trash -->
+[see]>>``, its frequency the share of visits with trash in view.
 
 The operator's knowledge of the checkpoints (Section V.C, step 4) enters as a goal:
 when ``patience`` frames have passed without an operation that succeeded (nothing
@@ -81,6 +85,7 @@ class NarsSettings:
     cycles_per_frame: int = 10  # thinking time per frame, also after an execution
     patience: int = 2  # frames without a successful operation before the route goal
     instances: bool = True
+    place_on_change: bool = True  # tell the place on arrival, not again while staying
     recall: bool = True  # ask what a seen label is; report the sighting under the answer
     max_detections: int = 3
     fov: float = DEFAULT_FOV
@@ -117,6 +122,7 @@ class NarsMind:
         self._kinds: set[str] = set()  # kinds of things reported seen so far
         self._idle = 0
         self._last_place: str | None = None
+        self._reported_place: str | None = None  # the place last told to the reasoner
         self._holding = False
         self.inputs = 0
         self.notes: list[str] = []  # what had to be adapted for this reasoner
@@ -158,11 +164,17 @@ class NarsMind:
 
     def perceive(self, percepts: Sequence[Percept]) -> None:
         """Encode the frame; the place is remembered to know the next checkpoint."""
+        repeated = False
         for p in percepts:
-            if isinstance(p, Pose) and p.place:
-                self._last_place = p.place
+            if isinstance(p, Pose):
+                if p.place:
+                    self._last_place = p.place
+                repeated = p.place == self._reported_place
+                self._reported_place = p.place
             elif isinstance(p, Gripper):
                 self._holding = p.holding is not None
+        if repeated and self.settings.place_on_change:
+            percepts = [p for p in percepts if not isinstance(p, Pose)]
         self._questions = (
             recall_questions(percepts, self.settings.max_detections) if self.settings.recall else []
         )
@@ -222,7 +234,7 @@ class NarsMind:
             if place == "next":
                 place = self.next_place() or place
             if place in self.places:
-                self._last_place = place
+                self._last_place = self._reported_place = place
                 self._input(f"<({{SELF}} * {{{place}}}) --> at>. :|:")
         elif isinstance(command, Drop) and outcome.ok:
             self._holding = False

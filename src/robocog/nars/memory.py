@@ -239,13 +239,9 @@ class Memory:
                         yield c
 
 
-def _index_atoms(term: Term) -> list[Term]:
+def _index_atoms(term: Term) -> tuple[Term, ...]:
     """Distinct non-variable atoms of ``term`` in ONA's array (breadth-first) order."""
-    out: dict[Term, None] = {}
-    for a in term.level_order_atoms():
-        if not a.is_var:
-            out[a] = None
-    return list(out)
+    return term.index_names()
 
 
 def is_eternal(e: Event | None) -> bool:

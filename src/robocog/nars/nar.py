@@ -431,6 +431,9 @@ class NAR(SensorimotorMixin, DecisionMixin):
     # ------------------------------------------------------------------ cycle
     def cycles(self, n: int) -> None:
         """Run ``n`` inference cycles."""
+        # capacities follow the configuration, so ``nar.config.concepts_max = N`` works
+        self.memory.capacity = self.config.concepts_max
+        self.memory.belief_events.capacity = self.config.cycling_belief_events_max
         for _ in range(n):
             self._cycle()
 

@@ -494,6 +494,8 @@ def introduce_implication_variables(t: Term, extensional: bool) -> Term | None:
     cr: dict[Term, int] = {}
     _count_hol(left, cl, extensional)
     _count_hol(right, cr, extensional)
+    if not any(v >= 2 or a in cr for a, v in cl.items()) and not any(v >= 2 for v in cr.values()):
+        return None  # no name to abstract
     dep = _first_free(t, "#")
     ind = _first_free(t, "$")
     mapping: dict[Term, Term] = {}

@@ -46,8 +46,12 @@ def run(args: argparse.Namespace) -> int:
         k, _, v = item.partition("=")
         overrides[k.strip()] = _value(v.strip())
     try:
-        nar = NAR.load(args.load) if args.load else NAR(seed=args.seed)
-        nar.config.update(**overrides)
+        if args.load:
+            nar = NAR.load(args.load)
+            nar.config.update(**overrides)
+            nar.memory.capacity = nar.config.concepts_max
+        else:
+            nar = NAR(seed=args.seed, **overrides)
     except (OSError, ValueError, KeyError) as exc:
         print(f"robocog nar: {exc}", file=sys.stderr)
         return 2

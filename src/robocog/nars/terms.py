@@ -59,6 +59,7 @@ class Term:
         "flags",
         "n_imp",
         "n_temp",
+        "_names",
     )
 
     op: str | None
@@ -121,6 +122,17 @@ class Term:
             else:
                 stack.extend(x.args)
         return out
+
+    def index_names(self) -> tuple[Term, ...]:
+        """Distinct non-variable atoms in ONA's array order (computed once per term)."""
+        if self.op is None:
+            return () if self.is_var else (self,)  # not cached: no self-reference for atoms
+        got = self._names
+        if got is None:
+            got = self._names = tuple(
+                dict.fromkeys(a for a in self.level_order_atoms() if not a.is_var)
+            )
+        return got
 
     def level_order_atoms(self) -> list[Term]:
         """Atom occurrences in ONA's array order (breadth first over the binary tree)."""
@@ -198,6 +210,7 @@ def atom(name: str) -> Term:
     t.flags = 0
     t.n_imp = 0
     t.n_temp = 0
+    t._names = None
     if len(_TABLE) >= _SWEEP_AT[0]:
         _sweep()
     _TABLE[key] = t
@@ -249,6 +262,7 @@ def compound(op: str, args: tuple[Term, ...]) -> Term:
     # an operation term: ``^op`` or ``<(args) --> ^op>``
     t.is_op = op == INHERITANCE and args[1].op is None and args[1].is_op
     t.cache = None  # per-term results of pure checks (conclusion filters)
+    t._names = None
     if len(_TABLE) >= _SWEEP_AT[0]:
         _sweep()
     _TABLE[key] = t
@@ -304,12 +318,20 @@ def substitute(t: Term, mapping: dict[Term, Term]) -> Term:
     r = mapping.get(t)
     if r is not None:
         return r
-    if t.op is None:
+    args = t.args
+    if not args:
         return t
-    new = tuple(substitute(a, mapping) for a in t.args)
-    if all(a is b for a, b in zip(new, t.args, strict=True)):
+    if len(args) == 2:
+        a, b = args
+        na = substitute(a, mapping)
+        nb = substitute(b, mapping)
+        if na is a and nb is b:
+            return t
+        return compound(t.op, (na, nb))  # type: ignore[arg-type]
+    new = tuple([substitute(a, mapping) for a in args])
+    if new == args:
         return t
-    return compound(t.op, new)
+    return compound(t.op, new)  # type: ignore[arg-type]
 
 
 def normalize_variables(t: Term) -> Term:

@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 from itertools import product
 
 from robocog.planning.sexpr import Sexpr, SexprError, SList, Symbol, parse
-from robocog.planning.task import PLACE, TAKE, Fact, Operator, Task
+from robocog.planning.task import PLACE, TAKE, Fact, Operator, Task, fact_text, intern_bit
 
 Literal = tuple[bool, tuple[str, ...]]  # (positive?, (predicate, terms...))
 
@@ -255,11 +255,7 @@ def ground(domain: Domain, problem: Problem, hand: str = "holding") -> Task:
     index: dict[Fact, int] = {}
 
     def bit(fact: Fact) -> int:
-        i = index.get(fact)
-        if i is None:
-            i = index[fact] = len(facts)
-            facts.append(fact)
-        return 1 << i
+        return intern_bit(index, facts, fact)
 
     for fact in problem.init:
         bit(fact)
@@ -315,10 +311,6 @@ def ground(domain: Domain, problem: Problem, hand: str = "holding") -> Task:
     )
 
 
-def _fact_text(fact: Iterable[str]) -> str:
-    return "(" + " ".join(fact) + ")"
-
-
 def write_problem(
     name: str,
     domain: str,
@@ -334,8 +326,8 @@ def write_problem(
     lines.append(f"  (:domain {domain})")
     typed = f" - {object_type}" if object_type else ""
     lines.append(f"  (:objects {' '.join(objects)}{typed})")
-    lines.append("  (:init " + " ".join(_fact_text(f) for f in init) + ")")
-    lines.append("  (:goal (and " + " ".join(_fact_text(f) for f in goal) + ")))")
+    lines.append("  (:init " + " ".join(fact_text(f) for f in init) + ")")
+    lines.append("  (:goal (and " + " ".join(fact_text(f) for f in goal) + ")))")
     return "\n".join(lines) + "\n"
 
 

@@ -294,24 +294,41 @@ def _solve_atomspace(
 
         space.successors = restricted  # type: ignore[method-assign]
     result = bfs(space, mode, max_iterations, prune=prune)
-    plan = result.plan or []
+    steps = [Step(name, args) for name, args in result.plan or []]
+    message = "" if result.plan is not None else "no plan found"
     bound = BlocksView(task)(task.init)
-    optimal = (
-        result.optimal if mode != "quick" else (result.plan is not None and len(plan) == bound)
-    )
+    return _plan_result(result, steps, mode, bound, start, message, {"engine": "atomspace"})
+
+
+def _plan_result(
+    result: SearchResult,
+    steps: list[Step],
+    mode: str,
+    bound: int,
+    start: float,
+    message: str,
+    extra: dict[str, Any] | None = None,
+) -> PlanResult:
+    """Wrap a search outcome for either engine.
+
+    A quick plan is known shortest only when it meets the admissible *bound*; the other
+    modes say themselves whether their plan is shortest.
+    """
+    found = result.plan is not None
+    optimal = (found and len(steps) == bound) if mode == "quick" else result.optimal
     return PlanResult(
-        steps=[Step(name, args) for name, args in plan],
+        steps=steps,
         iterations=result.iterations,
         seconds=time.perf_counter() - start,
         optimal=optimal,
-        found=result.plan is not None,
+        found=found,
         mode=mode,
         complete=result.complete,
         generated=result.generated,
         solutions=result.solutions,
         lower_bound=bound,
-        message="" if result.plan is not None else "no plan found",
-        extra={"engine": "atomspace"},
+        message=message,
+        extra=extra if extra is not None else {},
     )
 
 
@@ -361,9 +378,6 @@ def solve_task(
         except ValueError as exc:
             raise PlanningError(str(exc)) from None
     plan: list[Operator] = result.plan or []
-    optimal = result.optimal
-    if mode == "quick" and result.plan is not None:
-        optimal = len(plan) == bound
     message = ""
     if result.plan is None:
         if not result.complete:
@@ -372,16 +386,5 @@ def solve_task(
             message = "the quick search found no plan; try the mode 'first' or 'astar'"
         else:
             message = "no plan exists: the request cannot be reached from this scene"
-    return PlanResult(
-        steps=[Step(op.name, op.args, style) for op in plan],
-        iterations=result.iterations,
-        seconds=time.perf_counter() - start,
-        optimal=optimal,
-        found=result.plan is not None,
-        mode=mode,
-        complete=result.complete,
-        generated=result.generated,
-        solutions=result.solutions,
-        lower_bound=bound,
-        message=message,
-    )
+    steps = [Step(op.name, op.args, style) for op in plan]
+    return _plan_result(result, steps, mode, bound, start, message)

@@ -26,7 +26,7 @@ from importlib import resources
 from itertools import product
 
 from robocog.planning.sexpr import SexprError, SList, String, parse
-from robocog.planning.task import PLACE, TAKE, Fact, Operator
+from robocog.planning.task import PLACE, TAKE, Fact, Operator, intern_bit
 
 
 @dataclass(frozen=True)
@@ -340,11 +340,7 @@ def ground_rules(
     ops: list[Operator] = []
 
     def bit(fact: Fact) -> int:
-        i = intern.get(fact)
-        if i is None:
-            i = intern[fact] = len(facts)
-            facts.append(fact)
-        return 1 << i
+        return intern_bit(intern, facts, fact)
 
     for rule in rules:
         static_pats = tuple(p for p in rule.present if p[0] not in dyn)

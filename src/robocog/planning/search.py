@@ -80,6 +80,28 @@ def _path(parents: dict[Hashable, tuple[Hashable, Any] | None], state: Hashable)
     return steps
 
 
+def _bfs_result(
+    found: list[list[Any]],
+    mode: str,
+    iterations: int,
+    generated: int,
+    start: float,
+    complete: bool,
+) -> SearchResult:
+    """The result of either BFS walk: the first plan found, and every solution's length."""
+    plan = found[0] if found else None
+    return SearchResult(
+        plan=plan,
+        iterations=iterations,
+        generated=generated,
+        seconds=time.perf_counter() - start,
+        optimal=plan is not None and mode != "quick",
+        complete=complete,
+        solutions=len(found),
+        lengths=[len(p) for p in found],
+    )
+
+
 def bfs(
     space: Space,
     mode: str = "first",
@@ -138,17 +160,7 @@ def bfs(
         if len(parents) > max_nodes:
             complete = False
             break
-    plan = found[0] if found else None
-    return SearchResult(
-        plan=plan,
-        iterations=iterations,
-        generated=generated,
-        seconds=time.perf_counter() - start,
-        optimal=plan is not None and mode != "quick",
-        complete=complete,
-        solutions=len(found),
-        lengths=[len(p) for p in found],
-    )
+    return _bfs_result(found, mode, iterations, generated, start, complete)
 
 
 def _bfs_branch(
@@ -194,17 +206,7 @@ def _bfs_branch(
         if len(queue) > max_nodes:
             complete = False
             break
-    plan = found[0] if found else None
-    return SearchResult(
-        plan=plan,
-        iterations=iterations,
-        generated=generated,
-        seconds=time.perf_counter() - start,
-        optimal=plan is not None and mode != "quick",
-        complete=complete,
-        solutions=len(found),
-        lengths=[len(p) for p in found],
-    )
+    return _bfs_result(found, mode, iterations, generated, start, complete)
 
 
 def astar(

@@ -184,6 +184,19 @@ def bits(m: int) -> Iterator[int]:
     return _bits(m)
 
 
+def intern_bit(index: dict[Fact, int], facts: list[Fact], fact: Fact) -> int:
+    """The mask of *fact*, numbering it (appended to *facts*) the first time it is met.
+
+    Grounding meets facts one action at a time; numbering them as they come gives the
+    operators, the initial state and the goal one shared numbering.
+    """
+    i = index.get(fact)
+    if i is None:
+        i = index[fact] = len(facts)
+        facts.append(fact)
+    return 1 << i
+
+
 def fact_text(fact: Fact) -> str:
     """A fact as PDDL-like text: ``(on A B)``."""
     return "(" + " ".join(fact) + ")"

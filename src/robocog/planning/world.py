@@ -14,7 +14,7 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 
 from robocog.planning.rules import HAND, Rule, default_rules, ground_rules
-from robocog.planning.task import Fact, Task
+from robocog.planning.task import Fact, Task, intern_bit
 
 OBJECT = "object"
 FIXED = "fixed-object"
@@ -133,18 +133,20 @@ def build_task(
     intern: dict[Fact, int] = {}
     ops = ground_rules(rules, static, scene.names(), intern, facts)
     dynamic = sorted(f for f in state if f not in static)
-    for fact in list(dynamic) + list(goal) + list(goal_absent):
-        if fact not in intern:
-            intern[fact] = len(facts)
-            facts.append(fact)
-    init = sum(1 << intern[f] for f in dynamic)
+    init = goal_mask = absent_mask = 0
+    for fact in dynamic:
+        init |= intern_bit(intern, facts, fact)
+    for fact in goal:
+        goal_mask |= intern_bit(intern, facts, fact)
+    for fact in goal_absent:
+        absent_mask |= intern_bit(intern, facts, fact)
     busy = sum(1 << i for i, f in enumerate(facts) if f[0] == HAND)
     task = Task(
         facts=facts,
         operators=ops,
         init=init,
-        goal=sum(1 << intern[f] for f in set(goal)),
-        goal_absent=sum(1 << intern[f] for f in set(goal_absent)),
+        goal=goal_mask,
+        goal_absent=absent_mask,
         busy=busy,
         objects=tuple(scene.objects),
         fixed=tuple(scene.fixed),

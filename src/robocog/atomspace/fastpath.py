@@ -1,0 +1,504 @@
+"""The matcher's fast path: conjunctions of plain relation clauses, read off the indexes.
+
+Most queries a robot asks have one shape: a relation with some arguments known and some
+asked, ``(EvaluationLink (PredicateNode "on") (ListLink B ?y))``, ``(InheritanceLink ?x
+C)``, and conjunctions of these joined by shared variables. For them, compiling a
+pattern (terms, closures, anchors) costs more than answering it, so this path reads
+the pattern as it stands and answers from the space's indexes: an argument one link
+down (``B`` above) through the nested index ``space.nested(...)``, which gives exactly
+the relations holding it at that place, an argument of the clause itself through its
+incoming set. Every candidate is checked in full against the clause, and a clause's
+variables, once bound, anchor the clauses joined to it; the clause with the fewest
+candidates is taken next, as in the general matcher.
+
+Only what this path can answer exactly as the general matcher would is taken: no
+variable declaration (every variable free and untyped), no limit, a flat space, and
+clauses that are ordered links of ordinary relation types holding nodes and ordered
+links of nodes. Anything else (typed variables, Present/Absent/Not/Or, evaluatable
+clauses, unordered links, deeper nesting, frames) returns None and goes to the general
+matcher. The answers are the same groundings; like the general matcher's, their order
+follows the index sets' and is not part of the contract.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from robocog.atomspace import types as _t
+from robocog.atomspace.atoms import Atom, Link, Node
+
+if TYPE_CHECKING:
+    from robocog.atomspace.space import AtomSpace
+
+Bindings = dict[Atom, Atom]
+
+#: ordered link types that mean more to the matcher than a relation to look up
+_NOT_PLAIN = frozenset(
+    {
+        "NotLink",
+        "AbsentLink",
+        "GreaterThanLink",
+        "ExecutionOutputLink",
+        "LambdaLink",
+        "PutLink",
+        "QuoteLink",
+        "UnquoteLink",
+        "TypedVariableLink",
+        "VariableList",
+        "SignatureLink",
+        "TypeChoice",
+        "SequentialAndLink",
+        "DeleteLink",
+    }
+)
+_EVAL_PREDICATES = frozenset({"GroundedPredicateNode", "DefinedPredicateNode"})
+_VAR = "VariableNode"
+
+
+#: type -> True for an ordered link type the matcher treats as a plain relation (filled
+#: on first sight of each type by _plain; an atom of a type exists only once the type
+#: is declared, and a declaration never changes, so the answer never does)
+_PLAIN: dict[str, bool] = {}
+
+
+def _plain(t: str) -> bool:
+    """True for an ordered link type the matcher treats as a plain relation."""
+    ok = _PLAIN.get(t)
+    if ok is None:
+        ok = (
+            t in _t.LINK_TYPES
+            and t not in _t.UNORDERED
+            and t not in _NOT_PLAIN
+            and t not in _t.QUERY_TYPES
+            and not _t.is_a(t, "PatternLink")
+        )
+        _PLAIN[t] = ok
+    return ok
+
+
+class _NoMatch(Exception):
+    """A constant of the pattern is not in the space: no grounding at all."""
+
+
+def _read(clause: Atom, atoms: dict) -> tuple | None:
+    """``(type, arity, direct, nested, vars)`` of a plain clause, or None.
+
+    direct: ``(i, atom, is_var)`` for each node at position i; nested: ``(i, type,
+    arity, leaves)`` for each link of nodes at position i, leaves ``(j, atom, is_var)``.
+    Constants are replaced by the space's own instances (identity is then equality).
+    """
+    if clause.__class__ is not Link:
+        return None
+    typ = clause[0]
+    if not _plain(typ):
+        return None
+    out = clause[1]
+    if typ == "EvaluationLink" and out and out[0][0] in _EVAL_PREDICATES:
+        return None
+    direct = []
+    nested = []
+    vs = []
+    for i, x in enumerate(out):
+        if x.__class__ is Node:
+            if x[0] == _VAR:
+                direct.append((i, x, True))
+                vs.append(x)
+            else:
+                c = atoms.get(x)
+                if c is None:
+                    raise _NoMatch
+                direct.append((i, c, False))
+            continue
+        if x.__class__ is not Link or not _plain(x[0]):
+            return None
+        leaves = []
+        for j, y in enumerate(x[1]):
+            if y.__class__ is not Node:
+                return None
+            if y[0] == _VAR:
+                leaves.append((j, y, True))
+                vs.append(y)
+            else:
+                c = atoms.get(y)
+                if c is None:
+                    raise _NoMatch
+                leaves.append((j, c, False))
+        if any(is_var for _j, _a, is_var in leaves):
+            nested.append((i, x[0], len(x[1]), tuple(leaves)))
+        else:  # a ground link: one constant
+            c = atoms.get(x)
+            if c is None:
+                raise _NoMatch
+            direct.append((i, c, False))
+    return typ, len(out), tuple(direct), tuple(nested), vs
+
+
+def _check(link: Atom, clause: tuple, b: Bindings) -> Bindings | None:
+    """``b`` extended so that ``link`` grounds the clause, or None."""
+    _typ, n, direct, nested, _vs = clause
+    out = link[1]
+    if len(out) != n:
+        return None
+    nb = b
+    for i, a, is_var in direct:
+        x = out[i]
+        if is_var:
+            v = nb.get(a)
+            if v is None:
+                if nb is b:
+                    nb = b.copy()
+                nb[a] = x
+            elif v is not x:
+                return None
+        elif x is not a:
+            return None
+    for i, itype, m, leaves in nested:
+        inner = out[i]
+        if inner.__class__ is not Link or inner[0] != itype:
+            return None
+        io = inner[1]
+        if len(io) != m:
+            return None
+        for j, a, is_var in leaves:
+            x = io[j]
+            if is_var:
+                v = nb.get(a)
+                if v is None:
+                    if nb is b:
+                        nb = b.copy()
+                    nb[a] = x
+                elif v is not x:
+                    return None
+            elif x is not a:
+                return None
+    return nb
+
+
+def _candidates(space: AtomSpace, clause: tuple, b: Bindings) -> tuple[int, object]:
+    """(size, links) for the clause's rarest anchor under ``b``: a known node of the
+    clause gives its incoming set, a known leaf one link down the links above its
+    incoming links of the right type and place (supersets, checked in full later);
+    with nothing known, the type's atoms."""
+    typ = clause[0]
+    best_n = -1
+    best: object = ()
+    inc_get = space._incoming.get
+    for _i, a, is_var in clause[2]:
+        if is_var:
+            a = b.get(a)
+            if a is None:
+                continue
+        s = inc_get(a)
+        if s is None:
+            return 0, ()
+        n = len(s)
+        if best_n < 0 or n < best_n:
+            best_n, best = n, s
+    for _i, itype, _m, leaves in clause[3]:
+        for j, a, is_var in leaves:
+            if is_var:
+                a = b.get(a)
+                if a is None:
+                    continue
+            s = inc_get(a)
+            if s is None:
+                return 0, ()
+            if best_n >= 0 and len(s) >= best_n:
+                continue
+            up: set = set()
+            for lk in s:
+                if lk[0] == itype and len(lk[1]) > j and lk[1][j] is a:
+                    up.update(inc_get(lk, ()))
+            best_n, best = len(up), up
+            if not up:
+                return 0, ()
+    if best_n < 0:
+        s = space._by_type.get(typ, ())
+        return len(s), s
+    return best_n, best
+
+
+def fast_query(space: AtomSpace, body: Atom) -> list[Bindings] | None:
+    """Every grounding of ``body`` (no declaration, every variable free), or None if
+    the body is not a conjunction of plain clauses (then the general matcher runs)."""
+    if space._parent is not None or body.__class__ is not Link:
+        return None
+    found: list[Bindings]
+    typ, out = body
+    if typ != "AndLink":
+        # one clause (R c (L a0 a1)): _pair_clause and _pair_one inlined, as this is
+        # the query asked most and the calls would cost a fifth of its time
+        if len(out) == 2 and (_PLAIN.get(typ) or _plain(typ)):
+            c, inner = out
+            if (
+                c.__class__ is Node
+                and inner.__class__ is Link
+                and c[0] != _VAR
+                and (typ != "EvaluationLink" or c[0] not in _EVAL_PREDICATES)
+            ):
+                itype, leaves = inner
+                if len(leaves) == 2 and (_PLAIN.get(itype) or _plain(itype)):
+                    a0, a1 = leaves
+                    if a0.__class__ is Node and a1.__class__ is Node:
+                        if a0[0] == _VAR:
+                            if a1[0] != _VAR:
+                                best = space._relations.get((a1, 1, c, typ, itype, 2))
+                                if best is None:
+                                    return []
+                                return [{a0: x[1][0]} for x in best]
+                        elif a1[0] == _VAR:
+                            best = space._relations.get((a0, 0, c, typ, itype, 2))
+                            if best is None:
+                                return []
+                            return [{a1: x[1][1]} for x in best]
+        pc = _pair_clause(body)
+        if pc is not None:
+            one = _pair_one(space._relations.get, pc)
+            if one is not None:
+                return one
+    else:
+        pairs = []
+        for c in body[1]:
+            pc = _pair_clause(c)
+            if pc is None:
+                break
+            pairs.append(pc)
+        else:
+            if pairs:
+                found = []
+                if _pair_join(space._relations.get, pairs, _NO_BINDINGS, found):
+                    return found
+    atoms = space._atoms
+    try:
+        if body[0] == "AndLink":
+            clauses = []
+            for c in body[1]:
+                r = _read(c, atoms)
+                if r is None:
+                    return None
+                clauses.append(r)
+            if not clauses:
+                return None
+        else:
+            r = _read(body, atoms)
+            if r is None:
+                return None
+            clauses = [r]
+    except _NoMatch:
+        return []
+    if len(clauses) == 1:
+        clause = clauses[0]
+        if not clause[4]:
+            ground = body[1][0] if body[0] == "AndLink" else body
+            return [{}] if ground in atoms else []
+        typ = clause[0]
+        _n, cands = _candidates(space, clause, {})
+        out = []
+        empty: Bindings = {}
+        for link in cands:
+            if link[0] == typ:
+                nb = _check(link, clause, empty)
+                if nb is not None:
+                    out.append(nb)
+        return out
+    out = []
+    _join(space, clauses, {}, out)
+    return out
+
+
+def _join(space: AtomSpace, clauses: list, b: Bindings, out: list[Bindings]) -> None:
+    """Ground the clauses one at a time, the one with the fewest candidates first."""
+    best_i, best_n, best = -1, -1, None
+    for k, c in enumerate(clauses):
+        n, s = _candidates(space, c, b)
+        if n == 0:
+            return
+        if best_n < 0 or n < best_n:
+            best_i, best_n, best = k, n, s
+    clause = clauses[best_i]
+    rest = clauses[:best_i] + clauses[best_i + 1 :]
+    typ = clause[0]
+    if not rest:
+        for link in best:  # type: ignore[attr-defined]
+            if link[0] == typ:
+                nb = _check(link, clause, b)
+                if nb is not None:
+                    out.append(nb if nb is not b else b.copy())
+        return
+    for link in best:  # type: ignore[attr-defined]
+        if link[0] == typ:
+            nb = _check(link, clause, b)
+            if nb is not None:
+                _join(space, rest, nb, out)
+
+
+# ---------------------------------------------------------------------- relations
+# The commonest clause of all, ``(R c (L leaves...))`` with a constant node ``c`` and
+# nodes as leaves (``(EvaluationLink (PredicateNode "on") (ListLink B ?y))``), answered
+# from the space's relation index: the entry of a known leaf holds exactly the inner
+# links ``(L ...)`` of the relations with ``c``, ``R``, ``L``, that leaf at that place and
+# that many leaves, so only the other leaves are left to check or bind (for the usual
+# two leaves: one).
+_NO_BINDINGS: Bindings = {}
+
+
+def _pair_clause(clause: Atom) -> tuple | None:
+    """``(R, c, L, leaves, arity)`` of a clause ``(R c (L leaves...))``; None for any
+    other shape."""
+    if clause.__class__ is not Link:
+        return None
+    typ, out = clause
+    if len(out) != 2 or not (_PLAIN.get(typ) or _plain(typ)):
+        return None
+    c, inner = out
+    if c.__class__ is not Node or inner.__class__ is not Link or c[0] == _VAR:
+        return None
+    if typ == "EvaluationLink" and c[0] in _EVAL_PREDICATES:
+        return None
+    itype, leaves = inner
+    if not (_PLAIN.get(itype) or _plain(itype)):
+        return None
+    for a in leaves:
+        if a.__class__ is not Node:
+            return None
+    return typ, c, itype, leaves, len(leaves)
+
+
+def _pair_one(rel_get, clause: tuple) -> list[Bindings] | None:  # noqa: ANN001
+    """Every grounding of one ``(R c (L leaves...))`` clause (None if no leaf is a
+    constant); the single-clause case of :func:`_pair_join`, unrolled for two leaves
+    because it is the query asked most."""
+    typ, c, itype, leaves, m = clause
+    if m == 2:
+        a0, a1 = leaves
+        if a0[0] == _VAR:
+            if a1[0] == _VAR:
+                return None
+            best = rel_get((a1, 1, c, typ, itype, 2))
+            v, oj = a0, 0
+        else:
+            best = rel_get((a0, 0, c, typ, itype, 2))
+            if a1[0] != _VAR:  # ground: one link at most
+                if best is not None:
+                    for inner in best:
+                        x = inner[1][1]
+                        if x is a1 or x == a1:
+                            return [{}]
+                return []
+            v, oj = a1, 1
+        if best is None:
+            return []
+        return [{v: inner[1][oj]} for inner in best]
+    found: list[Bindings] = []
+    if _pair_join(rel_get, [clause], _NO_BINDINGS, found):
+        return found
+    return None
+
+
+def _pair_join(rel_get, clauses: list, b: Bindings, out: list[Bindings]) -> bool:  # noqa: ANN001
+    """Append to ``out`` every grounding of the clauses extending ``b``, grounding
+    first the clause whose rarest known leaf has the fewest links; False if at some
+    point no clause has a known leaf (the caller then drops ``out`` and takes the
+    general path)."""
+    best = None
+    best_k = best_j = -1
+    k = 0
+    for typ, c, itype, leaves, m in clauses:
+        j = 0
+        for a in leaves:
+            if a[0] == _VAR:
+                a = b.get(a)
+                if a is None:
+                    j += 1
+                    continue
+            s = rel_get((a, j, c, typ, itype, m))
+            if s is None:
+                return True  # this clause has no grounding: nor has the conjunction
+            if best is None or len(s) < len(best):
+                best, best_k, best_j = s, k, j
+            j += 1
+        k += 1
+    if best is None:
+        return False
+    leaves, m = clauses[best_k][3:]
+    rest = clauses[:best_k] + clauses[best_k + 1 :]
+    last2 = rest[0] if len(rest) == 1 and rest[0][4] == 2 else None
+    if m == 2:
+        # the index has checked the known leaf; one leaf is left
+        oj = 1 - best_j
+        other = leaves[oj]
+        bind = want = None
+        if other[0] == _VAR:
+            want = b.get(other)
+            if want is None:
+                bind = other
+        else:
+            want = other
+        for inner in best:
+            x = inner[1][oj]
+            if bind is not None:
+                nb = b.copy()
+                nb[bind] = x
+            elif x is want or x == want:
+                nb = b if rest else b.copy()
+            else:
+                continue
+            if not rest:
+                out.append(nb)
+            elif last2 is not None:
+                if not _last2(rel_get, last2, nb, out):
+                    return False
+            elif not _pair_join(rel_get, rest, nb, out):
+                return False
+        return True
+    for inner in best:
+        io = inner[1]
+        nb = b.copy()
+        j = 0
+        for a in leaves:
+            x = io[j]
+            j += 1
+            if a[0] == _VAR:
+                if nb.setdefault(a, x) is x:
+                    continue
+            elif x is a or x == a:
+                continue
+            break
+        else:
+            if not rest:
+                out.append(nb)
+            elif not _pair_join(rel_get, rest, nb, out):
+                return False
+    return True
+
+
+def _last2(rel_get, clause: tuple, b: Bindings, out: list[Bindings]) -> bool:  # noqa: ANN001
+    """The last clause of a join when it has two leaves: :func:`_pair_join` for one
+    clause, unrolled (it runs once per grounding of the clauses before it)."""
+    typ, c, itype, (a0, a1), _m = clause
+    x0 = b.get(a0) if a0[0] == _VAR else a0
+    x1 = b.get(a1) if a1[0] == _VAR else a1
+    if x0 is not None:
+        s = rel_get((x0, 0, c, typ, itype, 2))
+        if s is None:
+            return True
+        if x1 is not None:  # both leaves known: one link at most
+            for inner in s:
+                x = inner[1][1]
+                if x is x1 or x == x1:
+                    out.append(b.copy())
+                    break
+            return True
+        oj, bind = 1, a1
+    elif x1 is not None:
+        s = rel_get((x1, 1, c, typ, itype, 2))
+        if s is None:
+            return True
+        oj, bind = 0, a0
+    else:
+        return False
+    for inner in s:
+        nb = b.copy()
+        nb[bind] = inner[1][oj]
+        out.append(nb)
+    return True
