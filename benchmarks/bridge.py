@@ -38,13 +38,15 @@ class TurnAway:
         self.obstacle: str = "none"
 
     def perceive(self, percepts: Sequence[Percept]) -> None:
+        """Keep only the obstacle sector: the cheapest mind, so the bridge is measured."""
         self.obstacle = next((p.sector for p in percepts if isinstance(p, Obstacle)), "none")
 
     def decide(self) -> list[Command]:
+        """Turn away from an obstacle on the left: the command whose latency is timed."""
         return [Turn(-0.3)] if self.obstacle == "left" else []
 
     def on_outcome(self, command: Command, outcome: Outcome) -> None:
-        pass
+        """Outcomes change nothing for this mind."""
 
 
 def run_bridge(domain: int, seconds: float) -> None:
@@ -133,6 +135,7 @@ def measure(kind: str, domain: int, trials: int) -> list[float]:
 
 
 def main(argv: list[str] | None = None) -> int:
+    """Run the trials and print (and optionally write) the latency figures."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--trials", type=int, default=200)
     parser.add_argument("--json", help="write the figures to this file")

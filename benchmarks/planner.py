@@ -132,21 +132,41 @@ def run_pyperplan(
         except subprocess.TimeoutExpired:
             return Run("pyperplan", name, False, None, None, timeout, None, "timeout")
         seconds = time.perf_counter() - start
-        log = proc.stdout + proc.stderr
         soln = prob.with_suffix(prob.suffix + ".soln")
-        if not soln.exists():
-            return Run("pyperplan", name, False, None, None, seconds, None, "no plan")
-        steps = [ln for ln in soln.read_text().splitlines() if ln.strip().startswith("(")]
-        m = re.search(r"(\d+) Nodes expanded", log)
-        return Run(
-            "pyperplan",
-            name,
-            True,
-            len(steps),
-            int(m.group(1)) if m else None,
-            seconds,
-            validate(domain, problem_path.read_text(), steps),
+        log = proc.stdout + proc.stderr
+        return _read_plan(
+            "pyperplan", name, soln, seconds, log, r"(\d+) Nodes expanded", domain, problem_path
         )
+
+
+def _read_plan(
+    planner: str,
+    name: str,
+    plan_file: Path,
+    seconds: float,
+    log: str,
+    expanded: str,
+    domain: Domain,
+    problem_path: Path,
+) -> Run:
+    """The run of a peer planner from the plan file it wrote and its log.
+
+    Both peers write one ``(action args)`` line a step; their node counts are read from
+    the log with *expanded* (one group), and their plans are replayed here, not trusted.
+    """
+    if not plan_file.exists():
+        return Run(planner, name, False, None, None, seconds, None, "no plan")
+    steps = [ln for ln in plan_file.read_text().splitlines() if ln.strip().startswith("(")]
+    m = re.search(expanded, log)
+    return Run(
+        planner,
+        name,
+        True,
+        len(steps),
+        int(m.group(1)) if m else None,
+        seconds,
+        validate(domain, problem_path.read_text(), steps),
+    )
 
 
 def _downward_binary() -> Path | None:
@@ -202,18 +222,15 @@ def run_downward(
         except subprocess.CalledProcessError as exc:
             return Run("downward", name, False, None, None, 0.0, None, f"translate failed: {exc}")
         seconds = time.perf_counter() - start
-        if not plan.exists():
-            return Run("downward", name, False, None, None, seconds, None, "no plan")
-        steps = [ln for ln in plan.read_text().splitlines() if ln.strip().startswith("(")]
-        m = re.search(r"Expanded (\d+) state", proc.stdout)
-        return Run(
+        return _read_plan(
             "downward",
             name,
-            True,
-            len(steps),
-            int(m.group(1)) if m else None,
+            plan,
             seconds,
-            validate(domain, problem_path.read_text(), steps),
+            proc.stdout,
+            r"Expanded (\d+) state",
+            domain,
+            problem_path,
         )
 
 

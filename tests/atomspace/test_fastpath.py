@@ -106,7 +106,10 @@ def test_the_common_relations_take_the_fast_path() -> None:
     )
     # typed variables, evaluatable clauses and frames go to the general matcher
     assert fast_query(s.child(), rel(P("on"), C("a"), y)) is None
-    assert fast_query(s, Link("AndLink", rel(P("on"), C("a"), y), Link("EqualLink", y, C("b")))) is None
+    assert (
+        fast_query(s, Link("AndLink", rel(P("on"), C("a"), y), Link("EqualLink", y, C("b"))))
+        is None
+    )
     grounded = Node("GroundedPredicateNode", "py:f")
     assert fast_query(s, Link("EvaluationLink", grounded, Link("ListLink", C("a"), y))) is None
 
@@ -114,7 +117,14 @@ def test_the_common_relations_take_the_fast_path() -> None:
 def test_the_relation_index_follows_removals() -> None:
     s = AtomSpace()
     fact = s.add(rel(P("on"), C("a"), C("b")))
-    assert s.relation(C("a"), 0, P("on"), "EvaluationLink", "ListLink", 2) == {fact.out[1]}
-    assert s.remove(fact)
+    triple = s.add(rel(P("between"), C("a"), C("b"), C("c")))
+    # two leaves: the other leaf; otherwise the inner link
+    assert s.relation(C("a"), 0, P("on"), "EvaluationLink", "ListLink", 2) == {C("b")}
+    assert s.relation(C("b"), 1, P("on"), "EvaluationLink", "ListLink", 2) == {C("a")}
+    assert s.relation(C("c"), 2, P("between"), "EvaluationLink", "ListLink", 3) == {triple.out[1]}
+    assert s.relation(C("a"), 1, P("on"), "EvaluationLink", "ListLink", 2) == set()
+    assert s.remove(fact) and s.remove(triple)
     assert s.relation(C("a"), 0, P("on"), "EvaluationLink", "ListLink", 2) == set()
+    assert s.relation(C("c"), 2, P("between"), "EvaluationLink", "ListLink", 3) == set()
+    assert s._relations == {}
     assert query(s, rel(P("on"), C("a"), V("$y"))) == []

@@ -163,29 +163,28 @@ def test_ros1_killing_the_robot_stops_it_and_a_new_robot_is_driven(
     assert logged(run, "percepts are back; resuming")
 
 
-def test_ros1_the_nars_mind_drives_the_robot(
-    spawn: Callable[..., Child], roscore: dict[str, str], nars_knowledge: str
+def _mind_turns_away_then_picks(
+    spawn: Callable[..., Child], roscore: dict[str, str], *mind: str
 ) -> None:
+    """The bridge running *mind* turns from an obstacle, then picks up a bottle it sees."""
     robot = start_robot(spawn, roscore)
     robot.send({"obstacle": [0.9, 1.0]})
-    run = spawn(bridge("nars", "--knowledge", nars_knowledge), roscore, "bridge")
+    run = spawn(bridge(*mind), roscore, "bridge")
     turn = robot.wait_event(is_turn, 60)
     assert turn is not None and turn["angular"] < 0, run.stderr_text()[-3000:]
     mark = len(robot.events)
     robot.send({"obstacle": None, "detections": [{"label": "bottle", "x": 320}]})
     pick = robot.wait_event(lambda e: e["event"] == "gripper", 60, since=mark)
     assert pick is not None and pick["text"].startswith("pick"), run.stderr_text()[-3000:]
+
+
+def test_ros1_the_nars_mind_drives_the_robot(
+    spawn: Callable[..., Child], roscore: dict[str, str], nars_knowledge: str
+) -> None:
+    _mind_turns_away_then_picks(spawn, roscore, "nars", "--knowledge", nars_knowledge)
 
 
 def test_ros1_the_bdi_mind_drives_the_robot(
     spawn: Callable[..., Child], roscore: dict[str, str], bdi_program: str
 ) -> None:
-    robot = start_robot(spawn, roscore)
-    robot.send({"obstacle": [0.9, 1.0]})
-    run = spawn(bridge("bdi", "--program", bdi_program), roscore, "bridge")
-    turn = robot.wait_event(is_turn, 60)
-    assert turn is not None and turn["angular"] < 0, run.stderr_text()[-3000:]
-    mark = len(robot.events)
-    robot.send({"obstacle": None, "detections": [{"label": "bottle", "x": 320}]})
-    pick = robot.wait_event(lambda e: e["event"] == "gripper", 60, since=mark)
-    assert pick is not None and pick["text"].startswith("pick"), run.stderr_text()[-3000:]
+    _mind_turns_away_then_picks(spawn, roscore, "bdi", "--program", bdi_program)

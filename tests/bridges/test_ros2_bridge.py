@@ -139,12 +139,13 @@ def test_losing_the_robot_stops_it_within_the_watchdog_time_and_the_bridge_resum
     assert run.wait_for(lambda: "percepts are back; resuming" in "".join(run.errors), 5)
 
 
-def test_the_nars_mind_drives_the_robot(
-    spawn: Callable[..., Child], dds: tuple[int, dict[str, str]], nars_knowledge: str
+def _mind_turns_away_then_picks(
+    spawn: Callable[..., Child], dds: tuple[int, dict[str, str]], *mind: str
 ) -> None:
+    """The bridge running *mind* turns from an obstacle, then picks up a bottle it sees."""
     domain, env = dds
     robot = start_robot(spawn, domain, env, {"obstacle": [0.9, 1.0]})
-    run = spawn(bridge(domain, "nars", "--knowledge", nars_knowledge), env, "bridge")
+    run = spawn(bridge(domain, *mind), env, "bridge")
     turn = robot.wait_event(is_turn, 60)
     assert turn is not None, run.stderr_text()[-3000:]
     assert turn["angular"] < 0
@@ -152,18 +153,15 @@ def test_the_nars_mind_drives_the_robot(
     robot.send({"obstacle": None, "detections": [{"label": "bottle", "x": 320}]})
     pick = robot.wait_event(lambda e: e["event"] == "gripper", 60, since=mark)
     assert pick is not None and pick["text"].startswith("pick"), run.stderr_text()[-3000:]
+
+
+def test_the_nars_mind_drives_the_robot(
+    spawn: Callable[..., Child], dds: tuple[int, dict[str, str]], nars_knowledge: str
+) -> None:
+    _mind_turns_away_then_picks(spawn, dds, "nars", "--knowledge", nars_knowledge)
 
 
 def test_the_bdi_mind_drives_the_robot(
     spawn: Callable[..., Child], dds: tuple[int, dict[str, str]], bdi_program: str
 ) -> None:
-    domain, env = dds
-    robot = start_robot(spawn, domain, env, {"obstacle": [0.9, 1.0]})
-    run = spawn(bridge(domain, "bdi", "--program", bdi_program), env, "bridge")
-    turn = robot.wait_event(is_turn, 60)
-    assert turn is not None, run.stderr_text()[-3000:]
-    assert turn["angular"] < 0
-    mark = len(robot.events)
-    robot.send({"obstacle": None, "detections": [{"label": "bottle", "x": 320}]})
-    pick = robot.wait_event(lambda e: e["event"] == "gripper", 60, since=mark)
-    assert pick is not None and pick["text"].startswith("pick"), run.stderr_text()[-3000:]
+    _mind_turns_away_then_picks(spawn, dds, "bdi", "--program", bdi_program)

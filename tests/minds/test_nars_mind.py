@@ -185,12 +185,12 @@ def test_a_kind_once_seen_is_reported_missing_when_out_of_view() -> None:
     start = len(nar.inputs)
     mind.decide()
     frame = nar.inputs[start:]
-    assert frame[0] == "<trash --> [see]>. :|: {0.0 0.9}"
+    assert frame[:2] == ["<({SELF} * {p0}) --> at>. :|:", "<trash --> [see]>. :|: {0.0 0.9}"]
 
 
-def test_the_place_is_told_on_arrival_not_again_while_staying() -> None:
+def test_the_place_can_be_told_on_arrival_only() -> None:
     nar = Recorder(lambda r: [])
-    mind = NarsMind(["p0", "p1"], nar=nar)  # type: ignore[arg-type]
+    mind = NarsMind(["p0", "p1"], NarsSettings(place_on_change=True), nar=nar)  # type: ignore[arg-type]
     told = []
     for place in ("p0", "p0", "p0", None, "p1", "p1"):
         start = len(nar.inputs)

@@ -2,6 +2,10 @@
 
 from __future__ import annotations
 
+import random
+import shutil
+import subprocess
+
 import pytest
 
 from robocog.nars import NAR, Term
@@ -49,7 +53,13 @@ def test_temporal_induction_truth_and_dt() -> None:
     assert ans is not None
     assert ans.dt == 1.0
     # induction of two {1, 0.9} events one cycle apart, eternalized: w2c(w2c(0.648))
-    assert ans.truth.c == pytest.approx(0.648 / 1.648 / (1 + 0.648 / 1.648))
+    c0 = 0.648 / 1.648 / (1 + 0.648 / 1.648)
+    # then b, fresh input, anticipates with it: one failure {0, w2c(w2c(0.9*0.8^dt*0.01))}
+    # (the precondition projected over dt=1), revised in; ONA answers {0.982144, 0.285894}
+    w_neg = 0.9 * 0.8 * 0.01 / (1 + 0.9 * 0.8 * 0.01)
+    w1, w2 = c0 / (1 - c0), w_neg
+    assert ans.truth.f == pytest.approx(w1 / (w1 + w2))
+    assert ans.truth.c == pytest.approx((w1 + w2) / (w1 + w2 + 1))
 
 
 def test_procedural_learning_then_goal_uses_learned_operation() -> None:
@@ -156,3 +166,57 @@ def test_learned_procedure_survives_save_and_load(tmp_path) -> None:  # noqa: AN
     again.output = out.append
     again.add_input("g! :|:")
     assert "^left executed with args " in out
+
+
+def _procedure_stream(seed: int) -> str:
+    """Observations, a goal after each and a few idle cycles, with babbling on: the
+    reasoner's executions depend on induction, anticipation, subgoaling, the veto and
+    the order of its random draws."""
+    rng = random.Random(seed)
+    lines = ["*setopname 1 ^left", "*setopname 2 ^right", "*babblingops=2", "*motorbabbling=0.2"]
+    for _ in range(150):
+        lines.append(rng.choice(["good", "a", "b", "c"]) + ". :|:")
+        lines.append("good! :|:")
+        lines.append(str(rng.randint(1, 3)))
+    return "\n".join(lines) + "\n"
+
+
+def _decisions(text: str) -> list[str]:
+    return [
+        line
+        for line in text.splitlines()
+        if " executed with args" in line or line.startswith("decision expectation=")
+    ]
+
+
+@pytest.mark.skipif(shutil.which("NAR") is None, reason="ONA (pip install ona==0.9.2) not found")
+@pytest.mark.parametrize("seed", [3, 11])
+def test_decisions_and_executions_equal_onas(seed: int) -> None:
+    # same seed (666), same inputs: every decision line and execution equals ONA 0.9.2's
+    text = _procedure_stream(seed)
+    ona = subprocess.run(
+        [shutil.which("NAR") or "NAR", "shell"], input=text, capture_output=True, text=True
+    ).stdout
+    nar = NAR()
+    out: list[str] = []
+    nar.output = out.append
+    for line in text.splitlines():
+        nar.add_input(line)
+    expected = _decisions(ona)
+    assert len(expected) > 100
+    assert _decisions("\n".join(out)) == expected
+
+
+def test_anticipation_counts_a_failure_with_the_precondition_projected_over_dt() -> None:
+    nar, _ = quiet(motor_babbling_chance=0.0)
+    nar.add_input("<(a &/ ^left) =/> g>.")
+    nar.add_input("*setopname 1 ^left")
+    before = nar.ask("<(a &/ ^left) =/> g>?")
+    nar.add_input("a. :|:")
+    nar.add_input("^left. :|:")  # the operation happens; g does not follow
+    after = nar.ask("<(a &/ ^left) =/> g>?")
+    assert before is not None and after is not None
+    # one negative evidence: eternalize(induction({0, 0.01}, {1, 0.9 * 0.8^dt})), dt = 0
+    w_neg = 0.9 * 0.01 / (1 + 0.9 * 0.01)
+    w1 = 0.9 / 0.1
+    assert after.truth.f == pytest.approx(w1 / (w1 + w_neg))

@@ -78,3 +78,16 @@ def test_percentile_interpolates() -> None:
     assert percentile([1.0, 2.0, 3.0, 4.0], 50) == 2.5
     assert percentile([5.0], 99) == 5.0
     assert percentile([0.0, 10.0], 90) == 9.0
+
+
+def test_stats_keep_a_bounded_window_but_count_every_cycle() -> None:
+    from robocog.robot.loop import CycleStats
+
+    stats = CycleStats(window=10)
+    for i in range(25):
+        stats.record(i / 1000, 2 * i / 1000)
+    assert len(stats.cycle) == 10 and len(stats.reason) == 10
+    summary = stats.summary()
+    assert summary["cycles"] == 25.0
+    # only the last ten cycles (15..24 ms of reasoning) are in the figures
+    assert abs(summary["reason_p50_ms"] - 19.5) < 1e-9

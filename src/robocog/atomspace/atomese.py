@@ -287,7 +287,8 @@ def load(
 
 def add_parsed(parsed: Parsed, space: AtomSpace) -> list[Atom]:
     """Add what :func:`parse` read to ``space``; returns the top-level atoms."""
-    out = [space.add(f.atom) for f in parsed.forms]
+    added = [space.add(f.atom) for f in parsed.forms]
+    out = [a for a in added if a is not None]  # a closed DeleteLink removes, adds nothing
     for atom, tv in parsed.tvs:
         space.set_tv(atom, tv)
     return out

@@ -23,7 +23,8 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any
 
 from robocog.atomspace import types as _t
-from robocog.atomspace.atoms import Atom, Link, Node, _raw_link
+from robocog.atomspace.atoms import Atom, Link, Node, _raw_link, variables_of
+from robocog.atomspace.fastpath import fast_query
 from robocog.atomspace.matcher import PatternError, compile_pattern, is_variable_decl, substitute
 from robocog.atomspace.values import FALSE_TV, TRUE_TV, QueueValue, TruthValue, Value
 
@@ -99,9 +100,15 @@ def instantiate(space: AtomSpace, atom: Atom) -> Any:
         return _execution_output(space, atom)
     if atom[0] in _t.QUERY_TYPES:
         return space.add(atom)
+    if atom[0] == "DeleteLink":
+        # grounded, it removes what it holds and is not added; with variables left
+        # (a rewrite that does not bind them all) it is an ordinary atom
+        return space.add(atom)
     kids = []
     for a in atom[1]:
         r = instantiate(space, a)
+        if r is None and a[0] == "DeleteLink":
+            continue  # done: its atoms are gone, and it is no part of the result
         if not isinstance(r, Atom):
             raise GroundedError(f"a rewrite inside {atom[0]} produced {r!r}, not an atom")
         kids.append(r)
@@ -136,16 +143,21 @@ def grounding_atom(variables: list[Atom], b: dict[Atom, Atom]) -> Atom:
 def run_query(space: AtomSpace, link: Atom) -> Any:
     """Run a GetLink, BindLink, QueryLink, MeetLink or SatisfactionLink."""
     decl, body, rewrite = _split(link)
-    pattern = compile_pattern(body, decl)
     t = link[0]
-    if t == "SatisfactionLink":
-        return TRUE_TV if pattern.groundings(space, limit=1) else FALSE_TV
-    found = pattern.groundings(space)
-    if t == "GetLink":
+    # no declaration: the plain relation queries need no compiled pattern
+    found = fast_query(space, body) if decl is None and t != "SatisfactionLink" else None
+    if found is None:
+        pattern = compile_pattern(body, decl)
+        if t == "SatisfactionLink":
+            return TRUE_TV if pattern.groundings(space, limit=1) else FALSE_TV
+        found = pattern.groundings(space)
         vs = pattern.variables
+    else:
+        vs = variables_of(body)
+    if t == "GetLink":
         return _raw_link("SetLink", tuple([grounding_atom(vs, b) for b in found]))
     if t == "MeetLink":
-        return QueueValue(grounding_atom(pattern.variables, b) for b in found)
+        return QueueValue(grounding_atom(vs, b) for b in found)
     results: list[Atom] = []
     seen: set[Atom] = set()
     assert rewrite is not None

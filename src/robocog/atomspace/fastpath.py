@@ -3,21 +3,21 @@
 Most queries a robot asks have one shape: a relation with some arguments known and some
 asked, ``(EvaluationLink (PredicateNode "on") (ListLink B ?y))``, ``(InheritanceLink ?x
 C)``, and conjunctions of these joined by shared variables. For them, compiling a
-pattern (terms, closures, anchors) costs more than answering it, so this path reads
-the pattern as it stands and answers from the space's indexes: an argument one link
-down (``B`` above) through the nested index ``space.nested(...)``, which gives exactly
-the relations holding it at that place, an argument of the clause itself through its
-incoming set. Every candidate is checked in full against the clause, and a clause's
-variables, once bound, anchor the clauses joined to it; the clause with the fewest
-candidates is taken next, as in the general matcher.
+pattern (terms, closures, anchors) costs more than answering it, so this path reads the
+pattern as it stands and answers from the space's indexes, compiling and caching
+nothing. A relation ``(R c (L leaves...))`` is answered from the relation index
+(``space.relation(...)``), whose entry for a known leaf holds exactly the relations with
+that leaf at that place; any other plain clause from the incoming set of a known atom
+(checked in full). A clause's variables, once bound, anchor the clauses joined to it,
+and the clause with the fewest candidates is taken next, as in the general matcher.
 
-Only what this path can answer exactly as the general matcher would is taken: no
-variable declaration (every variable free and untyped), no limit, a flat space, and
-clauses that are ordered links of ordinary relation types holding nodes and ordered
-links of nodes. Anything else (typed variables, Present/Absent/Not/Or, evaluatable
-clauses, unordered links, deeper nesting, frames) returns None and goes to the general
-matcher. The answers are the same groundings; like the general matcher's, their order
-follows the index sets' and is not part of the contract.
+Only what this path answers exactly as the general matcher would is taken: no variable
+declaration (every variable free and untyped), no limit, a flat space, and clauses that
+are ordered links of ordinary relation types holding nodes and ordered links of nodes.
+Anything else (typed variables, Present/Absent/Not/Or, evaluatable clauses, unordered
+links, deeper nesting, frames) returns None and goes to the general matcher. The
+groundings are the same; like the general matcher's, their order follows the index
+sets' and is not part of the contract.
 """
 
 from __future__ import annotations
@@ -245,12 +245,12 @@ def fast_query(space: AtomSpace, body: Atom) -> list[Bindings] | None:
                                 best = space._relations.get((a1, 1, c, typ, itype, 2))
                                 if best is None:
                                     return []
-                                return [{a0: x[1][0]} for x in best]
+                                return [{a0: x} for x in best]
                         elif a1[0] == _VAR:
                             best = space._relations.get((a0, 0, c, typ, itype, 2))
                             if best is None:
                                 return []
-                            return [{a1: x[1][1]} for x in best]
+                            return [{a1: x} for x in best]
         pc = _pair_clause(body)
         if pc is not None:
             one = _pair_one(space._relations.get, pc)
@@ -375,20 +375,15 @@ def _pair_one(rel_get, clause: tuple) -> list[Bindings] | None:  # noqa: ANN001
             if a1[0] == _VAR:
                 return None
             best = rel_get((a1, 1, c, typ, itype, 2))
-            v, oj = a0, 0
+            v = a0
         else:
             best = rel_get((a0, 0, c, typ, itype, 2))
-            if a1[0] != _VAR:  # ground: one link at most
-                if best is not None:
-                    for inner in best:
-                        x = inner[1][1]
-                        if x is a1 or x == a1:
-                            return [{}]
-                return []
-            v, oj = a1, 1
+            if a1[0] != _VAR:  # ground
+                return [{}] if best is not None and a1 in best else []
+            v = a1
         if best is None:
             return []
-        return [{v: inner[1][oj]} for inner in best]
+        return [{v: x} for x in best]
     found: list[Bindings] = []
     if _pair_join(rel_get, [clause], _NO_BINDINGS, found):
         return found
@@ -434,8 +429,18 @@ def _pair_join(rel_get, clauses: list, b: Bindings, out: list[Bindings]) -> bool
                 bind = other
         else:
             want = other
-        for inner in best:
-            x = inner[1][oj]
+        if bind is not None and rest:
+            # one dict for every candidate: what is called next copies before keeping
+            nb = b.copy()
+            for x in best:
+                nb[bind] = x
+                if last2 is not None:
+                    if not _last2(rel_get, last2, nb, out):
+                        return False
+                elif not _pair_join(rel_get, rest, nb, out):
+                    return False
+            return True
+        for x in best:
             if bind is not None:
                 nb = b.copy()
                 nb[bind] = x
@@ -482,23 +487,20 @@ def _last2(rel_get, clause: tuple, b: Bindings, out: list[Bindings]) -> bool:  #
         s = rel_get((x0, 0, c, typ, itype, 2))
         if s is None:
             return True
-        if x1 is not None:  # both leaves known: one link at most
-            for inner in s:
-                x = inner[1][1]
-                if x is x1 or x == x1:
-                    out.append(b.copy())
-                    break
+        if x1 is not None:  # both leaves known
+            if x1 in s:
+                out.append(b.copy())
             return True
-        oj, bind = 1, a1
+        bind = a1
     elif x1 is not None:
         s = rel_get((x1, 1, c, typ, itype, 2))
         if s is None:
             return True
-        oj, bind = 0, a0
+        bind = a0
     else:
         return False
-    for inner in s:
+    for x in s:
         nb = b.copy()
-        nb[bind] = inner[1][oj]
+        nb[bind] = x
         out.append(nb)
     return True

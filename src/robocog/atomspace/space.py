@@ -28,6 +28,24 @@ from robocog.atomspace.values import DEFAULT_TV, TruthValue, Value
 _EMPTY: frozenset = frozenset()
 #: link types of which only one may exist per first atom (OpenCog's UniqueLink)
 _UNIQUE_KEYED = frozenset({"StateLink", "DefineLink"})
+#: link types that do something when added
+_ON_ADD = _UNIQUE_KEYED | {"DeleteLink"}
+
+
+def _refuse_held_deletes(out: tuple[Atom, ...]) -> None:
+    """Refuse (before anything is added) a link that holds a closed DeleteLink: the
+    DeleteLink can never be in a space, so neither can a link holding it."""
+    for x in out:
+        if x[0] == "DeleteLink" and x.__class__ is Link and is_closed(x):
+            raise ValueError(f"a link cannot hold a DeleteLink without variables: {x}")
+
+
+def is_closed(atom: Atom) -> bool:
+    """True if no VariableNode or GlobNode occurs in ``atom`` (OpenCog's is_closed)."""
+    if atom.__class__ is Node:
+        return atom[0] not in ("VariableNode", "GlobNode")
+    return all(is_closed(a) for a in atom[1])
+
 
 #: a grounded function: called with the space and the argument atoms
 GroundedFunction = Callable[..., Any]
@@ -60,10 +78,12 @@ def bulk() -> Iterator[None]:
             gc.enable()
 
 
-def _relation_keys(link: Atom) -> list[tuple]:
-    """The keys of ``link`` in the relation index, if it is a relation ``(R c (L
-    leaves...))`` (a node, then a link): one per leaf, ``(leaf, its position, c, R, L,
-    number of leaves)``; the index maps each key to the set of inner links ``(L ...)``."""
+def _relation_keys(link: Atom) -> list[tuple[tuple, Atom]]:
+    """The (key, member) entries of ``link`` in the relation index, if it is a relation
+    ``(R c (L leaves...))`` (a node, then a link): one per leaf, keyed ``(leaf, its
+    position, c, R, L, number of leaves)``. For two leaves the member is the other leaf
+    (the relation is then determined by the key and the member, and a query reads its
+    answer straight from the set); otherwise it is the inner link ``(L ...)``."""
     out = link[1]
     if len(out) != 2:
         return []
@@ -73,7 +93,10 @@ def _relation_keys(link: Atom) -> list[tuple]:
     typ = link[0]
     itype, leaves = inner
     m = len(leaves)
-    return [(y, j, c, typ, itype, m) for j, y in enumerate(leaves)]
+    if m == 2:
+        y0, y1 = leaves
+        return [((y0, 0, c, typ, itype, 2), y1), ((y1, 1, c, typ, itype, 2), y0)]
+    return [((y, j, c, typ, itype, m), inner) for j, y in enumerate(leaves)]
 
 
 class AtomSpace:
@@ -250,14 +273,23 @@ class AtomSpace:
         return len(self._type_set(full))
 
     # ------------------------------------------------------------------ adding
-    def add(self, atom: Atom, tv: TruthValue | None = None) -> Atom:
+    def add(self, atom: Atom, tv: TruthValue | None = None) -> Atom | None:
         """Add ``atom`` (and its outgoing atoms); return the canonical instance.
 
         As in OpenCog, a StateLink is unique per key (its first atom): adding one
-        replaces the key's previous state; a DefineLink may define its first atom once.
+        replaces the key's previous state; a DefineLink may define its first atom once;
+        and a DeleteLink without free variables is never added: the atoms it holds are
+        removed instead (recursively, as ``cog-extract-recursive!``) and None is
+        returned. A DeleteLink with variables (in a rule's rewrite) is an ordinary atom.
         """
-        if atom[0] in _UNIQUE_KEYED and atom.__class__ is Link and atom[1]:
-            self._unique_keyed(atom)
+        if atom[0] in _ON_ADD and atom.__class__ is Link and atom[1]:
+            if atom[0] == "DeleteLink":
+                if is_closed(atom):
+                    for a in atom[1]:
+                        self.remove(a, recursive=True)
+                    return None
+            else:
+                self._unique_keyed(atom)
         if (
             self._parent is None
             and self._owned_inc is None
@@ -276,7 +308,8 @@ class AtomSpace:
                 raise TypeError(f"not an atom: {atom!r}")
             if atom.__class__ is Link or isinstance(atom, Link):
                 out = atom[1]
-                new_out = tuple([self.add(x) for x in out])
+                _refuse_held_deletes(out)
+                new_out = tuple([self.add(x) for x in out])  # type: ignore[misc]
                 if any(a is not b for a, b in zip(new_out, out, strict=True)):
                     atom = tuple.__new__(Link, (atom[0], new_out))
             found = self._insert_canonical(atom)
@@ -302,6 +335,7 @@ class AtomSpace:
         cls = atom.__class__
         if cls is Link:
             out = atom[1]
+            _refuse_held_deletes(out)
             new = []
             changed = False
             for x in out:
@@ -326,12 +360,12 @@ class AtomSpace:
                     holds_link = True
             if holds_link:
                 rel = self._relations
-                for key in _relation_keys(atom):
+                for key, member in _relation_keys(atom):
                     s = rel.get(key)
                     if s is None:
-                        rel[key] = {new[1]}
+                        rel[key] = {member}
                     else:
-                        s.add(new[1])
+                        s.add(member)
         elif cls is Node:
             atoms[atom] = atom
         else:
@@ -371,8 +405,8 @@ class AtomSpace:
         if atom.__class__ is Link:
             for x in atom[1]:
                 self._inc_set_w(x).add(atom)
-            for key in _relation_keys(atom):
-                self._rel_set_w(key).add(atom[1][1])
+            for key, member in _relation_keys(atom):
+                self._rel_set_w(key).add(member)
         return atom
 
     def _inc_set_w(self, atom: Atom) -> set[Link]:
@@ -403,9 +437,12 @@ class AtomSpace:
             owned.add(key)
         return s
 
-    def relation(self, leaf: Atom, j: int, c: Atom, outer: str, inner: str, arity: int) -> set[Link]:
-        """The inner links ``(inner ...)`` of arity ``arity`` holding ``leaf`` at
-        position ``j`` of the relations ``(outer c (inner ...))`` in this space.
+    def relation(
+        self, leaf: Atom, j: int, c: Atom, outer: str, inner: str, arity: int
+    ) -> set[Link]:
+        """The relations ``(outer c (inner ...))`` in this space whose inner link has
+        ``arity`` atoms and ``leaf`` at position ``j``: for two leaves, the set of the
+        other leaves; otherwise the set of the inner links ``(inner ...)``.
 
         The index behind the matcher's fast path for the commonest clause,
         ``(EvaluationLink (PredicateNode "on") (ListLink B ?y))``: everything but the
@@ -464,12 +501,11 @@ class AtomSpace:
                         s.discard(atom)
                         if not s:
                             del self._incoming[x]
-                for key in _relation_keys(atom):
+                for key, member in _relation_keys(atom):
                     s = self._relations.get(key)
-                    inner = atom[1][1]
-                    if s is not None and inner in s:
+                    if s is not None and member in s:
                         s = self._rel_set_w(key)
-                        s.discard(inner)
+                        s.discard(member)
                         if not s:
                             del self._relations[key]
             self._incoming.pop(atom, None)

@@ -142,6 +142,9 @@ _BUILTIN: list[tuple[str, tuple[str, ...]]] = [
     ("QuoteLink", ("OrderedLink",)),
     ("UnquoteLink", ("OrderedLink",)),
     ("SequentialAndLink", ("OrderedLink",)),
+    # a link that may hold free variables; a closed DeleteLink removes what it holds
+    ("FreeLink", ("OrderedLink",)),
+    ("DeleteLink", ("FreeLink",)),
     # scoping / query links
     ("PatternLink", ("OrderedLink",)),
     ("GetLink", ("PatternLink",)),

@@ -252,8 +252,10 @@ class Agent:
 
     def set_percepts(self, percepts: Iterable[str | Literal]) -> None:
         """Replace all percepts at once (what the sensors report now)."""
+        if not percepts and not self._percepts and percepts.__class__ in (list, tuple):
+            return  # nothing perceived before or now
         new = dict.fromkeys(map(_bare, percepts))
-        if (new or self._percepts) and list(new) != list(self._percepts):
+        if list(new) != list(self._percepts):
             self._percepts = new
             self._percepts_dirty = True
 
@@ -625,13 +627,7 @@ class Agent:
             trail: list = []  # emptied after each plan that is not applicable
             for plan in cands:
                 bind = plan.bind
-                if bind == -2 and lit.__class__ is Literal and lit.ground:
-                    # a ground trigger without annotations against a ground event of
-                    # the same predicate: unification is equality of the arguments
-                    if plan.trigger.literal.args != lit.args:
-                        continue
-                    s = {}
-                elif bind >= 0 and simple:
+                if bind >= 0 and simple:
                     # the candidates have the event's arity: the parameters take its args
                     if bind == 1:
                         s: dict = {plan.params[0]: lit.args[0]}
@@ -639,6 +635,12 @@ class Agent:
                         s = {}
                     else:
                         s = dict(zip(plan.params, lit.args))  # noqa: B905
+                elif bind == -2 and simple and lit.ground:
+                    # a ground trigger without annotations against a ground event of
+                    # the same predicate: unification is equality of the arguments
+                    if plan.trigger.literal.args != lit.args:
+                        continue
+                    s = {}
                 else:
                     s = {}
                     if not unify(plan.trigger.literal, lit, s, trail):
@@ -996,7 +998,14 @@ class Agent:
                         # a goal without variables: the same trigger every time
                         trig = step.cache = P.Trigger("+", ACHIEVE, goal)
                     else:
-                        memo = _memo(step, goal, s)
+                        memo = step.memo  # reuse what _remember() kept, if the value is the same
+                        if memo:
+                            x = s.get(memo[0])
+                            while x.__class__ is Var:
+                                x = s.get(x)
+                            memo = memo[2] if x is memo[1] and x is not None else None
+                        else:
+                            memo = None
                         if memo is not None:
                             trig = memo
                         else:
@@ -1014,7 +1023,14 @@ class Agent:
                 else:
                     self.C.events.append(new_event(trig, i))
             elif k == ACTION:
-                lit = _memo(step, step.term, s)
+                lit = step.memo  # reuse what _remember() kept, if the value is the same
+                if lit:
+                    x = s.get(lit[0])
+                    while x.__class__ is Var:
+                        x = s.get(x)
+                    lit = lit[2] if x is lit[1] and x is not None else None
+                else:
+                    lit = None
                 if lit is None:
                     lit = resolve(step.term, s)
                     _remember(step, step.term, s, lit)
@@ -1354,23 +1370,10 @@ def _sourced(step: P.Step) -> Term:
     return got
 
 
-def _memo(step: P.Step, term: Term, s: dict) -> Any:
-    """What was built from ``term`` the last time its only variable had the value it
-    has now (the very same object), or None."""
-    memo = step.memo
-    if not memo:
-        return None
-    x = s.get(memo[0])
-    while x.__class__ is Var:
-        x = s.get(x)
-    if x is memo[1] and x is not None:
-        return memo[2]
-    return None
-
-
 def _remember(step: P.Step, term: Term, s: dict, built: Any) -> None:
-    """Keep ``built`` for :func:`_memo` when ``term`` (a literal without arithmetic) has
-    a single variable whose value is ground: the same value builds the same thing."""
+    """Keep ``built`` in ``step.memo`` when ``term`` (a literal without arithmetic) has a
+    single variable whose value is ground: while that variable has the very same value,
+    resolving ``term`` would build the same thing, so ``_execute`` reuses it."""
     memo = step.memo
     if memo is False:
         return

@@ -205,7 +205,10 @@ def compile_cond(f: Term) -> Callable[[Agent, dict, list], bool]:
         key = (f.functor, len(f.args), f.neg)
 
         def test_lit(agent: Agent, s: dict, trail: list) -> bool:
-            got = agent.bb.first(f, s, trail, key)
+            bb = agent.bb
+            if key not in bb._index:
+                return False  # nothing of that predicate (first would say so)
+            got = bb.first(f, s, trail, key)
             if got is not None:
                 return got
             for _ in solve(agent, f, s, trail):
@@ -260,8 +263,11 @@ def compile_cond(f: Term) -> Callable[[Agent, dict, list], bool]:
             key = (left.functor, len(left.args), left.neg)
 
             def test_and_lit(agent: Agent, s: dict, trail: list) -> bool:
+                bb = agent.bb
+                if key not in bb._index:
+                    return False  # nothing of that predicate (first_det would say so)
                 mark = len(trail)
-                got = agent.bb.first_det(left, s, trail, key)
+                got = bb.first_det(left, s, trail, key)
                 if got is False:
                     return False
                 if got is True:

@@ -210,7 +210,7 @@ class RobotBody:
     def execute(self, command: Command) -> Outcome:
         """Carry out one command on the robot; every command ends with an Outcome."""
         if self._halted is not None and not isinstance(command, Cancel):
-            return Outcome.cancelled(f"robot halted: {self._halted}")
+            return self._halted_outcome()
         match command:
             case Forward(distance):
                 speed = math.copysign(self.config.linear_speed, distance)
@@ -258,6 +258,10 @@ class RobotBody:
 
     # -- command helpers -------------------------------------------------------
 
+    def _halted_outcome(self) -> Outcome:
+        """How a command ends while the robot is halted: cancelled, with the reason."""
+        return Outcome.cancelled(f"robot halted: {self._halted}")
+
     def _move(self, linear: float, angular: float, seconds: float) -> Outcome:
         if seconds <= 0:
             return Outcome.success()  # nothing to drive: no velocity goes out
@@ -267,7 +271,7 @@ class RobotBody:
         try:
             while True:
                 if self._halted is not None:
-                    return Outcome.cancelled(f"robot halted: {self._halted}")
+                    return self._halted_outcome()
                 self.link.send_velocity(linear, angular)
                 left = end - time.monotonic()
                 if left <= 0:
@@ -294,7 +298,7 @@ class RobotBody:
                 if self._pose is not None and self._at(self._pose, x, y):
                     return Outcome.success()
                 if self._halted is not None:
-                    return Outcome.cancelled(f"robot halted: {self._halted}")
+                    return self._halted_outcome()
                 left = deadline - time.monotonic()
                 if left <= 0:
                     break
@@ -313,7 +317,7 @@ class RobotBody:
                 self.config.gripper_timeout,
             )
             if self._halted is not None:
-                return Outcome.cancelled(f"robot halted: {self._halted}")
+                return self._halted_outcome()
         if ok:
             return Outcome.success()
         return Outcome.failure(f"the gripper did not confirm {text!r}")

@@ -14,6 +14,7 @@ import logging
 import math
 import threading
 import time
+from collections import deque
 from collections.abc import Callable
 
 from robocog.bridges.body import RobotBody
@@ -44,7 +45,8 @@ class BridgeRunner:
         self.config = body.config
         self.stats = CycleStats()
         self.cycles = 0
-        self.events: list[tuple[float, str]] = []
+        #: the latest watchdog and failure events (bounded: a bridge may run for days)
+        self.events: deque[tuple[float, str]] = deque(maxlen=1000)
         self._stop = threading.Event()
         self._trip: str | None = None  # "percepts" | "mind" | None
         self._mind_since: float | None = None
@@ -129,8 +131,7 @@ class BridgeRunner:
                 return False
         end = time.perf_counter()
         self.cycles += 1
-        self.stats.reason.append(reasoned - start)
-        self.stats.cycle.append(end - start)
+        self.stats.record(reasoned - start, end - start)
         return True
 
     def _mind_failed(self, exc: BaseException) -> None:

@@ -452,7 +452,8 @@ def run_experiment(
     """Every mind on the same ``runs`` seeds; then, if ``rounds``, NARS's learning phase.
 
     ``budget`` (seconds of wall time) is shared out: each mind may start runs until its
-    share ends, and the learning phase gets the last share.
+    share (counted from its first run) ends, and the learning phase gets the last share.
+    A run that has started is finished, so a slow engine can overrun its share.
     """
     import time
 
@@ -461,16 +462,18 @@ def run_experiment(
     seeds = [seed * 1000 + i for i in range(runs)]
     shares = len(specs) + (1 if rounds > 0 else 0)
 
-    def deadline(k: int) -> float | None:
-        return None if budget is None else start + budget * (k + 1) / max(1, shares)
+    def deadline() -> float | None:
+        """An equal share of the budget, counted from now (a phase that overran its
+        share does not eat the next one's)."""
+        return None if budget is None else time.perf_counter() + budget / max(1, shares)
 
-    minds = {s.name: run_mind(s, config, seeds, advance, deadline(k)) for k, s in enumerate(specs)}
+    minds = {s.name: run_mind(s, config, seeds, advance, deadline()) for s in specs}
     accumulation = None
     learners = [s for s in specs if s.name in ("NARS", "ONA")]
     ready = [s for s in learners if minds[s.name].ok] or learners
     if rounds > 0 and ready:
         try:
-            accumulation = learn_accumulation(ready[0], config, seed, rounds, deadline(len(specs)))
+            accumulation = learn_accumulation(ready[0], config, seed, rounds, deadline())
         except Exception as exc:
             accumulation = Accumulation(
                 rounds, None, [], {}, [], unavailable=f"{type(exc).__name__}: {exc}"

@@ -171,16 +171,20 @@ def summarise(results: list[RunResult]) -> dict[str, Any]:
     n = len(results)
     counts = Counter(r.outcome for r in results)
     mistaken = [r for r in results if r.outcome == "opposite door mistaken"]
+
+    def per_run(total: float) -> float:
+        return total / n if n else 0.0
+
     return {
         "runs": n,
-        "success_rate": sum(r.left_room for r in results) / n if n else 0.0,
+        "success_rate": per_run(sum(r.left_room for r in results)),
         "outcomes": {o: counts.get(o, 0) for o in OUTCOMES},
-        "frequencies": {o: counts.get(o, 0) / n if n else 0.0 for o in OUTCOMES},
+        "frequencies": {o: per_run(counts.get(o, 0)) for o in OUTCOMES},
         "left_after_mistake": sum(r.left_room for r in mistaken),
         "mistaken_after_seeing_opposite_door": sum(r.opposite_looks > 0 for r in mistaken),
         "runs_seeing_opposite_door": sum(r.opposite_looks > 0 for r in results),
-        "mean_looks": sum(r.looks for r in results) / n if n else 0.0,
-        "mean_sim_seconds": sum(r.sim_seconds for r in results) / n if n else 0.0,
+        "mean_looks": per_run(sum(r.looks for r in results)),
+        "mean_sim_seconds": per_run(sum(r.sim_seconds for r in results)),
     }
 
 
@@ -216,6 +220,10 @@ def room_d_per_step(
     """Section 4's D measured on the room: the robot's position at each look of the door
     phase, over the runs that reached that look and the next one."""
     model = model or convergence.Model()
+
+    def sq(p: tuple[float, float]) -> float:
+        return (p[0] - target[0]) ** 2 + (p[1] - target[1]) ** 2
+
     out: list[RoomStep] = []
     longest = max((len(r.door_steps) for r in results), default=0)
     for i in range(longest - 1):
@@ -224,10 +232,6 @@ def room_d_per_step(
         ]
         if len(pairs) < min_runs:
             break
-
-        def sq(p: tuple[float, float]) -> float:
-            return (p[0] - target[0]) ** 2 + (p[1] - target[1]) ** 2
-
         before = sum(sq(a) for a, _ in pairs) / len(pairs)
         after = sum(sq(b) for _, b in pairs) / len(pairs)
         mean = sum(math.sqrt(sq(a)) for a, _ in pairs) / len(pairs)
@@ -287,6 +291,7 @@ def run(args: argparse.Namespace) -> int:
         sc: convergence.simulate(sc, particles=args.particles, seed=args.seed, steps=30)
         for sc in convergence.SCENARIOS
     }
+    conv_summaries = {sc: convergence.summary(records) for sc, records in conv.items()}
     summaries = {name: summarise(runs) for name, runs in results.items()}
     target = front_of_door(config)
     room_steps = {name: room_d_per_step(runs, target) for name, runs in results.items()}
@@ -299,7 +304,7 @@ def run(args: argparse.Namespace) -> int:
     for name, s in summaries.items():
         table.add_row(
             name,
-            *[f"{s['outcomes'][o]} ({s['frequencies'][o]:.0%})" for o in OUTCOMES],
+            *_outcome_cells(s),
             f"{s['success_rate']:.0%}",
         )
     console.print(table)
@@ -308,8 +313,7 @@ def run(args: argparse.Namespace) -> int:
     ctable = Table(title="Section 4: D after one step / D before, against alpha")
     for col in ("scenario", "alpha", "max ratio", "steps holding", "where it fails (mean |x|)"):
         ctable.add_column(col)
-    for sc, records in conv.items():
-        info = convergence.summary(records)
+    for sc, info in conv_summaries.items():
         where = ", ".join(f"{d:.2f}" for d in info["failing_distances"][:6]) or "-"  # type: ignore[index]
         ctable.add_row(
             sc,
@@ -342,7 +346,7 @@ def run(args: argparse.Namespace) -> int:
             "runs": args.runs,
             "minds": summaries,
             "unavailable": unavailable,
-            "convergence": {sc: convergence.summary(r) for sc, r in conv.items()},
+            "convergence": conv_summaries,
             "room_convergence": {
                 name: [asdict(st) | {"holds": st.holds} for st in steps]
                 for name, steps in room_steps.items()
@@ -474,6 +478,11 @@ def write_plots(
     return plots
 
 
+def _outcome_cells(summary: dict[str, Any]) -> list[str]:
+    """One mind's outcome counts with their frequencies, as the table and report show them."""
+    return [f"{summary['outcomes'][o]} ({summary['frequencies'][o]:.0%})" for o in OUTCOMES]
+
+
 def write_report(
     path: Path,
     args: argparse.Namespace,
@@ -495,7 +504,7 @@ def write_report(
         "|" + "---|" * (len(OUTCOMES) + 2),
     ]
     for name, s in summaries.items():
-        cells = [f"{s['outcomes'][o]} ({s['frequencies'][o]:.0%})" for o in OUTCOMES]
+        cells = _outcome_cells(s)
         lines.append(f"| {name} | " + " | ".join(cells) + f" | {s['success_rate']:.0%} |")
     for name, reason in unavailable.items():
         lines.append(f"\n`{name}` was not run: {reason}.")

@@ -13,11 +13,9 @@ reports the sighting under the answer as well (``<trash --> [see]>``), so the ca
 comes from the reasoner's own knowledge yet enters as an event it can learn from; a
 sighting it would only derive is soon crowded out of its attention. Once a kind has
 been reported, a frame without it says so (``<trash --> [see]>. :|: {0.0 0.9}``), so
-that being at a checkpoint where no trash is seen is evidence too. The place is told
-when the robot arrives (and when localisation reports a change), not again every
-second while it stays, as the paper's patrol reported each checkpoint on arrival: so
-each visit is one piece of evidence for ``<<({SELF} * {p3}) --> at> =/> <trash -->
-[see]>>``, its frequency the share of visits with trash in view.
+that being at a checkpoint where no trash is seen is evidence too. The place is
+told once a second, as Section IV's localisation channel does (``place_on_change``
+tells it on arrival only, so that each visit is one piece of evidence).
 
 The operator's knowledge of the checkpoints (Section V.C, step 4) enters as a goal:
 when ``patience`` frames have passed without an operation that succeeded (nothing
@@ -85,7 +83,7 @@ class NarsSettings:
     cycles_per_frame: int = 10  # thinking time per frame, also after an execution
     patience: int = 2  # frames without a successful operation before the route goal
     instances: bool = True
-    place_on_change: bool = True  # tell the place on arrival, not again while staying
+    place_on_change: bool = False  # True: tell the place on arrival only, not each second
     recall: bool = True  # ask what a seen label is; report the sighting under the answer
     max_detections: int = 3
     fov: float = DEFAULT_FOV

@@ -145,7 +145,7 @@ class PlannerMind:
     def decide(self) -> list[Command]:
         """Plan if needed, then return the next step's command."""
         record = self.current
-        if record is None or record.status not in ("planning", "executing"):
+        if record is None or not self.busy:
             return []
         if self.scene is None:
             try:

@@ -197,7 +197,6 @@ class QboActions:
         self.routine: Routine | None = None
         self.action: tuple[str, list[str]] | None = None
         self.failures: list[str] = []
-        self._pending: Command | None = None
         self._first = True
 
     @property
@@ -239,7 +238,6 @@ class QboActions:
         except StopIteration:
             self.routine = None
             return None
-        self._pending = command
         return command
 
     def on_outcome(self, command: Command, outcome: Outcome) -> None:
@@ -332,12 +330,11 @@ class ReachExitReference:
             return True
         frame.step = "check"  # @so1: decide_action, then recurse
         p = self.perception
+        name = "search_Qbo" if p.obstacle else "forward_Qbo"
         if p.target is not None:
-            name = "search_Qbo" if p.obstacle else "forward_Qbo"  # @da1 / @da2
-            direction = p.target[1]
+            direction = p.target[1]  # @da1 / @da2: toward the target seen
         else:
-            name = "search_Qbo" if p.obstacle else "forward_Qbo"  # @da3 / @da4
-            direction = self.expected
+            direction = self.expected  # @da3 / @da4: the expected direction
         self.log.append(f"{name}({direction})")
         self.actions.start(name, [direction], self.percepts)
         return True

@@ -34,7 +34,7 @@ class Config:
     #: events also revise their concept's eternal belief (ONA 0.9.2 does; off by default)
     eternalize_events: bool = False
     # temporal
-    max_sequence_len: int = 3
+    max_sequence_len: int = 2
     precondition_consequence_distance: int = 20
     max_sequence_timediff: int = 20
     # space
@@ -44,7 +44,7 @@ class Config:
     cycling_goal_events_layers: int = 30
     operations_max: int = 10
     stamp_size: int = 10
-    table_size: int = 120
+    table_size: int = 20
     occurrence_time_index_size: int = 512
     # truth
     truth_projection_decay: float = 0.8

@@ -10,6 +10,7 @@ learned one is already desired enough.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -17,7 +18,7 @@ from . import truth as tf
 from .event import BELIEF, GOAL, Event, Implication
 from .memory import EventQueue
 from .sensorimotor import executable, split_precondition
-from .stamp import fmt, merge, overlap
+from .stamp import fmt, merge
 from .terms import SEQUENCE, Term, atom, compound
 from .truth import Truth, expectation
 from .unify import apply, unify
@@ -76,6 +77,17 @@ def _numeric_similarity(general: Term, specific: Term, distance: float) -> float
     return sim
 
 
+def _self_operation(op: Term) -> bool:
+    """``^op`` or ``<({SELF} * args) --> ^op>``: only operations of this system run."""
+    if op.op is None:
+        return True
+    s = op.args[0]
+    first = s.args[0] if s.op == "*" else s
+    if first.op == "{}" and len(first.args) == 1:
+        first = first.args[0]
+    return first.name == "SELF"
+
+
 def _ground(t: Term) -> bool:
     return not t.has_indep_var and not t.has_dep_var and not t.has_query_var
 
@@ -91,12 +103,13 @@ class DecisionMixin:
         #: concepts that recently received a goal (newest last), for the negative-outcome veto
         self.recent_goal_concepts: dict[Concept, None] = {}
 
-    def _add_goal(self, g: Event, priority: float, layer: int) -> None:
+    def _add_goal(self, g: Event, priority: float, layer: int) -> bool:
+        """Queue ``g`` in goal layer ``layer`` unless an equal goal is queued anywhere."""
         layer = min(layer, len(self.goal_layers) - 1)
         for q in self.goal_layers:
             if q.contains(g):
-                return
-        self.goal_layers[layer].push(g, priority)
+                return False
+        return self.goal_layers[layer].push(g, priority)
 
     # ------------------------------------------------------------------ cycle
     def _process_goals(self) -> None:
@@ -115,9 +128,9 @@ class DecisionMixin:
     def _goal(self, g: Event, priority: float, layer: int) -> Decision | None:
         cfg = self.config  # type: ignore[attr-defined]
         now = self.time  # type: ignore[attr-defined]
-        gp = Event(g.term, GOAL, tf.projection(g.truth, g.occurrence_time, now), g.stamp, now, now)
+        gp = g  # ONA uses the selected goal as it is (its deductions happen "now")
         if g.term.op == SEQUENCE:
-            self._decompose_sequence(gp, priority, layer)
+            self._decompose_sequence(g.projected(now), priority, layer)
             return None
         if g.term.is_op and executable(g.term):
             if expectation(gp.truth) >= cfg.decision_threshold and _ground(g.term):
@@ -125,7 +138,8 @@ class DecisionMixin:
             return None
         mem = self.memory  # type: ignore[attr-defined]
         c = mem.conceptualize(g.term, now)
-        c.goal_spike = gp
+        if c.goal_spike is None or gp.occurrence_time > c.goal_spike.occurrence_time:
+            c.goal_spike = gp
         recent = self.recent_goal_concepts
         recent.pop(c, None)
         recent[c] = None
@@ -149,19 +163,23 @@ class DecisionMixin:
         comps.insert(0, t)
         truth = g.truth
         stamp = g.stamp
-        for comp in comps:
+        last_occ = -1
+        for i, comp in enumerate(comps):
             c = self.memory.find(comp)  # type: ignore[attr-defined]
             spike = c.belief_spike if c is not None else None
-            if spike is not None:
+            if spike is not None and spike.occurrence_time >= last_occ:
                 pt = tf.projection(spike.truth, spike.occurrence_time, now)
-                if expectation(pt) >= cfg.condition_threshold and not overlap(stamp, spike.stamp):
+                if expectation(pt) >= cfg.condition_threshold:
+                    if i == len(comps) - 1:
+                        return  # all fulfilled
                     truth = tf.goal_deduction(truth, pt)
                     stamp = merge(stamp, spike.stamp, cfg.stamp_size)
+                    last_occ = spike.occurrence_time
                     continue
-            if comp is comps[0]:
+            if i == 0:
                 truth = tf.structural_deduction(truth)
             sub = Event(comp, GOAL, truth, stamp, now, now)
-            self._add_goal(sub, priority * expectation(truth), layer + 1)
+            self._derive_goal(sub, priority * expectation(truth), layer)
             return
 
     def _preconditions(self, pre: Term) -> list[Event]:
@@ -227,15 +245,20 @@ class DecisionMixin:
         return best
 
     def _best_candidate(self, g: Event, c: Concept) -> Decision | None:
+        """Decision_BestCandidate: the most desired operation over the implications into
+        the goal whose precondition has a belief event; printed when above threshold."""
         cfg = self.config  # type: ignore[attr-defined]
         now = self.time  # type: ignore[attr-defined]
+        nops = len(self.op_names)  # type: ignore[attr-defined]
         best: Decision | None = None
+        best_cx = 10**9
+        vetoes: dict[Term, bool] = {}
         for post, bind in self._goal_concepts(g, c):
             tables = post.precondition_beliefs
             if tables is None:
                 continue
-            for opi in range(1, len(tables)):
-                for imp in tables[opi].items:
+            for opi in range(1, min(len(tables), nops + 1)):
+                for imp in list(tables[opi].items):
                     subj = apply(imp.term.args[0], bind) if bind else imp.term.args[0]
                     pre, op = split_precondition(subj)
                     if op is None:
@@ -244,26 +267,45 @@ class DecisionMixin:
                     for spike in self._preconditions(pre):
                         b2 = unify(pre, spike.term) or {}
                         op_g = apply(op, b2)
-                        if not _ground(op_g) or not executable(op_g):
+                        if not _ground(op_g) or not _self_operation(op_g):
                             continue
+                        base = apply(imp.term, bind) if bind else imp.term
+                        spec = apply(base, b2) if b2 else base
                         missing = None
                         if imp.term.has_var:
-                            spec = apply(apply(imp.term, bind), b2) if bind else apply(imp.term, b2)
-                            if _ground(spec):
-                                own = self._specific(spec, opi)
-                                if own is None:
-                                    missing = spec
-                                elif own.truth.c > 0.05 and own.truth.f < 0.5:
-                                    continue  # this instance is known not to work
+                            if not _ground(spec):
+                                continue
+                            own = self._specific(spec, opi)
+                            if own is not None and own.truth.c > 0.05 and own.truth.f < 0.5:
+                                continue  # this instance is known not to work
+                            if own is None:
+                                missing = spec
                         pt = tf.projection(spike.truth, spike.occurrence_time, now)
-                        dtruth = tf.goal_deduction(gd, pt)
-                        desire = expectation(dtruth)
-                        if (best is None or desire > best.desire) and not self._vetoed(
-                            c, op_g, opi, spike, pt, dtruth
+                        desire = expectation(tf.goal_deduction(gd, pt))
+                        ok = vetoes.get(op_g)
+                        if ok is None:  # the same for every candidate of this operation
+                            ok = vetoes[op_g] = self._outcomes_acceptable(op_g, opi)
+                        if not ok:
+                            desire = 0.0
+                        cx = spec.complexity
+                        if (
+                            best is None
+                            or desire > best.desire
+                            or (desire == best.desire and cx < best_cx)
                         ):
                             best = Decision(desire, op_g, imp, spike, missing_specific=missing)
-        if best is not None and best.desire < cfg.decision_threshold:
-            return best  # reported to babbling suppression; not executed
+                            best_cx = cx
+        if best is None or best.desire < cfg.decision_threshold:
+            return None
+        imp, pre = best.implication, best.precondition
+        if imp is not None and pre is not None:
+            self._print(  # type: ignore[attr-defined]
+                f"decision expectation={best.desire:f} implication: {imp.term}. "
+                f"Stamp={fmt(imp.stamp)} Truth: frequency={imp.truth.f:f} "
+                f"confidence={imp.truth.c:f} dt={imp.dt:f} precondition: {pre.term}. :|: "
+                f"Stamp={fmt(pre.stamp)} Truth: frequency={pre.truth.f:f} "
+                f"confidence={pre.truth.c:f} occurrenceTime={pre.occurrence_time}"
+            )
         return best
 
     def _specific(self, term: Term, opi: int) -> Implication | None:
@@ -276,63 +318,85 @@ class DecisionMixin:
                 return imp
         return None
 
-    def _vetoed(
-        self, c: Concept, op: Term, opi: int, spike: Event, pt: Truth, desire: Truth
-    ) -> bool:
-        """ConsiderNegativeOutcomes: another recent goal (e.g. one to avoid) for which
-        the same operation after the same condition is undesired vetoes it."""
+    def _outcomes_acceptable(self, op: Term, opi: int) -> bool:
+        """ConsiderNegativeOutcomes: over every recent goal (wanted or to avoid) and each
+        implication of the same operation whose precondition just happened, the desires
+        for the operation are revised (or the stronger chosen); an expectation below 0.5
+        vetoes the operation."""
         cfg = self.config  # type: ignore[attr-defined]
         now = self.time  # type: ignore[attr-defined]
+        mem = self.memory  # type: ignore[attr-defined]
+        acc: Event | None = None
         for gc in self.recent_goal_concepts:
             gs = gc.goal_spike
-            if gc is c or gs is None or now - gs.occurrence_time > cfg.neg_goal_age_max:
+            if gs is None or now - gs.occurrence_time >= cfg.neg_goal_age_max:
                 continue
             tables = gc.precondition_beliefs
             if tables is None or opi >= len(tables):
                 continue
             for imp in tables[opi].items:
-                pre, op2 = split_precondition(imp.term.args[0])
-                if op2 is None or unify(pre, spike.term) is None or unify(op2, op) is None:
+                prec = mem.find(imp.source) if imp.source is not None else None
+                spike = prec.belief_spike if prec is not None else None
+                if spike is None or now - spike.occurrence_time >= cfg.event_belief_distance:
                     continue
-                other = tf.goal_deduction(tf.goal_deduction(gs.truth, imp.truth), pt)
-                if expectation(tf.revision(desire, other)) < 0.5:
-                    return True
-        return False
+                pre, op2 = split_precondition(imp.term.args[0])
+                if op2 is not op:
+                    continue
+                ctx = tf.goal_deduction(gs.truth, imp.truth)
+                local = tf.goal_deduction(
+                    ctx, tf.projection(spike.truth, spike.occurrence_time, now)
+                )
+                stamp = merge(
+                    spike.stamp, merge(gs.stamp, imp.stamp, cfg.stamp_size), cfg.stamp_size
+                )
+                ev = Event(pre, GOAL, local, stamp, now, now)
+                acc, _ = self._revision_and_choice(acc, ev)  # type: ignore[attr-defined]
+        return acc is None or expectation(acc.truth) >= 0.5
 
     def _subgoals(self, g: Event, c: Concept, priority: float, layer: int) -> None:
+        """Pass the goal on: each concept it matches revises its goal event, and every
+        implication into it derives its precondition (without the operation) as a
+        subgoal one layer down, goal ⊗ implication, priority ``priority`` × E."""
         cfg = self.config  # type: ignore[attr-defined]
         now = self.time  # type: ignore[attr-defined]
         for post, bind in self._goal_concepts(g, c):
+            if post is not c and not bind and not post.term.has_var:
+                continue  # an instance of a general goal: ONA passes the goal upward only
+            ge = g
+            if bind:
+                ge = Event(apply(g.term, bind), GOAL, g.truth, g.stamp, g.occurrence_time, now)
+            gs, _ = self._revision_and_choice(post.goal_spike, ge)  # type: ignore[attr-defined]
+            post.goal_spike = gs
             tables = post.precondition_beliefs
             if tables is None:
                 continue
             for opi in range(len(tables)):
-                for imp in tables[opi].items:
-                    if overlap(imp.stamp, g.stamp):
+                for imp in list(tables[opi].items):
+                    b2 = unify(imp.term.args[1], gs.term)
+                    if b2 is None:
                         continue
-                    subj = apply(imp.term.args[0], bind) if bind else imp.term.args[0]
+                    subj = apply(imp.term.args[0], b2) if b2 else imp.term.args[0]
                     pre, _op = split_precondition(subj)
-                    if not _ground(pre) and pre.has_indep_var:
-                        continue
-                    t = tf.goal_deduction(g.truth, imp.truth)
-                    if t.c < cfg.min_confidence:
-                        continue
-                    sub = Event(pre, GOAL, t, merge(g.stamp, imp.stamp, cfg.stamp_size), now, now)
-                    self._add_goal(sub, priority * expectation(t), layer + 1)
+                    t = tf.goal_deduction(gs.truth, imp.truth)
+                    sub = Event(pre, GOAL, t, merge(gs.stamp, imp.stamp, cfg.stamp_size), now, now)
+                    self._derive_goal(sub, priority * expectation(t), layer)
+
+    def _derive_goal(self, g: Event, priority: float, layer: int) -> None:
+        """Memory_AddEvent for a derived goal: complexity penalty, confidence floor, no
+        duplicates; printed when it is queued."""
+        priority *= 1.0 / math.log2(1.0 + g.term.complexity)
+        if g.truth.c < self.config.min_confidence or priority <= 0.0:  # type: ignore[attr-defined]
+            return
+        c = self.memory.find(g.term)  # type: ignore[attr-defined]
+        if c is not None and c.goal_spike is not None and c.goal_spike.same(g):
+            return
+        if self._add_goal(g, priority, layer + 1) and self._shows(priority):  # type: ignore[attr-defined]
+            self._print("Derived: " + g.line(priority))  # type: ignore[attr-defined]
 
     # -------------------------------------------------------------- execution
     def _execute(self, d: Decision) -> None:
         for q in self.goal_layers:
             q.clear()
-        if d.implication is not None and d.precondition is not None:
-            imp, pre = d.implication, d.precondition
-            self._print(  # type: ignore[attr-defined]
-                f"decision expectation={d.desire:f} implication: {imp.term}. "
-                f"Stamp={fmt(imp.stamp)} Truth: frequency={imp.truth.f:f} "
-                f"confidence={imp.truth.c:f} dt={imp.dt:f} precondition: {pre.term}. :|: "
-                f"Stamp={fmt(pre.stamp)} Truth: frequency={pre.truth.f:f} "
-                f"confidence={pre.truth.c:f} occurrenceTime={pre.occurrence_time}"
-            )
         op = d.op
         if op.op is None:
             name, arg, shown = op.name, None, ""
@@ -360,10 +424,11 @@ class DecisionMixin:
         if d.missing_specific is not None and d.precondition is not None:
             # assume failure of the untried specialization until its outcome shows up
             cfg = self.config  # type: ignore[attr-defined]
-            neg = tf.eternalize(
-                tf.induction(Truth(0.0, cfg.anticipation_confidence), d.precondition.truth)
-            )
             general = d.implication
+            past = tf.projection(
+                d.precondition.truth, 0, round(general.dt) if general is not None else 0
+            )
+            neg = tf.eternalize(tf.induction(Truth(0.0, cfg.anticipation_confidence), past))
             self._add_implication(  # type: ignore[attr-defined]
                 d.missing_specific,
                 neg,

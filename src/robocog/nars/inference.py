@@ -46,7 +46,16 @@ class Derivation:
 
     def emit(self, term: Term, t: Truth, var_intro: bool = False) -> None:
         """Hand one conclusion to memory, introducing variables where the rule asks."""
-        if var_intro and term.op in (IMPLICATION, EQUIVALENCE, TEMPORAL_IMPLICATION):
+        if not var_intro:  # the common case, without a further call
+            self.nar._derived(
+                term,
+                t,
+                self.stamp,
+                self.occurrence,
+                self.concept_priority * self.parent_priority * (t.c * (t.f - 0.5) + 0.5),
+            )
+            return
+        if term.op in (IMPLICATION, EQUIVALENCE, TEMPORAL_IMPLICATION):
             for ext in (True, False):
                 v = introduce_implication_variables(term, ext)
                 if v is not None and v is not term and not hol_component_invalid(v):
@@ -54,7 +63,7 @@ class Derivation:
                         continue
                     self._derive(v, t)
             return
-        if var_intro and term.op == CONJUNCTION:
+        if term.op == CONJUNCTION:
             for ext in (True, False):
                 v = introduce_conjunction_variables(term, ext)
                 if v is not None and v is not term and not hol_component_invalid(v):

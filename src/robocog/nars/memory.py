@@ -52,7 +52,7 @@ class Concept:
         self.implication_links: Table | None = None
         self.priority = 0.0
         self.priority_time = 0  # when ``priority`` was set (decay is applied lazily)
-        self.selected_time = -(10**9)  # when an event of this concept was last selected
+        self.selected_time = 0  # when an event of this concept was last selected (ONA: 0)
         self.process_id = 0
 
     def use(self, now: int, eternal_input: bool, boost: int) -> None:
@@ -166,11 +166,18 @@ class Memory:
         self.evictions = 0
         #: called with each concept that leaves, so owners of other indexes can clean up
         self.on_remove: Callable[[Concept], None] | None = None
+        # ``find`` is the dict's own ``get`` (called millions of times per run)
+        self.find = self.concepts.get  # type: ignore[method-assign]
 
     def __getstate__(self) -> dict[str, object]:
         state = dict(self.__dict__)
         state["on_remove"] = None  # re-attached by the owner after loading
+        state.pop("find", None)
         return state
+
+    def __setstate__(self, state: dict[str, object]) -> None:
+        self.__dict__.update(state)
+        self.find = self.concepts.get  # type: ignore[method-assign]
 
     def __len__(self) -> int:
         return len(self.concepts)
@@ -198,13 +205,14 @@ class Memory:
 
     def _evict(self, now: int) -> None:
         batch = max(1, self.capacity // 16)
-
-        def key(c: Concept) -> float:
-            u = c.use_count / (now - c.last_used + 1)
-            return u / (u + 1.0)
-
-        for c in heapq.nsmallest(batch, self.concepts.values(), key=key):
-            self.remove(c)
+        # usefulness u/(u+1) of every concept, computed in one comprehension; the
+        # selection then keys on list positions (a C-level getter), and ties fall to the
+        # older concept exactly as a per-concept key function would
+        now1 = now + 1
+        cs = list(self.concepts.values())
+        keys = [u / (u + 1.0) for u in [c.use_count / (now1 - c.last_used) for c in cs]]
+        for i in heapq.nsmallest(batch, range(len(cs)), key=keys.__getitem__):
+            self.remove(cs[i])
             self.evictions += 1
 
     def remove(self, c: Concept) -> None:

@@ -419,6 +419,12 @@ class NAR(SensorimotorMixin, DecisionMixin):
     def _derived(
         self, term: Term, t: Truth, stamp: tuple[int, ...], occurrence: int, priority: float
     ) -> None:
+        if (
+            term.flags & F_COMPOSED
+            and (len(stamp) > 1 or occurrence != ETERNAL)
+            and term not in self.memory.concepts
+        ):
+            return  # what ``_add_event`` would decide, before the costlier filters
         if rejected(term):
             return
         if term.op in ("==>", "<=>") and not term.has_indep_var:
@@ -449,8 +455,6 @@ class NAR(SensorimotorMixin, DecisionMixin):
                 if sc is not None:
                     sc.selected_time = self.time
                 self._process_belief_event(e, priority)
-                if e.is_input:
-                    self._anticipate(e)
         self._forward_links()
         self._process_goals()
         if popped is not None:

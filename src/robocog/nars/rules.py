@@ -29,6 +29,7 @@ from .terms import (
     atom,
     compound,
     names_repeat,
+    substitute,
 )
 from .truth import Truth
 
@@ -250,6 +251,10 @@ def make(op: str, args: tuple[Term, ...]) -> Term:
     return compound(op, args)
 
 
+#: connectors whose terms ``make`` may reduce; every other one is a plain ``compound``
+_REDUCED_OPS = frozenset({"&", "|", CONJUNCTION, DISJUNCTION, EXT_SET, INT_SET})
+
+
 def build(p: Term, b: dict[Term, Term]) -> Term:
     """Instantiate conclusion pattern ``p`` with bindings ``b`` (reducing as it goes)."""
     if p.op is None:
@@ -279,7 +284,7 @@ def _compile(rule: Rule) -> Callable[..., None]:
     """Generate a straight-line matcher for ``rule`` (no recursion, no dict of bindings)."""
     lines: list[str] = []
     bound: set[str] = set()
-    consts: dict[str, object] = {"make": make, "truth": rule.truth}
+    consts: dict[str, object] = {"make": make, "compound": compound, "truth": rule.truth}
     counter = [0]
 
     def gen(p: Term, expr: str) -> None:
@@ -313,7 +318,9 @@ def _compile(rule: Rule) -> Callable[..., None]:
         inner = ", ".join(build_expr(a) for a in p.args)
         if len(p.args) == 1:
             inner += ","
-        return f"make({p.op!r}, ({inner}))"
+        if p.op in _REDUCED_OPS:
+            return f"make({p.op!r}, ({inner}))"
+        return f"compound({p.op!r}, ({inner}))"  # ``make`` would only forward it
 
     gen(rule.p1, "t1")
     if rule.p2 is not None:
@@ -477,6 +484,19 @@ def _count_hol(t: Term, counts: dict[Term, int], extensional: bool) -> None:
     _count_statement_atoms(t, counts, extensional, False, op == INT_SET)
 
 
+def _hol_counts(t: Term, extensional: bool) -> dict[Term, int]:
+    """``_count_hol`` of one implication side, kept on the term (callers must not mutate)."""
+    got = t.hol
+    if got is None:
+        got = t.hol = [None, None]
+    i = 1 if extensional else 0
+    counts = got[i]
+    if counts is None:
+        counts = got[i] = {}
+        _count_hol(t, counts, extensional)
+    return counts
+
+
 def _first_free(t: Term, prefix: str) -> int:
     if not t.has_var:
         return 1
@@ -487,13 +507,16 @@ def _first_free(t: Term, prefix: str) -> int:
     return i
 
 
+#: ``$1``..``$9`` and ``#1``..``#9`` (index 0 unused), held here so they stay interned
+_IND_VARS = (None, *(atom(f"${i}") for i in range(1, 10)))
+_DEP_VARS = (None, *(atom(f"#{i}") for i in range(1, 10)))
+
+
 def introduce_implication_variables(t: Term, extensional: bool) -> Term | None:
     """ONA's variable introduction for ``==>``/``<=>``/``=/>`` conclusions."""
     left, right = t.args
-    cl: dict[Term, int] = {}
-    cr: dict[Term, int] = {}
-    _count_hol(left, cl, extensional)
-    _count_hol(right, cr, extensional)
+    cl = _hol_counts(left, extensional)
+    cr = _hol_counts(right, extensional)
     if not any(v >= 2 or a in cr for a, v in cl.items()) and not any(v >= 2 for v in cr.values()):
         return None  # no name to abstract
     dep = _first_free(t, "#")
@@ -508,36 +531,37 @@ def introduce_implication_variables(t: Term, extensional: bool) -> Term | None:
             if vl and vr:
                 if ind > 9:
                     continue
-                mapping[a] = atom(f"${ind}")
+                mapping[a] = _IND_VARS[ind]
                 ind += 1
             else:
                 if dep > 9:
                     continue
-                mapping[a] = atom(f"#{dep}")
+                mapping[a] = _DEP_VARS[dep]
                 dep += 1
     if not mapping:
         return None
-    from .terms import substitute
-
     return substitute(t, mapping)
 
 
 def introduce_conjunction_variables(t: Term, extensional: bool) -> Term | None:
     """ONA's dependent-variable introduction for ``&&`` conclusions."""
-    counts: dict[Term, int] = {}
-    _count_hol(t, counts, extensional)
+    if t.op == CONJUNCTION:  # the counts of ``&&`` are those of its sides, added
+        counts = dict(_hol_counts(t.args[0], extensional))
+        for a, v in _hol_counts(t.args[1], extensional).items():
+            counts[a] = counts.get(a, 0) + v
+    else:
+        counts = {}
+        _count_hol(t, counts, extensional)
     dep = _first_free(t, "#")
     mapping: dict[Term, Term] = {}
     for a in t.level_order_atoms():
         if a in mapping:
             continue
         if counts.get(a, 0) >= 2 and dep <= 9:
-            mapping[a] = atom(f"#{dep}")
+            mapping[a] = _DEP_VARS[dep]
             dep += 1
     if not mapping:
         return None
-    from .terms import substitute
-
     return substitute(t, mapping)
 
 
@@ -617,6 +641,8 @@ def hol_component_invalid(t: Term) -> bool:
             s, p = c.args
             if s is p or (s.is_var and p.is_var):
                 return True
+            if (s.op is None and not s.is_var) or (p.op is None and not p.is_var):
+                continue  # a plain name on either side: not variables only
             if not any(not a.is_var for a in c.atoms()):
                 return True
     return False
@@ -631,12 +657,30 @@ def rejected(t: Term) -> bool:
 
 
 def _rejected(t: Term) -> bool:
-    return (
-        atom_appears_twice(t)
-        or nested_hol_statement(t)
-        or inh_or_sim_has_dep_var(t)
-        or junction_not_right_nested(t)
-        or invalid_set_op(t)
-        or dep_var_appears_once(t)
-        or conjunction_starts_with_operation(t)
-    )
+    """The filters above in one pass (all pure, so the O(1) checks go first)."""
+    if t.n_imp >= 2 or t.n_temp > 2 or t.flags & F_JUNCTION_RIGHT_NESTED:
+        return True  # nested_hol_statement, junction_not_right_nested
+    op = t.op
+    if op == INHERITANCE or op == SIMILARITY:
+        if t.has_dep_var:
+            return True  # inh_or_sim_has_dep_var
+        s, p = t.args
+        if op == INHERITANCE and (
+            (s.op == "&" and s.args[0].op == EXT_SET and s.args[1].op == EXT_SET)
+            or (p.op == "|" and p.args[0].op == INT_SET and p.args[1].op == INT_SET)
+        ):
+            return True  # invalid_set_op
+        if s.op is None and p.op is None:
+            if s is p and not s.is_var:
+                return True  # atom_appears_twice on ``<a --> a>``
+        elif not (
+            s.op == "*" and len(s.args) == 2 and s.args[0].op == "*" and s.args[1].op == "*"
+        ) and names_repeat(t):
+            return True  # atom_appears_twice
+        return False  # no dependent variable: dep_var_appears_once cannot hold
+    if op == IMPLICATION or op == EQUIVALENCE:
+        if t.args[0] is t.args[1]:
+            return True  # atom_appears_twice
+        if conjunction_starts_with_operation(t):
+            return True
+    return dep_var_appears_once(t)

@@ -243,7 +243,12 @@ class SensorimotorMixin:
         idx.appendleft(c)
 
     def _process_belief_event(self, e: Event, priority: float) -> None:
-        """ONA's sensorimotor processing of a selected belief event."""
+        """ONA's sensorimotor processing of a selected belief event (Cycle.c, 0.9.2).
+
+        Concepts are visited newest first in the occurrence-time index; a sequence made
+        on the way takes effect at once (its concept's event is replaced before later
+        concepts are visited), as in ONA.
+        """
         cfg = self.config  # type: ignore[attr-defined]
         now = self.time  # type: ignore[attr-defined]
         if e.occurrence_time == ETERNAL or e.processed:
@@ -252,81 +257,73 @@ class SensorimotorMixin:
             return
         e.processed = True
         window = cfg.precondition_consequence_distance
-        if not e.term.is_op:
+        occ = e.occurrence_time
+        e_is_op = e.term.is_op
+        if not e_is_op:
             # procedural: <(pre &/ op) =/> e> for an op between pre and e
-            recent = [
-                c
-                for c in self.time_index
-                if c.belief_spike is not None
-                and abs(c.belief_spike.occurrence_time - e.occurrence_time) < window
-            ]
-            for opc in recent:
+            snapshot = list(self.time_index)
+            for opc in snapshot:
                 op_ev = opc.belief_spike
-                if op_ev is None or not opc.term.is_op:
-                    continue
-                if not (0 <= e.occurrence_time - op_ev.occurrence_time < window):
-                    continue
                 if (
-                    op_ev.occurrence_time >= e.occurrence_time
-                    and op_ev.occurrence_time != e.occurrence_time
+                    op_ev is None
+                    or not opc.term.is_op
+                    or op_ev.creation_time >= now
+                    or op_ev.occurrence_time >= occ
+                    or abs(op_ev.occurrence_time - occ) >= window
+                    or abs(opc.selected_time - occ) >= window
                 ):
                     continue
-                if overlap(op_ev.stamp, e.stamp):
-                    continue
-                for pc in recent:
+                for pc in snapshot:
                     pre = pc.belief_spike
-                    if pre is None or pc.term.is_op or pc is opc:
-                        continue
-                    if pre.occurrence_time > op_ev.occurrence_time:
-                        continue
-                    if op_ev.occurrence_time - pre.occurrence_time >= window:
-                        continue
-                    if pc.term is e.term:
-                        continue
-                    if overlap(pre.stamp, e.stamp) or overlap(pre.stamp, op_ev.stamp):
+                    if (
+                        pre is None
+                        or pc.term.is_op
+                        or pre.creation_time >= now
+                        or pre.occurrence_time >= op_ev.occurrence_time
+                        or abs(pre.occurrence_time - occ) >= window
+                        or abs(pc.selected_time - occ) >= window
+                        or pc.term.op in ("==>", "<=>")
+                        or pc.term is e.term
+                        or overlap(pre.stamp, e.stamp)
+                    ):
                         continue
                     self._induce(pre, op_ev, e, priority)
         # temporal: <c =/> e> for recent non-op events, and the sequence (c &/ e)
-        sequences: list[Event] = []
+        tdiff = cfg.max_sequence_timediff
         for c in list(self.time_index):
             b = c.belief_spike
-            if b is None or c.term is e.term or c.term.is_op or e.term.is_op:
+            if (
+                b is None
+                or b.creation_time > now
+                or abs(b.occurrence_time - occ) > tdiff
+                or abs(c.selected_time - occ) > tdiff
+                or b.occurrence_time > occ
+                or c.term.op in ("==>", "<=>")
+                or c.term.is_op
+                or e_is_op
+                or overlap(b.stamp, e.stamp)
+            ):
                 continue
-            d = e.occurrence_time - b.occurrence_time
-            if not (0 <= d < window):
+            t = tf.intersection(tf.projection(b.truth, b.occurrence_time, occ), e.truth)
+            if t.c < cfg.min_confidence:
                 continue
-            if overlap(b.stamp, e.stamp):
-                continue
-            if d > 0:
+            if c.term is not e.term:
                 self._induce(b, None, e, priority)
+                if b.occurrence_time == occ:
+                    self._induce(e, None, b, priority)
             if _sequence_length(c.term) + 1 <= cfg.max_sequence_len and not _has_op(c.term):
                 seq = compound(SEQUENCE, (c.term, e.term))
-                t = tf.intersection(
-                    tf.projection(b.truth, b.occurrence_time, e.occurrence_time), e.truth
-                )
-                sequences.append(
-                    Event(
-                        seq,
-                        BELIEF,
-                        t,
-                        merge(b.stamp, e.stamp, cfg.stamp_size),
-                        e.occurrence_time,
-                        now,
-                    )
-                )
-        for se in sequences:
-            self._activate_sequence(se)
+                stamp = merge(b.stamp, e.stamp, cfg.stamp_size)
+                self._activate_sequence(Event(seq, BELIEF, t, stamp, occ, now))
+        if priority >= 1.0:  # fresh input: assume failure of what it promises
+            self._anticipate(e)
 
     def _activate_sequence(self, se: Event) -> None:
         """A sequence that just happened: its concept gets the event, it is not queued."""
         mem = self.memory  # type: ignore[attr-defined]
         c = mem.conceptualize(se.term, self.time)  # type: ignore[attr-defined]
         old = c.belief_spike
-        if (
-            old is None
-            or old.occurrence_time < se.occurrence_time
-            or (old.occurrence_time == se.occurrence_time and se.truth.c > old.truth.c)
-        ):
+        if old is None or old.occurrence_time < se.occurrence_time:
             c.belief_spike = se
         c.selected_time = self.time  # type: ignore[attr-defined]
         self._note_event(c)
@@ -363,54 +360,107 @@ class SensorimotorMixin:
 
     # ------------------------------------------------------------ anticipation
     def _anticipate(self, e: Event) -> None:
-        """Predict what implications of the just-happened event promise, and count a
-        failure against each such implication until the outcome actually arrives."""
+        """Assumption of failure (ONA 0.9.2's Decision_Anticipate).
+
+        For every implication in the table of the event's operation (table 0 for a plain
+        event) whose precondition concept has a belief event, the outcome is predicted
+        from that event projected to now in sequence with the operation; if the
+        prediction is expected, one piece of negative evidence is counted against the
+        implication, which the outcome, if it arrives, outweighs by induction. The age of
+        the precondition is not checked: projection makes old ones too weak to count.
+        """
         cfg = self.config  # type: ignore[attr-defined]
         now = self.time  # type: ignore[attr-defined]
         opi = self.op_id(e.term) if e.term.is_op else 0
-        targets = self.table_index.get(opi) if opi else self.pre_index.get((e.term, 0))
+        targets = self.table_index.get(opi)
         if not targets:
             return
         mem = self.memory  # type: ignore[attr-defined]
+        op_truth = Truth(1.0, 0.9)
         for post in list(targets):
             if mem.find(post.term) is not post:
                 targets.pop(post, None)
                 continue
             for imp in list(self.implications_for(post, opi)):
-                pre_term = imp.source
-                if pre_term is None:
+                if imp.source is None:
                     continue
-                subj = imp.term.args[0]
-                bindings: dict[Term, Term] | None = {}
+                spike = self._source_spike(imp.source)
+                if spike is None:
+                    continue
                 if opi:
-                    op_term = subj.args[1]
-                    bindings = unify(op_term, e.term)
-                    if bindings is None:
+                    pre_term, op_term = split_precondition(imp.term.args[0])
+                    subs = unify(pre_term, spike.term)
+                    if subs is None or op_term is None:
                         continue
-                    pre_term = apply(subj.args[0], bindings)
-                elif pre_term is not e.term:
-                    continue
-                pre_c = mem.find(pre_term)
-                if pre_c is None or pre_c.belief_spike is None:
-                    continue
-                spike = pre_c.belief_spike
-                if now - spike.occurrence_time > cfg.precondition_consequence_distance:
-                    continue
+                    if unify(apply(op_term, subs), e.term) is None:
+                        continue  # same operation, other arguments
                 pre_t = tf.projection(spike.truth, spike.occurrence_time, now)
-                predicted = tf.deduction(imp.truth, pre_t)
+                predicted = tf.deduction(imp.truth, tf.intersection(pre_t, op_truth))
                 if expectation(predicted) <= cfg.anticipation_threshold and not (
                     predicted.c < 0.05 and predicted.f == 0.0
                 ):
                     continue
-                neg = tf.eternalize(
-                    tf.induction(Truth(0.0, cfg.anticipation_confidence), spike.truth)
-                )
-                post.tables(cfg.operations_max, cfg.table_size)[opi].add_and_revise(
-                    Implication(imp.term, neg, (), imp.dt, now, imp.source), cfg.stamp_size
-                )
+                self._add_negative_evidence(post, opi, imp, spike.truth)
+                bind = unify(imp.source, spike.term)
+                if bind is None:
+                    continue
+                outcome = apply(imp.term.args[1], bind) if bind else imp.term.args[1]
+                if outcome.has_var or overlap(spike.stamp, imp.stamp):
+                    continue
+                oc = mem.conceptualize(outcome, now)
+                oc.use(now, False, cfg.eternal_input_usage_boost)
                 occ = now + round(imp.dt)
-                outcome = apply(imp.term.args[1], bindings) if bindings else imp.term.args[1]
-                pred = Event(outcome, BELIEF, predicted, merge(spike.stamp, imp.stamp), occ, now)
-                oc = mem.find(outcome)
-                if oc is not None and occ > now:
-                    oc.predicted_belief = pred
+                pred = Event(
+                    outcome,
+                    BELIEF,
+                    predicted,
+                    merge(spike.stamp, imp.stamp, cfg.stamp_size),
+                    occ,
+                    now,
+                )
+                if imp.dt > 0.0:
+                    old = oc.predicted_belief
+                    oc.predicted_belief, _ = self._revision_and_choice(old, pred)  # type: ignore[attr-defined]
+                    self._show_prediction(old, oc.predicted_belief)
+                elif oc.belief_spike is None or occ > oc.belief_spike.occurrence_time:
+                    old = oc.belief_spike
+                    oc.belief_spike, _ = self._revision_and_choice(old, pred)  # type: ignore[attr-defined]
+                    self._show_prediction(old, oc.belief_spike)
+
+    def _source_spike(self, source: Term) -> Event | None:
+        """The belief event of a precondition concept; a concept with variables holds
+        the newest event that instantiates it (ONA activates such concepts too)."""
+        c = self.memory.find(source)  # type: ignore[attr-defined]
+        best = c.belief_spike if c is not None else None
+        if source.has_var:
+            for c2 in self.time_index:
+                b = c2.belief_spike
+                if b is None or c2.term.has_var or unify(source, c2.term) is None:
+                    continue
+                if best is None or b.occurrence_time > best.occurrence_time:
+                    best = b
+                break
+        return best
+
+    def _show_prediction(self, old: Event | None, new: Event) -> None:
+        """Print a changed prediction as ONA does (a derived event of priority 1)."""
+        if (
+            old is not None
+            and old.truth == new.truth
+            and old.occurrence_time == new.occurrence_time
+        ):
+            return
+        if self._shows(1.0):  # type: ignore[attr-defined]
+            self._print("Derived: " + new.line(1.0))  # type: ignore[attr-defined]
+
+    def _add_negative_evidence(
+        self, post: Concept, opi: int, imp: Implication, pre_truth: Truth
+    ) -> None:
+        """One failure of ``imp``: induction from a {0, anticipation_confidence} outcome
+        and the precondition projected over the implication's time offset."""
+        cfg = self.config  # type: ignore[attr-defined]
+        past = tf.projection(pre_truth, 0, round(imp.dt))
+        neg = tf.eternalize(tf.induction(Truth(0.0, cfg.anticipation_confidence), past))
+        post.tables(cfg.operations_max, cfg.table_size)[opi].add_and_revise(
+            Implication(imp.term, neg, (), imp.dt, imp.creation_time, imp.source), cfg.stamp_size
+        )

@@ -14,24 +14,17 @@ Stamp = tuple[int, ...]
 
 def merge(a: Stamp, b: Stamp, size: int = STAMP_SIZE) -> Stamp:
     """Interleave a0, b0, a1, b1, ... and keep the first ``size`` ids (ONA's zip)."""
-    out: list[int] = []
-    la, lb = len(a), len(b)
-    for i in range(max(la, lb)):
-        if i < la:
-            out.append(a[i])
-        if i < lb:
-            out.append(b[i])
-        if len(out) >= size:
-            break
+    n = min(len(a), len(b))
+    out = [0] * (2 * n)
+    out[0::2] = a[:n]
+    out[1::2] = b[:n]
+    out += a[n:] or b[n:]  # the longer stamp's tail follows the interleaved part
     return tuple(out[:size])
 
 
 def overlap(a: Stamp, b: Stamp) -> bool:
     """True if the two bases share evidence."""
-    if len(a) < len(b):
-        a, b = b, a
-    sb = set(b)
-    return any(x in sb for x in a)
+    return not set(a).isdisjoint(b)
 
 
 def has_duplicate(a: Stamp) -> bool:

@@ -60,6 +60,7 @@ class Term:
         "n_imp",
         "n_temp",
         "_names",
+        "hol",
     )
 
     op: str | None
@@ -129,22 +130,46 @@ class Term:
             return () if self.is_var else (self,)  # not cached: no self-reference for atoms
         got = self._names
         if got is None:
-            got = self._names = tuple(
-                dict.fromkeys(a for a in self.level_order_atoms() if not a.is_var)
-            )
+            args = self.args
+            if len(args) == 2 and args[0].op is None and args[1].op is None:
+                a, b = args  # ``<a --> b>``: the most common shape, no walk needed
+                if a.is_var:
+                    got = () if b.is_var else (b,)
+                elif b.is_var or a is b:
+                    got = (a,)
+                else:
+                    got = (a, b)
+            else:
+                # breadth first over the binary tree, as ``level_order_atoms``, in one pass
+                seen: dict[Term, None] = {}
+                level: list[Term] | tuple[Term, ...] = args
+                while level:
+                    nxt: list[Term] = []
+                    for x in level:
+                        if x.op is None:
+                            if not x.is_var:
+                                seen[x] = None
+                        else:
+                            nxt += x.args
+                    level = nxt
+                got = tuple(seen)
+            self._names = got
         return got
 
     def level_order_atoms(self) -> list[Term]:
         """Atom occurrences in ONA's array order (breadth first over the binary tree)."""
+        if self.op is None:
+            return [self]
         out: list[Term] = []
-        level = [self]
+        append = out.append
+        level: list[Term] | tuple[Term, ...] = self.args
         while level:
             nxt: list[Term] = []
             for t in level:
                 if t.op is None:
-                    out.append(t)
+                    append(t)
                 else:
-                    nxt.extend(t.args)
+                    nxt += t.args
             level = nxt
         return out
 
@@ -211,6 +236,7 @@ def atom(name: str) -> Term:
     t.n_imp = 0
     t.n_temp = 0
     t._names = None
+    t.hol = None
     if len(_TABLE) >= _SWEEP_AT[0]:
         _sweep()
     _TABLE[key] = t
@@ -223,35 +249,66 @@ def compound(op: str, args: tuple[Term, ...]) -> Term:
     t = _TABLE.get(key)
     if t is not None:
         return t
+    return _make_compound(key, op, args)
+
+
+def _make_compound(key: tuple[object, ...], op: str, args: tuple[Term, ...]) -> Term:
+    """Build and intern a new compound; every per-term property is computed once here."""
     t = Term.__new__(Term)
     t.op = op
     t.name = None
     t.args = args
     t._str = None
-    # ONA's binary-tree slot count: unary terms carry a terminator slot, sets of n
-    # elements chain n-1 element nodes plus the terminator
-    t.complexity = 1 + sum(a.complexity for a in args) + (1 if len(args) == 1 else 0)
-    if op in SETS and len(args) > 1:
-        t.complexity += len(args)
     t.is_var = False
-    flags = 0
-    n_imp = 1 if op in _IMPS else 0
-    n_temp = 1 if op == "=/>" else 0
-    hv = hq = hi = hd = False
-    for a in args:
-        flags |= a.flags
-        n_imp += a.n_imp
-        n_temp += a.n_temp
-        hv = hv or a.has_var
-        hq = hq or a.has_query_var
-        hi = hi or a.has_indep_var
-        hd = hd or a.has_dep_var
-    if op in _JUNCTIONS and args[-1].op in _JUNCTIONS:
-        flags |= F_JUNCTION_RIGHT_NESTED
-    if op in _COMPOSED_OPS:
+    if len(args) == 2:
+        # the common case (statements, binary connectors), without loops
+        a, b = args
+        # ONA's binary-tree slot count: sets of n elements chain n-1 element nodes
+        complexity = 1 + a.complexity + b.complexity
+        if op in SETS:
+            complexity += 2
+        flags = a.flags | b.flags
+        n_imp = a.n_imp + b.n_imp
+        n_temp = a.n_temp + b.n_temp
+        hv = a.has_var or b.has_var
+        if hv:
+            hq = a.has_query_var or b.has_query_var
+            hi = a.has_indep_var or b.has_indep_var
+            hd = a.has_dep_var or b.has_dep_var
+        else:
+            hq = hi = hd = False
+        # an operation term: ``^op`` or ``<(args) --> ^op>``
+        t.is_op = op == INHERITANCE and b.op is None and b.is_op
+    else:
+        # unary terms carry a terminator slot, sets of n elements chain n-1 element
+        # nodes plus the terminator
+        complexity = 1 + sum(a.complexity for a in args) + (1 if len(args) == 1 else 0)
+        if op in SETS and len(args) > 1:
+            complexity += len(args)
+        flags = 0
+        n_imp = n_temp = 0
+        hv = hq = hi = hd = False
+        for a in args:
+            flags |= a.flags
+            n_imp += a.n_imp
+            n_temp += a.n_temp
+            hv = hv or a.has_var
+            hq = hq or a.has_query_var
+            hi = hi or a.has_indep_var
+            hd = hd or a.has_dep_var
+        t.is_op = False
+    if op in _IMPS:
+        n_imp += 1
+    elif op == "=/>":
+        n_temp += 1
+    elif op in _JUNCTIONS:
+        if args[-1].op in _JUNCTIONS:
+            flags |= F_JUNCTION_RIGHT_NESTED
+    elif op in _COMPOSED_OPS:
         flags |= F_COMPOSED
     elif op in _IMAGE_OPS:
         flags |= F_IMAGE
+    t.complexity = complexity
     t.flags = flags
     t.n_imp = n_imp  # ==> and <=> inside (conclusion filter: at most one)
     t.n_temp = n_temp  # =/> inside (at most two)
@@ -259,10 +316,9 @@ def compound(op: str, args: tuple[Term, ...]) -> Term:
     t.has_query_var = hq
     t.has_indep_var = hi
     t.has_dep_var = hd
-    # an operation term: ``^op`` or ``<(args) --> ^op>``
-    t.is_op = op == INHERITANCE and args[1].op is None and args[1].is_op
     t.cache = None  # per-term results of pure checks (conclusion filters)
     t._names = None
+    t.hol = None
     if len(_TABLE) >= _SWEEP_AT[0]:
         _sweep()
     _TABLE[key] = t
@@ -271,6 +327,25 @@ def compound(op: str, args: tuple[Term, ...]) -> Term:
 
 def names_repeat(t: Term) -> bool:
     """True if some (non-variable) name occurs more than once in ``t``."""
+    args = t.args
+    if len(args) == 2:
+        a, b = args
+        if a.op is None and b.op is None:  # ``<a --> b>`` without a walk
+            return a is b and not a.is_var
+        # binary: a repeat inside either side, or a name shared by both (the sides'
+        # distinct names are cached on the subterms, which are mostly old terms)
+        na = a.index_names()
+        nb = b.index_names()
+        if na and nb:
+            if len(nb) == 1:
+                if nb[0] in na:
+                    return True
+            elif len(na) == 1:
+                if na[0] in nb:
+                    return True
+            elif not set(na).isdisjoint(nb):
+                return True
+        return (a.op is not None and names_repeat(a)) or (b.op is not None and names_repeat(b))
     seen: set[int] = set()
     stack = [t]
     pop = stack.pop

@@ -24,6 +24,9 @@ class Truth(NamedTuple):
         return f"Truth: frequency={self.f:f}, confidence={self.c:f}"
 
 
+#: ``Truth`` without the NamedTuple's Python-level ``__new__`` (the hot path builds millions)
+_new = tuple.__new__
+
 DEFAULT = Truth(1.0, 0.9)
 STRUCTURAL = Truth(1.0, 0.9)
 
@@ -53,18 +56,18 @@ def revision(a: Truth, b: Truth) -> Truth:
     w2 = c2w(b.c)
     w = w1 + w2
     f = min(1.0, (w1 * a.f + w2 * b.f) / w) if w > 0 else 0.0
-    return Truth(f, min(MAX_CONFIDENCE, max(w2c(w), a.c, b.c)))
+    return _new(Truth, (f, min(MAX_CONFIDENCE, max(w2c(w), a.c, b.c))))
 
 
 def deduction(a: Truth, b: Truth) -> Truth:
     """M-->P, S-->M |- S-->P."""
     f = a.f * b.f
-    return Truth(f, a.c * b.c * f)
+    return _new(Truth, (f, a.c * b.c * f))
 
 
 def abduction(a: Truth, b: Truth) -> Truth:
     """P-->M, S-->M |- S-->P."""
-    return Truth(b.f, w2c(a.f * a.c * b.c))
+    return _new(Truth, (b.f, w2c(a.f * a.c * b.c)))
 
 
 def induction(a: Truth, b: Truth) -> Truth:
@@ -74,56 +77,56 @@ def induction(a: Truth, b: Truth) -> Truth:
 
 def exemplification(a: Truth, b: Truth) -> Truth:
     """P-->M, M-->S |- S-->P."""
-    return Truth(1.0, w2c(a.f * b.f * a.c * b.c))
+    return _new(Truth, (1.0, w2c(a.f * b.f * a.c * b.c)))
 
 
 def comparison(a: Truth, b: Truth) -> Truth:
     """M-->P, M-->S |- S<->P."""
     f0 = _or(a.f, b.f)
     f = 0.0 if f0 == 0.0 else a.f * b.f / f0
-    return Truth(f, w2c(f0 * a.c * b.c))
+    return _new(Truth, (f, w2c(f0 * a.c * b.c)))
 
 
 def analogy(a: Truth, b: Truth) -> Truth:
     """M-->P, S<->M |- S-->P."""
     f = a.f * b.f
-    return Truth(f, a.c * b.c * b.f)
+    return _new(Truth, (f, a.c * b.c * b.f))
 
 
 def resemblance(a: Truth, b: Truth) -> Truth:
     """M<->P, S<->M |- S<->P."""
     f = a.f * b.f
-    return Truth(f, a.c * b.c * _or(a.f, b.f))
+    return _new(Truth, (f, a.c * b.c * _or(a.f, b.f)))
 
 
 def intersection(a: Truth, b: Truth) -> Truth:
     """Extensional intersection / conjunction of both premises."""
-    return Truth(a.f * b.f, a.c * b.c)
+    return _new(Truth, (a.f * b.f, a.c * b.c))
 
 
 def union(a: Truth, b: Truth) -> Truth:
     """Union / disjunction of both premises."""
-    return Truth(_or(a.f, b.f), a.c * b.c)
+    return _new(Truth, (_or(a.f, b.f), a.c * b.c))
 
 
 def difference(a: Truth, b: Truth) -> Truth:
     """What holds of the first and not of the second."""
-    return Truth(a.f * (1.0 - b.f), a.c * b.c)
+    return _new(Truth, (a.f * (1.0 - b.f), a.c * b.c))
 
 
 def negation(a: Truth, _b: Truth | None = None) -> Truth:
     """(! A)."""
-    return Truth(1.0 - a.f, a.c)
+    return _new(Truth, (1.0 - a.f, a.c))
 
 
 def conversion(a: Truth, _b: Truth | None = None) -> Truth:
     """S-->P |- P-->S."""
-    return Truth(1.0, w2c(a.f * a.c))
+    return _new(Truth, (1.0, w2c(a.f * a.c)))
 
 
 def contraposition(a: Truth, _b: Truth | None = None) -> Truth:
     """(S ==> P) |- ((! P) ==> (! S))."""
-    return Truth(0.0, w2c((1.0 - a.f) * a.c))
+    return _new(Truth, (0.0, w2c((1.0 - a.f) * a.c)))
 
 
 def structural_deduction(a: Truth, _b: Truth | None = None) -> Truth:
@@ -149,19 +152,19 @@ def structural_abduction(a: Truth, _b: Truth | None = None) -> Truth:
 def decompose_pnn(a: Truth, b: Truth) -> Truth:
     """S, (S && A) |- A and its relatives (positive, negative, negative)."""
     fn = a.f * (1.0 - b.f)
-    return Truth(1.0 - fn, fn * a.c * b.c)
+    return _new(Truth, (1.0 - fn, fn * a.c * b.c))
 
 
 def decompose_npp(a: Truth, b: Truth) -> Truth:
     """S, (S || A) |- A and its relatives."""
     f = (1.0 - a.f) * b.f
-    return Truth(f, f * a.c * b.c)
+    return _new(Truth, (f, f * a.c * b.c))
 
 
 def decompose_pnp(a: Truth, b: Truth) -> Truth:
     """S, (S ~ A) |- A and its relatives."""
     f = a.f * (1.0 - b.f)
-    return Truth(f, f * a.c * b.c)
+    return _new(Truth, (f, f * a.c * b.c))
 
 
 def decompose_ppp(a: Truth, b: Truth) -> Truth:
@@ -172,24 +175,24 @@ def decompose_ppp(a: Truth, b: Truth) -> Truth:
 def decompose_nnn(a: Truth, b: Truth) -> Truth:
     """Both premises negative."""
     fn = (1.0 - a.f) * (1.0 - b.f)
-    return Truth(1.0 - fn, fn * a.c * b.c)
+    return _new(Truth, (1.0 - fn, fn * a.c * b.c))
 
 
 def eternalize(a: Truth) -> Truth:
     """An event's evidence as a timeless belief."""
-    return Truth(a.f, w2c(a.c))
+    return _new(Truth, (a.f, w2c(a.c)))
 
 
 def projection(a: Truth, source_time: int, target_time: int) -> Truth:
     """Confidence decays by 0.8 per cycle of distance; eternal (-1) is unchanged."""
     if source_time == -1:
         return a
-    return Truth(a.f, a.c * PROJECTION_DECAY ** abs(target_time - source_time))
+    return _new(Truth, (a.f, a.c * PROJECTION_DECAY ** abs(target_time - source_time)))
 
 
 def anonymous_analogy(a: Truth, b: Truth) -> Truth:
     """Analogy with the second premise turned into an anonymous similarity."""
-    return analogy(a, Truth(1.0, w2c(b.f * b.c)))
+    return analogy(a, _new(Truth, (1.0, w2c(b.f * b.c))))
 
 
 def goal_deduction(goal: Truth, belief: Truth) -> Truth:
@@ -201,9 +204,9 @@ def goal_deduction(goal: Truth, belief: Truth) -> Truth:
 
 def frequency_greater(a: Truth, b: Truth) -> Truth:
     """Comparative relation: more of the property."""
-    return Truth(1.0, a.c * b.c) if a.f > b.f else Truth(0.0, 0.0)
+    return _new(Truth, (1.0, a.c * b.c)) if a.f > b.f else _new(Truth, (0.0, 0.0))
 
 
 def frequency_equal(a: Truth, b: Truth) -> Truth:
     """Comparative relation: as much of the property."""
-    return Truth(1.0, a.c * b.c) if a.f == b.f else Truth(0.0, 0.0)
+    return _new(Truth, (1.0, a.c * b.c)) if a.f == b.f else _new(Truth, (0.0, 0.0))

@@ -7,8 +7,7 @@ variables) is run in a copy of the space to make the child state. It is slow by 
 and kept as the reference the compiled operators of ``rules.ground_rules`` are checked
 against, and as a way to watch the thesis's procedure on small scenes.
 
-The rule file's rewrite uses ``DeleteLink`` for the atoms an action removes; the type is
-declared here (below OrderedLink) if the AtomSpace does not know it.
+The rule file's rewrite uses ``DeleteLink`` for the atoms an action removes.
 """
 
 from __future__ import annotations
@@ -18,20 +17,9 @@ from dataclasses import dataclass
 from importlib import resources
 
 from robocog.atomspace import AtomSpace, Link, Node, parse, query, substitute
-from robocog.atomspace.types import declare_type
 from robocog.planning.rules import HAND
 from robocog.planning.task import PLACE, TAKE, Fact
 from robocog.planning.world import FIXED, OBJECT, Scene, scene_facts
-
-
-def _declare() -> None:
-    try:
-        declare_type("DeleteLink", "OrderedLink")
-    except Exception:  # already declared elsewhere with other parents: use it as it is
-        pass
-
-
-_declare()
 
 
 def concept(name: str) -> Node:

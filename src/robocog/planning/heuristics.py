@@ -21,7 +21,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 
-from robocog.planning.task import Task, bits
+from robocog.planning.task import PLACE, TAKE, Task, bits
 
 REST = -1  #: support of an object resting where it was found (PDDL: on the table)
 UNSPECIFIED = -2  #: the goal says nothing about the object's support
@@ -84,11 +84,7 @@ class BlocksView:
 
         The bound is only sound for such tasks; other PDDL domains get ``blind``.
         """
-        names = set(task.objects)
-        return bool(task.busy) and all(
-            op.kind in ("take", "place") and op.args and op.args[0] in names
-            for op in task.operators
-        )
+        return bool(task.busy) and moves_one_object(task, task.objects)
 
     def analyse(self, state: int) -> tuple[list[int], list[int], list[int], list[int], int]:
         """Supports, occupants, status (1 in place, 2 misplaced), misplaced-below masks
@@ -160,7 +156,6 @@ class BlocksView:
             if misplaced == 1 << held:
                 return 0
         gbelow = self.goal_below
-        lb = [0] * n
         singles = []
         total = 0
         for x in bits(misplaced):
@@ -168,9 +163,10 @@ class BlocksView:
             two = bool(below[x] & gmis)
             if x == held and not two and 0 <= gs[x] < n and occupant[gs[x]] >= 0:
                 two = True  # its support is covered and cannot be cleared first
-            lb[x] = 2 if two else 1
-            total += lb[x]
-            if not two:
+            if two:
+                total += 2
+            else:
+                total += 1
                 singles.append(x)
         # greedy disjoint deadlock pairs among objects that would move only once
         used = 0
@@ -196,6 +192,18 @@ class BlocksView:
         if held >= 0 and misplaced >> held & 1:
             actions -= 1
         return actions
+
+
+def moves_one_object(task: Task, names: Iterable[str]) -> bool:
+    """True when every action takes or places one object, the first of its arguments.
+
+    Both the bound and the move reductions read a state as towers of *names*; an action
+    that moves anything else (or several things) would break what they assume.
+    """
+    names = set(names)
+    return all(
+        op.kind in (TAKE, PLACE) and op.args and op.args[0] in names for op in task.operators
+    )
 
 
 def blind(state: int) -> int:

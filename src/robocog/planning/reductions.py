@@ -19,8 +19,8 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from robocog.planning.heuristics import REST, UNSPECIFIED, BlocksView
-from robocog.planning.task import PLACE, TAKE, Operator, Task, bits
+from robocog.planning.heuristics import REST, UNSPECIFIED, BlocksView, moves_one_object
+from robocog.planning.task import Operator, Task, bits
 
 
 class BlocksReduction:
@@ -48,19 +48,14 @@ class BlocksReduction:
         """True when the goal is only about supports and every action moves one object."""
         if task.goal_absent:
             return False
-        support_goals = 0
         for i in bits(task.goal):
             fact = task.facts[i]
-            if fact[0] == "on" and len(fact) == 3:
-                support_goals += 1
-            elif fact[0] == "ontable" and len(fact) == 2:
-                support_goals += 1
-            else:
+            about_support = (fact[0] == "on" and len(fact) == 3) or (
+                fact[0] == "ontable" and len(fact) == 2
+            )
+            if not about_support:
                 return False
-        names = set(view.names)
-        return all(
-            op.kind in (TAKE, PLACE) and op.args and op.args[0] in names for op in task.operators
-        )
+        return moves_one_object(task, view.names)
 
     def is_goal(self, state: int) -> bool:
         """The task's goal test."""

@@ -42,9 +42,13 @@ class Space(Protocol):
 
     init: Any
 
-    def is_goal(self, state: Any) -> bool: ...  # noqa: D102
+    def is_goal(self, state: Any) -> bool:
+        """True when *state* satisfies the request: the search stops (or counts it) there."""
+        ...
 
-    def successors(self, state: Any) -> Iterator[tuple[Any, Any]]: ...  # noqa: D102
+    def successors(self, state: Any) -> Iterator[tuple[Any, Any]]:
+        """Each ``(step, next_state)`` one action leads to; the plan is the steps taken."""
+        ...
 
 
 @dataclass

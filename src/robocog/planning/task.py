@@ -81,12 +81,12 @@ class Task:
         self._trigger_mask = 0
         self._free_ops = []
         for op in self.operators:
-            bits = list(_bits(op.pre))
-            if not bits:
+            required = list(bits(op.pre))
+            if not required:
                 self._free_ops.append(op)
                 continue
             best = min(
-                bits, key=lambda b: (counts.get(self.facts[b][0], 0), -len(self.facts[b]), b)
+                required, key=lambda b: (counts.get(self.facts[b][0], 0), -len(self.facts[b]), b)
             )
             self._triggers.setdefault(best, []).append(op)
             self._trigger_mask |= 1 << best
@@ -107,7 +107,7 @@ class Task:
 
     def state_facts(self, state: int) -> list[Fact]:
         """The facts true in *state*, in task order."""
-        return [self.facts[i] for i in _bits(state)]
+        return [self.facts[i] for i in bits(state)]
 
     def is_goal(self, state: int) -> bool:
         """True when *state* holds every goal fact and none of the forbidden ones."""
@@ -121,7 +121,7 @@ class Task:
         for op in self._free_ops:
             if (want is None or op.kind in (None, want)) and op.applicable(state):
                 yield op
-        for bit in _bits(state & self._trigger_mask):
+        for bit in bits(state & self._trigger_mask):
             for op in self._triggers[bit]:
                 if (want is None or op.kind in (None, want)) and op.applicable(state):
                     yield op
@@ -172,16 +172,16 @@ class Task:
         return self.is_goal(state)
 
 
-def _bits(m: int) -> Iterator[int]:
+def bits(m: int) -> Iterator[int]:
+    """The positions of the set bits of *m*, lowest first.
+
+    States and masks are integers; this walks only the set bits, so its cost follows the
+    facts that hold rather than the facts the task knows.
+    """
     while m:
         low = m & -m
         yield low.bit_length() - 1
         m ^= low
-
-
-def bits(m: int) -> Iterator[int]:
-    """The positions of the set bits of *m*, lowest first."""
-    return _bits(m)
 
 
 def intern_bit(index: dict[Fact, int], facts: list[Fact], fact: Fact) -> int:

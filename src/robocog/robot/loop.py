@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import statistics
 import time
+from collections import deque
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
@@ -28,17 +29,37 @@ def percentile(values: list[float], q: float) -> float:
     return ordered[lo] + (ordered[hi] - ordered[lo]) * (k - lo)
 
 
+#: how many recent cycles the figures are taken over: a bridge may run for days, so the
+#: record is a sliding window rather than a list that grows with every cycle
+STATS_WINDOW = 100_000
+
+
 @dataclass
 class CycleStats:
-    """Wall-clock figures of the cycles run so far, in seconds."""
+    """Wall-clock figures of the most recent cycles (up to ``window``), in seconds."""
 
-    reason: list[float] = field(default_factory=list)
-    cycle: list[float] = field(default_factory=list)
+    window: int = STATS_WINDOW
+    reason: deque[float] = field(init=False)
+    cycle: deque[float] = field(init=False)
+    total: int = field(default=0, init=False)
+
+    def __post_init__(self) -> None:
+        self.reason = deque(maxlen=self.window)
+        self.cycle = deque(maxlen=self.window)
+
+    def record(self, reason_seconds: float, cycle_seconds: float) -> None:
+        """Add one cycle: the mind's share and the whole cycle."""
+        self.reason.append(reason_seconds)
+        self.cycle.append(cycle_seconds)
+        self.total += 1
 
     def summary(self) -> dict[str, float]:
-        """p50/p99/mean of the mind's share and of the whole cycle, in milliseconds."""
-        out: dict[str, float] = {"cycles": float(len(self.cycle))}
-        for name, values in (("reason", self.reason), ("cycle", self.cycle)):
+        """p50/p99/mean of the mind's share and of the whole cycle, in milliseconds.
+
+        ``cycles`` counts every cycle recorded; the figures cover the last ``window``.
+        """
+        out: dict[str, float] = {"cycles": float(self.total)}
+        for name, values in (("reason", list(self.reason)), ("cycle", list(self.cycle))):
             out[f"{name}_p50_ms"] = percentile(values, 50) * 1e3
             out[f"{name}_p99_ms"] = percentile(values, 99) * 1e3
             out[f"{name}_mean_ms"] = statistics.fmean(values) * 1e3 if values else 0.0
@@ -77,8 +98,7 @@ class Loop:
             self.mind.on_outcome(command, outcome)
         end = time.perf_counter()
         self.cycles += 1
-        self.stats.reason.append(reasoned - start)
-        self.stats.cycle.append(end - start)
+        self.stats.record(reasoned - start, end - start)
         return Step(actions, reasoned - start, end - start)
 
     def run(

@@ -50,6 +50,11 @@ HEAD_PANS: dict[str, float] = {
     "right": math.radians(-55.0),
 }
 
+#: the two ultrasonic sensors, left (+1) and right (-1) of the heading
+SONAR_SIDES = (1.0, -1.0)
+#: where the rays that sample a sensor's cone lie, in cone half-widths from its axis
+SONAR_SPREAD = (-1.0, -0.5, 0.0, 0.5, 1.0)
+
 
 @dataclass(frozen=True)
 class RoomConfig:
@@ -308,25 +313,27 @@ class RoomWorld:
         """Left and right ultrasonic readings: the nearest echo within each beam."""
         c = self.config
         readings = []
-        for side in (1.0, -1.0):
-            sx = (
-                self.x
-                + c.robot_radius * math.cos(self.theta)
-                - side * c.sonar_offset * math.sin(self.theta)
-            )
-            sy = (
-                self.y
-                + c.robot_radius * math.sin(self.theta)
-                + side * c.sonar_offset * math.cos(self.theta)
-            )
-            axis = self.theta + side * c.sonar_angle
+        for side in SONAR_SIDES:
             best = c.sonar_range
-            for k in (-1.0, -0.5, 0.0, 0.5, 1.0):
-                best = min(best, cast(sx, sy, axis + k * c.sonar_cone, self.solids, c.sonar_range))
+            for sx, sy, angle in self._sonar_rays(side):
+                best = min(best, cast(sx, sy, angle, self.solids, c.sonar_range))
             if noise:
                 best = min(c.sonar_range, max(0.0, best + self.rng.gauss(0.0, c.sonar_noise)))
             readings.append(best)
         return readings[0], readings[1]
+
+    def _sonar_rays(self, side: float) -> list[tuple[float, float, float]]:
+        """The rays, ``(x, y, angle)``, that sample one ultrasonic sensor's cone.
+
+        ``side`` is 1.0 for the left sensor and -1.0 for the right; the readings and
+        :meth:`facing` cast the same rays, so they agree on what the beams meet.
+        """
+        c = self.config
+        cos_t, sin_t = math.cos(self.theta), math.sin(self.theta)
+        sx = self.x + c.robot_radius * cos_t - side * c.sonar_offset * sin_t
+        sy = self.y + c.robot_radius * sin_t + side * c.sonar_offset * cos_t
+        axis = self.theta + side * c.sonar_angle
+        return [(sx, sy, axis + k * c.sonar_cone) for k in SONAR_SPREAD]
 
     def _look(self, direction: str) -> Outcome:
         c = self.config
@@ -361,11 +368,9 @@ class RoomWorld:
         return Outcome.success()
 
     def _apparent_distance(self, source: str) -> float:
-        for target in self.targets:
-            if target.id == source:
-                fx, fy = target.face.point(0.5)
-                true = math.hypot(fx - self.x, fy - self.y)
-                return max(0.1, true * (1.0 + self.rng.gauss(0.0, 0.1)))
+        """The detector's noisy range to a target, or a random one for a noise blob."""
+        if any(target.id == source for target in self.targets):
+            return max(0.1, self.distance_to(source) * (1.0 + self.rng.gauss(0.0, 0.1)))
         return self.rng.uniform(1.0, 5.0)
 
     def _image(self, image: str) -> list[Area]:
@@ -465,19 +470,8 @@ class RoomWorld:
         """What the ultrasonic beams meet first: ``door``, ``wall``, ``box`` or ``nothing``."""
         c = self.config
         best, what = c.sonar_range, "nothing"
-        for side in (1.0, -1.0):
-            sx = (
-                self.x
-                + c.robot_radius * math.cos(self.theta)
-                - side * c.sonar_offset * math.sin(self.theta)
-            )
-            sy = (
-                self.y
-                + c.robot_radius * math.sin(self.theta)
-                + side * c.sonar_offset * math.cos(self.theta)
-            )
-            for k in (-1.0, -0.5, 0.0, 0.5, 1.0):
-                angle = self.theta + side * c.sonar_angle + k * c.sonar_cone
+        for side in SONAR_SIDES:
+            for sx, sy, angle in self._sonar_rays(side):
                 for seg in self.solids:
                     t = ray_hit(sx, sy, angle, seg)
                     if t is not None and t < best:

@@ -101,9 +101,12 @@ class TabletopWorld:
 
     def _tag(self, name: str) -> None:
         """Give ``name`` the next unused tag id (ids are never reused)."""
-        if name not in self.tags.values():
+        if not self._known(name):
             self._next_tag += 1
             self.tags[self._next_tag] = name
+
+    def _known(self, name: str) -> bool:
+        return name in self.tags.values()
 
     @property
     def cubes(self) -> list[str]:
@@ -116,7 +119,7 @@ class TabletopWorld:
         for _ in range(len(pending) + 1):
             for name, support in list(pending.items()):
                 if support in self.fixed or support in self.on or support == self.held:
-                    if name in self.tags.values():
+                    if self._known(name):
                         raise ValueError(f"the {name} is already in the scene")
                     if support not in self.fixed and not self.clear(support):
                         raise ValueError(f"the {support} already has something on it")
@@ -200,9 +203,6 @@ class TabletopWorld:
         if isinstance(command, Stack):
             return self._place(command.obj, command.on, fixed_only=False)
         return Outcome.failure(f"the arm cannot {type(command).__name__}")
-
-    def _known(self, name: str) -> bool:
-        return name in self.tags.values()
 
     def _grasp(self, obj: str, frm: str | None) -> Outcome:
         if not self._known(obj):

@@ -30,6 +30,7 @@ import math
 import os
 import sys
 import threading
+from typing import IO, Any
 
 SEPARATOR = "=" * 80 + "\n"
 
@@ -57,7 +58,7 @@ GOAL_STATUS = {
 }
 
 
-def vision_classes():
+def vision_classes() -> dict[str, type]:
     """vision_msgs' Detection2DArray, Detection2D and ObjectHypothesisWithPose classes:
     the installed ones, else ones generated here from the definitions above."""
     names = ("Detection2DArray", "Detection2D", "ObjectHypothesisWithPose")
@@ -90,7 +91,7 @@ def vision_classes():
 class Node:
     """The rospy side: subscribers feed the parent, the parent's requests are published."""
 
-    def __init__(self, settings, out):
+    def __init__(self, settings: dict[str, Any], out: IO[str]) -> None:
         import actionlib
         import rospy
         from geometry_msgs.msg import PoseWithCovarianceStamped, Twist
@@ -119,23 +120,25 @@ class Node:
         rospy.Subscriber(topics["gripper_state"], String, self.on_gripper, queue_size=10)
         rospy.Subscriber(topics["narsese"], String, self.on_text, queue_size=100)
         if settings.get("pose_source", "amcl") == "odom":
-            rospy.Subscriber(topics["odom"], Odometry, self.on_odom, queue_size=5)
+            rospy.Subscriber(topics["odom"], Odometry, self.on_pose_message, queue_size=5)
         else:
             rospy.Subscriber(
-                topics["amcl_pose"], PoseWithCovarianceStamped, self.on_amcl, queue_size=5
+                topics["amcl_pose"], PoseWithCovarianceStamped, self.on_pose_message, queue_size=5
             )
         self.client = actionlib.SimpleActionClient(topics["move_base"], MoveBaseAction)
         self.goal_id = None
 
     # -- to the parent ---------------------------------------------------------------
 
-    def emit(self, obj):
+    def emit(self, obj: dict[str, Any]) -> None:
+        """Send one JSON line to the parent (callbacks run on rospy's threads)."""
         line = json.dumps(obj, allow_nan=True)
         with self.out_lock:
             self.out.write(line + "\n")
             self.out.flush()
 
-    def on_scan(self, msg):
+    def on_scan(self, msg: Any) -> None:
+        """A LaserScan; infinite ranges go out as null, which JSON can carry."""
         ranges = [r if math.isfinite(r) else None for r in msg.ranges]
         self.emit(
             {
@@ -148,7 +151,8 @@ class Node:
             }
         )
 
-    def on_boxes(self, msg):
+    def on_boxes(self, msg: Any) -> None:
+        """A Detection2DArray: each detection's best hypothesis, its class id named."""
         items = []
         for det in msg.detections:
             if not det.results:
@@ -169,27 +173,29 @@ class Node:
             )
         self.emit({"k": "boxes", "items": items})
 
-    def on_amcl(self, msg):
+    def on_pose_message(self, msg: Any) -> None:
+        """An amcl pose or an odometry message: both carry the pose at ``pose.pose``."""
         self.on_pose(msg.pose.pose)
 
-    def on_odom(self, msg):
-        self.on_pose(msg.pose.pose)
-
-    def on_pose(self, pose):
+    def on_pose(self, pose: Any) -> None:
+        """A geometry_msgs/Pose: position and orientation quaternion."""
         q = pose.orientation
         self.emit(
             {"k": "pose", "x": pose.position.x, "y": pose.position.y, "q": [q.x, q.y, q.z, q.w]}
         )
 
-    def on_gripper(self, msg):
+    def on_gripper(self, msg: Any) -> None:
+        """The gripper's state, as a std_msgs/String."""
         self.emit({"k": "gripper", "text": msg.data})
 
-    def on_text(self, msg):
+    def on_text(self, msg: Any) -> None:
+        """Text for the mind (Narsese), as a std_msgs/String."""
         self.emit({"k": "text", "text": msg.data})
 
     # -- from the parent -------------------------------------------------------------
 
-    def handle(self, request):
+    def handle(self, request: dict[str, Any]) -> None:
+        """Carry out one request of the parent; an unknown one is reported, not fatal."""
         op = request.get("op")
         if op == "twist":
             twist = self.Twist()
@@ -205,7 +211,8 @@ class Node:
         else:
             self.emit({"k": "error", "text": f"unknown request {op!r}"})
 
-    def send_goal(self, request):
+    def send_goal(self, request: dict[str, Any]) -> None:
+        """Send a move_base goal; its end comes back as a ``goal`` event with its id."""
         from move_base_msgs.msg import MoveBaseGoal
 
         token = request["id"]
@@ -228,13 +235,13 @@ class Node:
         o = goal.target_pose.pose.orientation
         o.x, o.y, o.z, o.w = (float(v) for v in q)
 
-        def done(status, _result):
+        def done(status: int, _result: Any) -> None:
             self.emit({"k": "goal", "id": token, "status": GOAL_STATUS.get(status, str(status))})
 
         self.client.send_goal(goal, done_cb=done)
 
 
-def main():
+def main() -> int:
     """Read the settings from argv[1], then serve the parent until stdin closes."""
     # The protocol owns the real stdout; anything rospy prints goes to stderr.
     out = os.fdopen(os.dup(1), "w", encoding="utf-8")

@@ -18,6 +18,7 @@ import os
 import sys
 import threading
 import time
+from typing import IO, Any
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
@@ -27,7 +28,13 @@ from node import vision_classes  # noqa: E402 - the sibling script, by path
 class StandIn:
     """The robot's side of the ROS 1 topics plus a move_base action server."""
 
-    def __init__(self, class_names, goal_seconds, out, serve_move_base=True):
+    def __init__(
+        self,
+        class_names: list[str],
+        goal_seconds: float,
+        out: IO[str],
+        serve_move_base: bool = True,
+    ) -> None:
         import actionlib
         import rospy
         from actionlib_msgs.msg import GoalID
@@ -68,7 +75,8 @@ class StandIn:
             )
             self.server.start()
 
-    def emit(self, obj):
+    def emit(self, obj: dict[str, Any]) -> None:
+        """Record one event as a timestamped JSON line (callbacks run on rospy's threads)."""
         obj["t"] = time.time()
         with self.lock:
             self.out.write(json.dumps(obj) + "\n")
@@ -76,13 +84,16 @@ class StandIn:
 
     # -- requests ------------------------------------------------------------------
 
-    def on_twist(self, msg):
+    def on_twist(self, msg: Any) -> None:
+        """Record a velocity command."""
         self.emit({"event": "cmd_vel", "linear": msg.linear.x, "angular": msg.angular.z})
 
-    def on_cancel_request(self, msg):
+    def on_cancel_request(self, msg: Any) -> None:
+        """Record a move_base cancel request, even one with no goal under way."""
         self.emit({"event": "cancel_request", "all": msg.id == ""})
 
-    def on_grip(self, msg):
+    def on_grip(self, msg: Any) -> None:
+        """Record a gripper request and hold (or let go of) what it names."""
         self.emit({"event": "gripper", "text": msg.data})
         words = msg.data.split()
         if words[:1] == ["pick"] and len(words) > 1:
@@ -90,7 +101,8 @@ class StandIn:
         elif words[:1] == ["drop"]:
             self.holding = ""
 
-    def on_goal(self, goal):
+    def on_goal(self, goal: Any) -> None:
+        """Serve a move_base goal: reached after ``goal_seconds`` unless preempted first."""
         p = goal.target_pose.pose.position
         self.emit({"event": "goal", "frame": goal.target_pose.header.frame_id, "x": p.x, "y": p.y})
         end = time.time() + self.goal_seconds
@@ -105,7 +117,8 @@ class StandIn:
 
     # -- the scene -----------------------------------------------------------------
 
-    def update(self, data):
+    def update(self, data: dict[str, Any]) -> None:
+        """Change the scene from one JSON object of the test (only the keys it names)."""
         if "obstacle" in data:
             self.obstacle = None if data["obstacle"] is None else tuple(data["obstacle"])
         if "detections" in data:
@@ -124,7 +137,8 @@ class StandIn:
         if "narsese" in data:
             self.text_pub.publish(self.String(str(data["narsese"])))
 
-    def publish(self):
+    def publish(self) -> None:
+        """Publish one round of scan, detections, amcl pose and gripper state."""
         if not self.alive:
             return
         rospy = self.rospy
@@ -166,7 +180,8 @@ class StandIn:
         self.grip_pub.publish(self.String(self.holding))
 
 
-def main():
+def main() -> int:
+    """Serve the topics and move_base until stdin closes, taking scene changes from it."""
     parser = argparse.ArgumentParser(description="a stand-in ROS 1 robot with move_base")
     parser.add_argument("--rate", type=float, default=20.0)
     parser.add_argument("--goal-seconds", type=float, default=1.0)
@@ -188,7 +203,7 @@ def main():
     robot.update(json.loads(args.scene))
     stop = threading.Event()
 
-    def publish_loop():
+    def publish_loop() -> None:
         while not stop.wait(1.0 / args.rate):
             try:
                 robot.publish()
