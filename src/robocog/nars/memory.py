@@ -9,7 +9,6 @@ names (ONA stops at 255 atoms), and is cleaned when a concept leaves.
 
 from __future__ import annotations
 
-import heapq
 from collections.abc import Callable, Iterator
 
 from .event import ETERNAL, Event
@@ -199,8 +198,13 @@ class Memory:
         c = Concept(self.next_concept_id, term, now, self.operations, self.table_size)
         self.next_concept_id += 1
         self.concepts[term] = c
-        for a in _index_atoms(term):
-            self.atom_index.setdefault(a, {})[c] = None
+        index = self.atom_index
+        for a in term.index_names():
+            d = index.get(a)
+            if d is None:
+                index[a] = {c: None}
+            else:
+                d[c] = None
         return c
 
     def _evict(self, now: int) -> None:
@@ -210,8 +214,9 @@ class Memory:
         # older concept exactly as a per-concept key function would
         now1 = now + 1
         cs = list(self.concepts.values())
-        keys = [u / (u + 1.0) for u in [c.use_count / (now1 - c.last_used) for c in cs]]
-        for i in heapq.nsmallest(batch, range(len(cs)), key=keys.__getitem__):
+        keys = [(u := c.use_count / (now1 - c.last_used)) / (u + 1.0) for c in cs]
+        # a stable C-level sort: the same choice and order as ``heapq.nsmallest``
+        for i in sorted(range(len(cs)), key=keys.__getitem__)[:batch]:
             self.remove(cs[i])
             self.evictions += 1
 
