@@ -1,0 +1,92 @@
+"""Per-term properties and stamp operations against their plain definitions.
+
+The engine computes these once per interned term or with C-level shortcuts; each test
+recomputes the property the slow, obvious way and demands the same answer.
+"""
+
+from __future__ import annotations
+
+from collections import Counter
+
+from hypothesis import given
+from hypothesis import strategies as st
+
+from robocog.nars.narsese import parse_term
+from robocog.nars.rules import _rejected, rejected
+from robocog.nars.stamp import has_duplicate, merge, overlap
+from robocog.nars.terms import Term, atom, compound, names_repeat
+
+_ATOMS = ["a", "b", "c", "$1", "#1", "?1"]
+_OPS = ["-->", "<->", "==>", "&&", "*", "|", "&", "-", "~", "/1", "{}", "[]"]
+
+
+def _terms(depth: int = 3) -> st.SearchStrategy[Term]:
+    leaf = st.sampled_from(_ATOMS).map(atom)
+    return st.recursive(
+        leaf,
+        lambda inner: st.tuples(st.sampled_from(_OPS), inner, inner).map(
+            lambda x: compound(x[0], (x[1], x[2]))
+        ),
+        max_leaves=2**depth,
+    )
+
+
+def _bfs_atoms(t: Term) -> list[Term]:
+    out, level = [], [t]
+    while level:
+        nxt = []
+        for x in level:
+            if x.op is None:
+                out.append(x)
+            else:
+                nxt.extend(x.args)
+        level = nxt
+    return out
+
+
+@given(_terms())
+def test_index_names_are_distinct_names_in_breadth_first_order(t: Term) -> None:
+    expected = tuple(dict.fromkeys(a for a in _bfs_atoms(t) if not a.is_var))
+    assert t.index_names() == expected
+    assert t.level_order_atoms() == _bfs_atoms(t)
+
+
+@given(_terms())
+def test_names_repeat_counts_occurrences(t: Term) -> None:
+    counts = Counter(a for a in t.atoms() if not a.is_var)
+    assert names_repeat(t) == any(n > 1 for n in counts.values())
+
+
+@given(_terms())
+def test_complexity_and_flags_follow_the_components(t: Term) -> None:
+    atoms = t.atoms()
+    assert t.has_var == any(a.is_var for a in atoms)
+    assert t.has_dep_var == any(a.name.startswith("#") for a in atoms if a.is_var)
+    assert t.n_imp == sum(1 for x in t.walk() if x.op in ("==>", "<=>"))
+
+
+def test_rejected_filters_known_cases() -> None:
+    assert rejected(parse_term("<a --> a>"))
+    assert rejected(parse_term("<(a * b) --> (a * c)>"))
+    assert rejected(parse_term("<#1 --> a>"))
+    assert rejected(parse_term("<<a --> b> ==> <a --> b>>"))
+    assert not rejected(parse_term("<a --> b>"))
+    assert not rejected(parse_term("<<$1 --> b> ==> <$1 --> c>>"))
+    assert not _rejected(parse_term("<(a * b) --> r>"))
+
+
+_stamps = st.lists(st.integers(1, 40), max_size=10, unique=True).map(tuple)
+
+
+@given(_stamps, _stamps, st.integers(1, 12))
+def test_merge_interleaves_and_truncates(a: tuple[int, ...], b: tuple[int, ...], k: int) -> None:
+    expected: list[int] = []
+    for i in range(max(len(a), len(b))):
+        expected += a[i : i + 1] + b[i : i + 1]
+    assert merge(a, b, k) == tuple(expected[:k])
+
+
+@given(_stamps, _stamps)
+def test_overlap_and_duplicates(a: tuple[int, ...], b: tuple[int, ...]) -> None:
+    assert overlap(a, b) == any(x in b for x in a)
+    assert has_duplicate(a + b) == overlap(a, b)
