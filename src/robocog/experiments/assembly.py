@@ -17,13 +17,11 @@ thesis's, and the world is checked: each request's goal must hold on the tableto
 from __future__ import annotations
 
 import argparse
-import json
-import os
-import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from robocog.atomic import write_json, write_text
 from robocog.minds.planner_mind import PlannerMind, RequestRecord
 from robocog.planning.thesis import EXPERIMENTS, WHOLE_ASSEMBLIES, experiment
 from robocog.robot.loop import Loop
@@ -300,19 +298,11 @@ def run(args: argparse.Namespace) -> int:
             "requests": rows,
             "with_failures": recovery,
         }
-        _write_json(Path(args.json), payload)
+        write_json(Path(args.json), payload)
     everything = all(run_.reached for run_ in clean.values()) and all(
         run_.reached for runs in failing.values() for run_ in runs
     )
     return 0 if everything else 1
-
-
-def _write_json(path: Path, payload: dict[str, Any]) -> None:
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=path.name, suffix=".tmp")
-    with os.fdopen(fd, "w", encoding="utf-8") as fh:
-        json.dump(payload, fh, indent=2)
-    os.replace(tmp, path)
 
 
 def write_plot(rows: dict[str, list[dict[str, Any]]], out: Path) -> str:
@@ -397,7 +387,7 @@ def write_report(
         )
     if plot:
         lines += ["", f"![search time per request]({plot})", ""]
-    path.write_text("\n".join(lines), encoding="utf-8")
+    write_text(path, "\n".join(lines))
 
 
 __all__ = ["EXPERIMENTS", "WHOLE_ASSEMBLIES", "configure", "run", "run_sequence"]

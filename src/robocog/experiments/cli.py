@@ -153,11 +153,11 @@ def run_garbage(
             console.print(f"{m.name}: {m.cut_short} runs left out to keep within the time budget")
     acc = result.accumulation
     if acc is not None and acc.unavailable is None:
+        places = ", ".join(p for p, *_ in acc.ranking) or "no place hypothesis formed yet"
         console.print(
             escape(
                 f"{acc.mind}, after {acc.rounds} rounds, ranks the checkpoints by trash seen: "
-                + ", ".join(p for p, *_ in acc.ranking)
-                + f" (hotspots: {', '.join(acc.hotspots)})"
+                f"{places} (hotspots: {', '.join(acc.hotspots)})"
             )
         )
     if json_path is not None:

@@ -10,11 +10,10 @@ the page is written alone.
 from __future__ import annotations
 
 import json
-import os
-import tempfile
 from pathlib import Path
 from typing import Any
 
+from robocog.atomic import write_text
 from robocog.experiments.garbage import CAUSES, PAPER, ExperimentResult, MindResult
 from robocog.worlds.garbage import GarbageField
 
@@ -24,19 +23,6 @@ CAUSE_TEXT = {
     "decision": "seen and graspable but never picked, not dropped, or its checkpoint skipped",
     "time": "not reached: the battery ran out before its checkpoint",
 }
-
-
-def write_text(path: Path, text: str) -> None:
-    """Write atomically: a temporary file in the same folder, then a rename."""
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.")
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8") as f:
-            f.write(text)
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
 
 
 def write_json(path: Path, result: ExperimentResult) -> None:

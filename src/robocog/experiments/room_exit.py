@@ -22,16 +22,14 @@ convergence check of Section 4 (:mod:`robocog.experiments.convergence`).
 from __future__ import annotations
 
 import argparse
-import json
 import math
-import os
-import tempfile
 from collections import Counter
 from dataclasses import asdict, dataclass, field
 from importlib import resources
 from pathlib import Path
 from typing import Any
 
+from robocog.atomic import write_json, write_text
 from robocog.experiments import convergence
 from robocog.minds.qbo import QboPerception, ReachExitReference
 from robocog.robot.loop import Loop
@@ -367,15 +365,6 @@ def run(args: argparse.Namespace) -> int:
     return 0 if results else 1
 
 
-def write_json(path: Path, payload: dict[str, Any]) -> None:
-    """Write JSON atomically (temporary file, then rename)."""
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=path.name, suffix=".tmp")
-    with os.fdopen(fd, "w", encoding="utf-8") as fh:
-        json.dump(payload, fh, indent=2)
-    os.replace(tmp, path)
-
-
 PHASE_COLOURS = {"door": "magenta", "entry": "red", "": "grey"}
 
 
@@ -572,4 +561,4 @@ def write_report(
                 f"{'yes' if st.holds else 'no'} |"
             )
         lines.append("")
-    path.write_text("\n".join(lines), encoding="utf-8")
+    write_text(path, "\n".join(lines))

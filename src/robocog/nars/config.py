@@ -31,8 +31,20 @@ class Config:
     question_priming: float = 0.1
     event_belief_distance: int = 20
     similarity_distance: float = 1.0
+    #: an event is paired with a related concept's recent event (within
+    #: ``event_belief_distance``) even when that concept has no eternal belief.  ONA
+    #: 0.9.2 gets this pairing by eternalizing every event; this keeps the pairing
+    #: (event-to-event inference such as spatial categories) without the eternalized
+    #: copies, which crowd out the eternal knowledge examples ask about.
+    event_pairs_with_events: bool = True
     #: events also revise their concept's eternal belief (ONA 0.9.2 does; off by default)
     eternalize_events: bool = False
+    #: derived intersections/differences, top-level images and conjunctions with
+    #: dependent variables are kept only where their concept already exists.  Later
+    #: ONA versions do this to save memory; ONA 0.9.2 (followed here) creates the
+    #: concept, which is what lets event-level inference compose e.g.
+    #: ``<([filled] & rectangle) --> (leftOf /1 {x})>`` from two fresh events.
+    compositions_need_concept: bool = False
     # temporal
     max_sequence_len: int = 2
     precondition_consequence_distance: int = 20

@@ -313,6 +313,7 @@ class NAR(SensorimotorMixin, DecisionMixin):
         derived = not revised and not is_input
         if (
             derived
+            and self.config.compositions_need_concept
             and (len(e.stamp) > 1 or e.occurrence_time != ETERNAL)
             and _needs_existing_concept(e)
             and self.memory.find(e.term) is None
@@ -421,6 +422,7 @@ class NAR(SensorimotorMixin, DecisionMixin):
     ) -> None:
         if (
             term.flags & F_COMPOSED
+            and self.config.compositions_need_concept
             and (len(stamp) > 1 or occurrence != ETERNAL)
             and term not in self.memory.concepts
         ):
@@ -491,17 +493,19 @@ class NAR(SensorimotorMixin, DecisionMixin):
             if len(chosen) >= limit:
                 break
         self.matched_total += len(chosen)
+        spikes_alone = cfg.event_pairs_with_events
         for c, cp in chosen:
             belief = c.belief
-            if belief is None:
-                continue
             if (
                 e.occurrence_time != ETERNAL
                 and c.belief_spike is not None
                 and abs(e.occurrence_time - c.belief_spike.occurrence_time)
                 < cfg.event_belief_distance
+                and (belief is not None or spikes_alone)
             ):
                 belief = c.belief_spike.projected(e.occurrence_time)
+            elif belief is None:
+                continue
             if overlap(e.stamp, belief.stamp):
                 continue
             c.use(now, False, 0)

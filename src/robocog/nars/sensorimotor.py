@@ -377,15 +377,41 @@ class SensorimotorMixin:
             return
         mem = self.memory  # type: ignore[attr-defined]
         op_truth = Truth(1.0, 0.9)
+        threshold = cfg.anticipation_threshold
+        # A precondition whose projected truth is this weak cannot lift a prediction
+        # above the threshold (expectation - 1/2 <= c / 2) nor to confidence 0.05, so
+        # only an exactly-zero predicted frequency still counts; this skips the many
+        # implications whose precondition happened long ago without computing them.
+        weak = min(0.05, 1.98 * (threshold - 0.5)) if threshold > 0.5 + 1e-9 else 0.0
+        # precondition term -> (its event, that event projected to now with the
+        # operation, whether it is weak); the same precondition serves many
+        # implications. Dropped when an event or the concept store changes below.
+        sources: dict[Term, tuple[Event, Truth, bool] | None] = {}
+        evictions = mem.evictions
         for post in list(targets):
             if mem.find(post.term) is not post:
                 targets.pop(post, None)
                 continue
             for imp in list(self.implications_for(post, opi)):
-                if imp.source is None:
+                source = imp.source
+                if source is None:
                     continue
-                spike = self._source_spike(imp.source)
-                if spike is None:
+                try:
+                    entry = sources[source]
+                except KeyError:
+                    spike = self._source_spike(source)
+                    if spike is None:
+                        entry = None
+                    else:
+                        pre_i = tf.intersection(
+                            tf.projection(spike.truth, spike.occurrence_time, now), op_truth
+                        )
+                        entry = (spike, pre_i, pre_i.c < weak)
+                    sources[source] = entry
+                if entry is None:
+                    continue
+                spike, pre_i, is_weak = entry
+                if is_weak and imp.truth.f * pre_i.f != 0.0:
                     continue
                 if opi:
                     pre_term, op_term = split_precondition(imp.term.args[0])
@@ -394,20 +420,22 @@ class SensorimotorMixin:
                         continue
                     if unify(apply(op_term, subs), e.term) is None:
                         continue  # same operation, other arguments
-                pre_t = tf.projection(spike.truth, spike.occurrence_time, now)
-                predicted = tf.deduction(imp.truth, tf.intersection(pre_t, op_truth))
-                if expectation(predicted) <= cfg.anticipation_threshold and not (
+                predicted = tf.deduction(imp.truth, pre_i)
+                if expectation(predicted) <= threshold and not (
                     predicted.c < 0.05 and predicted.f == 0.0
                 ):
                     continue
                 self._add_negative_evidence(post, opi, imp, spike.truth)
-                bind = unify(imp.source, spike.term)
+                bind = unify(source, spike.term)
                 if bind is None:
                     continue
                 outcome = apply(imp.term.args[1], bind) if bind else imp.term.args[1]
                 if outcome.has_var or overlap(spike.stamp, imp.stamp):
                     continue
                 oc = mem.conceptualize(outcome, now)
+                if mem.evictions != evictions:
+                    evictions = mem.evictions
+                    sources.clear()
                 oc.use(now, False, cfg.eternal_input_usage_boost)
                 occ = now + round(imp.dt)
                 pred = Event(
@@ -426,6 +454,7 @@ class SensorimotorMixin:
                     old = oc.belief_spike
                     oc.belief_spike, _ = self._revision_and_choice(old, pred)  # type: ignore[attr-defined]
                     self._show_prediction(old, oc.belief_spike)
+                    sources.clear()
 
     def _source_spike(self, source: Term) -> Event | None:
         """The belief event of a precondition concept; a concept with variables holds

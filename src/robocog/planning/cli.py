@@ -13,10 +13,10 @@ from __future__ import annotations
 
 import argparse
 import json
-import os
 import sys
 from pathlib import Path
 
+from robocog.atomic import write_text
 from robocog.planning.english import EnglishError
 from robocog.planning.pddl import PDDLError, ground, read_domain, read_problem, scene_problem
 from robocog.planning.planner import (
@@ -82,13 +82,6 @@ def _print(result: PlanResult, as_json: bool) -> None:
     )
 
 
-def _write_atomically(path: Path, text: str) -> None:
-    """Write *text* to a temporary file beside *path*, then rename it over *path*."""
-    tmp = path.with_name(f".{path.name}.tmp")
-    tmp.write_text(text)
-    os.replace(tmp, path)
-
-
 def run(args: argparse.Namespace) -> int:
     """Plan and print; exit status 0 with a plan, 1 without one, 2 on bad input."""
     try:
@@ -121,7 +114,7 @@ def run(args: argparse.Namespace) -> int:
             planner = Planner(max_seconds=args.max_seconds)
             scene = scene_from_english(objects, facts)
             if args.write_pddl:
-                _write_atomically(args.write_pddl, scene_problem(scene, goal_from_english(goal)))
+                write_text(args.write_pddl, scene_problem(scene, goal_from_english(goal)))
             result = planner.plan(
                 scene,
                 goal,
