@@ -216,3 +216,58 @@ def test_shell_command_prints_error_line_and_continues(tmp_path: Path) -> None:
         timeout=60,
     )
     assert "Answer: <a --> c>." in r2.stdout
+
+
+SHAPES = [
+    "<{s1} --> rectangle>. :|:",
+    "<{s1} --> [filled]>. :|:",
+    "<({s1} * {s2}) --> leftOf>. :|:",
+    "<({s1} * {s3}) --> aboveOf>. :|:",
+    "<{s2} --> circle>. :|:",
+    "<{s2} --> [unfilled]>. :|:",
+    "<({s3} * {s2}) --> leftOf>. :|:",
+    "50",
+]
+
+
+def _spatial_answer(**config: object) -> str | None:
+    nar = NAR(**config)
+    run_lines(nar, SHAPES)
+    answer = nar.ask("<([filled] & rectangle) --> (leftOf /1 {?1})>? :|:")
+    return None if answer is None else str(answer.term)
+
+
+def test_events_compose_a_spatial_category_as_ona_092() -> None:
+    # three simultaneous events, none of them an eternal belief: the intersection
+    # and the image are composed from the events themselves
+    assert _spatial_answer() == "<([filled] & rectangle) --> (leftOf /1 {s2})>"
+
+
+@pytest.mark.parametrize(
+    "config",
+    [{"compositions_need_concept": True}, {"event_pairs_with_events": False}],
+)
+def test_spatial_category_needs_both_092_behaviours(config: dict[str, object]) -> None:
+    assert _spatial_answer(**config) is None
+
+
+def test_shell_settings_accept_boolean_words_and_refuse_nonsense() -> None:
+    ok = subprocess.run(
+        [sys.executable, "-m", "robocog", "nar", "--quiet", "--set", "eternalize_events=True"],
+        input="<a --> b>.\n<a --> b>?\n",
+        capture_output=True,
+        text=True,
+        timeout=60,
+    )
+    assert ok.returncode == 0, ok.stderr
+    assert "Answer: <a --> b>." in ok.stdout
+    bad = subprocess.run(
+        [sys.executable, "-m", "robocog", "nar", "--set", "decision_threshold=high"],
+        input="",
+        capture_output=True,
+        text=True,
+        timeout=60,
+    )
+    assert bad.returncode == 2
+    assert "not a number or true/false" in bad.stderr
+    assert "Traceback" not in bad.stderr

@@ -44,6 +44,7 @@ class Config:
     #: ONA versions do this to save memory; ONA 0.9.2 (followed here) creates the
     #: concept, which is what lets event-level inference compose e.g.
     #: ``<([filled] & rectangle) --> (leftOf /1 {x})>`` from two fresh events.
+    #: Compositions with variables keep the rule either way (they multiply fastest).
     compositions_need_concept: bool = False
     # temporal
     max_sequence_len: int = 2

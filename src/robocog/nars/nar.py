@@ -311,14 +311,15 @@ class NAR(SensorimotorMixin, DecisionMixin):
     ) -> None:
         """ONA's Memory_AddEvent: queue the event and store it in its concept."""
         derived = not revised and not is_input
-        if (
+        composition = (
             derived
-            and self.config.compositions_need_concept
             and (len(e.stamp) > 1 or e.occurrence_time != ETERNAL)
             and _needs_existing_concept(e)
-            and self.memory.find(e.term) is None
-        ):
-            return  # compositions are only kept where their concept already exists
+        )
+        if composition and self.memory.find(e.term) is None:
+            if self.config.compositions_need_concept or e.term.has_var:
+                return  # compositions are only kept where their concept already exists
+        composition = composition and not self.config.compositions_need_concept
         if derived:
             priority *= 1.0 / math.log2(1.0 + e.term.complexity)
         if e.truth.c < self.config.min_confidence or priority <= 0.0:
@@ -337,7 +338,7 @@ class NAR(SensorimotorMixin, DecisionMixin):
                 self._print(("Revised: " if revised else "Derived: ") + e.line(priority))
             for cb in self._derivation_cbs:
                 cb(e)
-        self._process_new_belief(e, priority, is_input)
+        self._process_new_belief(e, priority, is_input, not composition)
 
     def _queue(self, e: Event, priority: float) -> bool:
         q = self.memory.belief_events
@@ -353,7 +354,9 @@ class NAR(SensorimotorMixin, DecisionMixin):
             return q.push(e, priority)
         return False
 
-    def _process_new_belief(self, e: Event, priority: float, is_input: bool) -> None:
+    def _process_new_belief(
+        self, e: Event, priority: float, is_input: bool, index: bool = True
+    ) -> None:
         now = self.time
         eternal_input = is_input and e.occurrence_time == ETERNAL
         if e.term.op == TEMPORAL_IMPLICATION:
@@ -365,7 +368,11 @@ class NAR(SensorimotorMixin, DecisionMixin):
         c.use(now, eternal_input, self.config.eternal_input_usage_boost)
         self._set_priority(c, max(self._priority(c), priority))
         if e.occurrence_time != ETERNAL:
-            self._note_event(c)
+            if index:
+                # derived compositions stay out of the occurrence-time index: they
+                # serve semantic inference and answers, while temporal induction and
+                # anticipation see what they saw when compositions needed a concept
+                self._note_event(c)
             if e.occurrence_time <= now:
                 c.belief_spike = self._revision_and_choice(c.belief_spike, e)[0]
             else:
@@ -422,7 +429,7 @@ class NAR(SensorimotorMixin, DecisionMixin):
     ) -> None:
         if (
             term.flags & F_COMPOSED
-            and self.config.compositions_need_concept
+            and (self.config.compositions_need_concept or term.has_var)
             and (len(stamp) > 1 or occurrence != ETERNAL)
             and term not in self.memory.concepts
         ):

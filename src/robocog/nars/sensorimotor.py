@@ -387,6 +387,8 @@ class SensorimotorMixin:
         # operation, whether it is weak); the same precondition serves many
         # implications. Dropped when an event or the concept store changes below.
         sources: dict[Term, tuple[Event, Truth, bool] | None] = {}
+        groups: dict[object, list[Concept]] | None = None
+        var_sources: list[Term] = []
         evictions = mem.evictions
         for post in list(targets):
             if mem.find(post.term) is not post:
@@ -399,7 +401,11 @@ class SensorimotorMixin:
                 try:
                     entry = sources[source]
                 except KeyError:
-                    spike = self._source_spike(source)
+                    if source.has_var:
+                        var_sources.append(source)
+                        if groups is None:
+                            groups = self._ground_spikes()
+                    spike = self._source_spike(source, groups)
                     if spike is None:
                         entry = None
                     else:
@@ -436,6 +442,8 @@ class SensorimotorMixin:
                 if mem.evictions != evictions:
                     evictions = mem.evictions
                     sources.clear()
+                    var_sources.clear()
+                    groups = None
                 oc.use(now, False, cfg.eternal_input_usage_boost)
                 occ = now + round(imp.dt)
                 pred = Event(
@@ -454,18 +462,88 @@ class SensorimotorMixin:
                     old = oc.belief_spike
                     oc.belief_spike, _ = self._revision_and_choice(old, pred)  # type: ignore[attr-defined]
                     self._show_prediction(old, oc.belief_spike)
-                    sources.clear()
+                    # only this term's entry and those found through unification change
+                    sources.pop(outcome, None)
+                    for v in var_sources:
+                        sources.pop(v, None)
+                    var_sources.clear()
+                    groups = None
 
-    def _source_spike(self, source: Term) -> Event | None:
+    def _ground_spikes(self) -> dict[object, list[Concept]]:
+        """Concepts of the occurrence-time index holding a belief event and no variable,
+        newest first, grouped so that a precondition with variables is unified only
+        against terms that can match it: by connector and arity, and by each component
+        at each position (a path of connector, arity and index from the top). Key
+        ``None`` holds all of them."""
+        groups: dict[object, list[Concept]] = {None: []}
+        everything = groups[None]
+        get = groups.get
+        for c in self.time_index:
+            t = c.term
+            if c.belief_spike is None or t.has_var:
+                continue
+            everything.append(c)
+            if t.op is None:
+                continue
+            key: object = (t.op, len(t.args))
+            got = get(key)
+            if got is None:
+                groups[key] = [c]
+            else:
+                got.append(c)
+            stack: list[tuple[tuple[object, ...], Term]] = [((), t)]
+            while stack:
+                path, x = stack.pop()
+                op = x.op
+                if op is None:
+                    continue
+                n = len(x.args)
+                for i, arg in enumerate(x.args):
+                    sub = (*path, op, n, i)
+                    key = (sub, arg)
+                    got = get(key)
+                    if got is None:
+                        groups[key] = [c]
+                    elif got[-1] is not c:
+                        got.append(c)
+                    if arg.op is not None:
+                        stack.append((sub, arg))
+        return groups
+
+    @staticmethod
+    def _spike_key(source: Term) -> object:
+        """The group of :meth:`_ground_spikes` a term with variables must be in: its
+        shallowest ground component with its path, else its connector and arity."""
+        if source.op is None:
+            return None
+        level: list[tuple[tuple[object, ...], Term]] = [((), source)]
+        while level:
+            nxt: list[tuple[tuple[object, ...], Term]] = []
+            for path, x in level:
+                n = len(x.args)
+                for i, arg in enumerate(x.args):
+                    sub = (*path, x.op, n, i)
+                    if not arg.has_var:
+                        return (sub, arg)
+                    if arg.op is not None:
+                        nxt.append((sub, arg))
+            level = nxt
+        return (source.op, len(source.args))
+
+    def _source_spike(
+        self, source: Term, groups: dict[object, list[Concept]] | None = None
+    ) -> Event | None:
         """The belief event of a precondition concept; a concept with variables holds
         the newest event that instantiates it (ONA activates such concepts too)."""
         c = self.memory.find(source)  # type: ignore[attr-defined]
         best = c.belief_spike if c is not None else None
         if source.has_var:
-            for c2 in self.time_index:
-                b = c2.belief_spike
-                if b is None or c2.term.has_var or unify(source, c2.term) is None:
+            if groups is None:
+                groups = self._ground_spikes()
+            for c2 in groups.get(self._spike_key(source), ()):
+                if unify(source, c2.term) is None:
                     continue
+                b = c2.belief_spike
                 if best is None or b.occurrence_time > best.occurrence_time:
                     best = b
                 break

@@ -31,21 +31,33 @@ def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--quiet", action="store_true", help="no Statistics block at the end")
 
 
+_BOOLEANS = {"true": True, "false": False, "yes": True, "no": False, "on": True, "off": False}
+
+
 def _value(text: str) -> object:
-    if text in ("true", "false"):
-        return text == "true"
+    """A ``--set`` value: a boolean word in any case, an integer or a float."""
+    if text.lower() in _BOOLEANS:
+        return _BOOLEANS[text.lower()]
     try:
         return int(text)
     except ValueError:
+        pass
+    try:
         return float(text)
+    except ValueError:
+        raise ValueError(f"--set: {text!r} is not a number or true/false") from None
 
 
 def run(args: argparse.Namespace) -> int:
     """Read stdin until EOF or ``quit``, printing ONA's output lines."""
     overrides = {}
-    for item in args.set:
-        k, _, v = item.partition("=")
-        overrides[k.strip()] = _value(v.strip())
+    try:
+        for item in args.set:
+            k, _, v = item.partition("=")
+            overrides[k.strip()] = _value(v.strip())
+    except ValueError as exc:
+        print(f"robocog nar: {exc}", file=sys.stderr)
+        return 2
     try:
         if args.load:
             nar = NAR.load(args.load)
