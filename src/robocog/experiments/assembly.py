@@ -22,6 +22,7 @@ from pathlib import Path
 from typing import Any
 
 from robocog.atomic import write_json, write_text
+from robocog.experiments.report import add_run_arguments
 from robocog.minds.planner_mind import PlannerMind, RequestRecord
 from robocog.planning.thesis import EXPERIMENTS, WHOLE_ASSEMBLIES, experiment
 from robocog.robot.loop import Loop
@@ -143,17 +144,7 @@ def thesis_figures(table: str) -> tuple[tuple[str, ...], int, float]:
 
 def configure(parser: argparse.ArgumentParser) -> None:
     """Arguments of ``robocog experiment assembly``."""
-    parser.add_argument("--runs", type=int, default=10, help="runs with grasp failures")
-    parser.add_argument("--seed", type=int, default=0, help="seed of the first run")
-    parser.add_argument("--json", metavar="FILE", help="write the figures as JSON")
-    parser.add_argument(
-        "--out",
-        "--report",
-        dest="report",
-        metavar="DIR",
-        default="reports/assembly",
-        help="folder of the markdown report and plots",
-    )
+    add_run_arguments(parser, 10, "runs with grasp failures", "reports/assembly")
     parser.add_argument(
         "--failure-rate", type=float, default=0.25, help="chance that a grasp slips"
     )

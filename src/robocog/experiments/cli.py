@@ -35,7 +35,7 @@ def configure(parser: argparse.ArgumentParser) -> None:
             continue
         try:
             importlib.import_module(module).configure(p)
-        except Exception as exc:  # not built yet, or broken while being built
+        except Exception as exc:  # an optional part missing or broken: say so when it is run
             p.set_defaults(unavailable=f"{type(exc).__name__}: {exc}")
             p.add_argument("rest", nargs=argparse.REMAINDER, help=argparse.SUPPRESS)
 

@@ -9,6 +9,7 @@ the page is written alone.
 
 from __future__ import annotations
 
+import argparse
 import json
 from pathlib import Path
 from typing import Any
@@ -23,6 +24,23 @@ CAUSE_TEXT = {
     "decision": "seen and graspable but never picked, not dropped, or its checkpoint skipped",
     "time": "not reached: the battery ran out before its checkpoint",
 }
+
+
+def add_run_arguments(
+    parser: argparse.ArgumentParser, runs: int, runs_help: str, report_dir: str
+) -> None:
+    """The arguments every seeded case study shares: runs, seed, JSON file, report folder."""
+    parser.add_argument("--runs", type=int, default=runs, help=runs_help)
+    parser.add_argument("--seed", type=int, default=0, help="seed of the first run")
+    parser.add_argument("--json", metavar="FILE", help="write the figures as JSON")
+    parser.add_argument(
+        "--out",
+        "--report",
+        dest="report",
+        metavar="DIR",
+        default=report_dir,
+        help="folder of the markdown report and plots",
+    )
 
 
 def write_json(path: Path, result: ExperimentResult) -> None:

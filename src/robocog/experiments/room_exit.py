@@ -31,6 +31,7 @@ from typing import Any
 
 from robocog.atomic import write_json, write_text
 from robocog.experiments import convergence
+from robocog.experiments.report import add_run_arguments
 from robocog.minds.qbo import QboPerception, ReachExitReference
 from robocog.robot.loop import Loop
 from robocog.robot.protocols import Mind
@@ -241,17 +242,7 @@ def room_d_per_step(
 
 def configure(parser: argparse.ArgumentParser) -> None:
     """Arguments of ``robocog experiment room-exit``."""
-    parser.add_argument("--runs", type=int, default=40, help="runs per mind (default 40)")
-    parser.add_argument("--seed", type=int, default=0, help="seed of the first run")
-    parser.add_argument("--json", metavar="FILE", help="write the figures as JSON")
-    parser.add_argument(
-        "--out",
-        "--report",
-        dest="report",
-        metavar="DIR",
-        default="reports/room-exit",
-        help="folder of the markdown report and plots",
-    )
+    add_run_arguments(parser, 40, "runs per mind (default 40)", "reports/room-exit")
     parser.add_argument(
         "--mind", choices=(*MINDS, "both"), default="both", help="which mind to run"
     )

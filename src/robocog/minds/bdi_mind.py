@@ -113,7 +113,7 @@ def probe() -> str | None:
     """
     try:
         mind = BdiMind()
-    except Exception as exc:  # an interpreter still being built may fail in any way
+    except Exception as exc:  # a broken program or installation may fail in any way
         return f"the AgentSpeak program does not load: {type(exc).__name__}: {exc}"
     frame: list[Percept] = [
         Detection("bottle", 0.0, 1.0, 0.9, "bottle1"),

@@ -308,7 +308,7 @@ def probe(seed: int = 0, frames: int = 12) -> str | None:
         mind = NarsMind(["p0", "p1"], NarsSettings(seed=seed))
     except NotReady as exc:
         return f"the background knowledge does not load: {exc}"
-    except Exception as exc:  # an engine still being built may fail in any way
+    except Exception as exc:  # a broken knowledge file or installation may fail in any way
         return f"the reasoner cannot start: {type(exc).__name__}: {exc}"
     frame: list[Percept] = [
         Detection("bottle", 0.0, 1.0, 0.9, "bottle1"),
