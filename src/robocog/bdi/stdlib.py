@@ -440,34 +440,33 @@ def _fail(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
     raise err
 
 
-@internal("succeed_goal")
-def _succeed_goal(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Any:
+def _end_goal(how: str, ag: Agent, args: tuple, s: dict, ctx: Any) -> Any:
+    """``.succeed_goal`` / ``.fail_goal``: end every pursuit of a goal, as ``how`` says.
+
+    The calling intention first steps over this formula, so that when the goal it drops
+    is not one of its own it simply goes on with its next formula.
+    """
     from robocog.bdi.agent import DONE
 
-    _need(args, 1, "succeed_goal")
+    _need(args, 1, f"{how}_goal")
     goal = resolve(args[0], s)
     current = ctx[0] if ctx else None
     if ctx:
         _step_over(ag, ctx)
-    changed = ag.drop_goal(goal, "succeed", current)
+    changed = ag.drop_goal(goal, how, current)
     if ctx and not changed:
         ag._advance(current)
     return DONE if ctx else True
+
+
+@internal("succeed_goal")
+def _succeed_goal(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Any:
+    return _end_goal("succeed", ag, args, s, ctx)
 
 
 @internal("fail_goal")
 def _fail_goal(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Any:
-    from robocog.bdi.agent import DONE
-
-    _need(args, 1, "fail_goal")
-    goal = resolve(args[0], s)
-    current = ctx[0] if ctx else None
-    if ctx:
-        _step_over(ag, ctx)
-    changed = ag.drop_goal(goal, "fail", current)
-    if ctx and not changed:
-        ag._advance(current)
-    return DONE if ctx else True
+    return _end_goal("fail", ag, args, s, ctx)
 
 
 def _step_over(ag: Agent, ctx: Any) -> None:
