@@ -270,9 +270,13 @@ class RobotBody:
         end = time.monotonic() + seconds
         try:
             while True:
-                if self._halted is not None:
-                    return self._halted_outcome()
-                self.link.send_velocity(linear, angular)
+                # checked and sent under the lock: a halt from another thread either
+                # comes first and is seen here, or comes after and its zero velocity
+                # is the last word
+                with self._lock:
+                    if self._halted is not None:
+                        return self._halted_outcome()
+                    self.link.send_velocity(linear, angular)
                 left = end - time.monotonic()
                 if left <= 0:
                     return Outcome.success()
