@@ -410,32 +410,12 @@ class AtomSpace:
         return atom
 
     def _inc_set_w(self, atom: Atom) -> set[Link]:
-        s = self._incoming.get(atom)
-        owned = self._owned_inc
-        if s is None:
-            s = set()
-            self._incoming[atom] = s
-            if owned is not None:
-                owned.add(atom)
-        elif owned is not None and atom not in owned:
-            s = set(s)
-            self._incoming[atom] = s
-            owned.add(atom)
-        return s
+        """The incoming set of ``atom``, ready to be written (copied if shared)."""
+        return _writable_set(self._incoming, self._owned_inc, atom)
 
     def _rel_set_w(self, key: tuple) -> set[Link]:
-        s = self._relations.get(key)
-        owned = self._owned_rel
-        if s is None:
-            s = set()
-            self._relations[key] = s
-            if owned is not None:
-                owned.add(key)
-        elif owned is not None and key not in owned:
-            s = set(s)
-            self._relations[key] = s
-            owned.add(key)
-        return s
+        """The relation-index entry ``key``, ready to be written (copied if shared)."""
+        return _writable_set(self._relations, self._owned_rel, key)
 
     def relation(
         self, leaf: Atom, j: int, c: Atom, outer: str, inner: str, arity: int
@@ -629,3 +609,18 @@ class AtomSpace:
 
 #: the key under which OpenCog stores an atom's truth value
 TV_KEY = Node("PredicateNode", "*-TruthValueKey-*")
+
+
+def _writable_set(table: dict, owned: set | None, key: object) -> set:
+    """Copy-on-write for an index shared with a copy: the set under ``key`` in ``table``,
+    made if missing and copied once if this space does not own it yet (``owned`` is None
+    when nothing is shared)."""
+    s = table.get(key)
+    if s is None:
+        s = table[key] = set()
+        if owned is not None:
+            owned.add(key)
+    elif owned is not None and key not in owned:
+        s = table[key] = set(s)
+        owned.add(key)
+    return s

@@ -603,26 +603,23 @@ def _trigger_of(t: Term) -> P.Trigger | None:
     return None
 
 
+def _out_all(values: tuple, args: tuple, s: dict, trail: list) -> bool:
+    """Unify each argument with its value, in order, stopping at the first mismatch."""
+    return all(_out(v, a, s, trail) for v, a in zip(values, args, strict=True))
+
+
 @internal("time")
 def _time(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
     _need(args, 3, "time")
     t = time.localtime()
-    return (
-        _out(t.tm_hour, args[0], s, trail)
-        and _out(t.tm_min, args[1], s, trail)
-        and _out(t.tm_sec, args[2], s, trail)
-    )
+    return _out_all((t.tm_hour, t.tm_min, t.tm_sec), args, s, trail)
 
 
 @internal("date")
 def _date(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
     _need(args, 3, "date")
     t = time.localtime()
-    return (
-        _out(t.tm_year, args[0], s, trail)
-        and _out(t.tm_mon, args[1], s, trail)
-        and _out(t.tm_mday, args[2], s, trail)
-    )
+    return _out_all((t.tm_year, t.tm_mon, t.tm_mday), args, s, trail)
 
 
 @internal("random")
