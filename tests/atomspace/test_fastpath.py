@@ -128,3 +128,94 @@ def test_the_relation_index_follows_removals() -> None:
     assert s.relation(C("c"), 2, P("between"), "EvaluationLink", "ListLink", 3) == set()
     assert s._relations == {}
     assert query(s, rel(P("on"), C("a"), V("$y"))) == []
+
+
+# two-leaf relations: the shape that query() answers itself, alone or two joined
+binary = st.builds(
+    lambda p, inner, a, b: rel(p, a, b, inner=inner),
+    st.sampled_from(PREDS),
+    st.sampled_from(["ListLink", "MemberLink"]),
+    st.sampled_from(NODES + VARS),
+    st.sampled_from(NODES + VARS),
+)
+facts = st.builds(
+    lambda p, inner, a, b: rel(p, a, b, inner=inner),
+    st.sampled_from(PREDS),
+    st.sampled_from(["ListLink", "MemberLink"]),
+    st.sampled_from(NODES),
+    st.sampled_from(NODES),
+)
+
+
+@settings(max_examples=200, deadline=None)
+@given(
+    st.lists(binary, min_size=1, max_size=2),
+    st.lists(st.tuples(st.booleans(), facts, st.booleans()), min_size=1, max_size=25),
+)
+def test_answers_follow_every_add_and_remove(body: list, steps: list) -> None:
+    """query() reads the store as it is at each call: between queries relations come
+    and go (and the fast path's table of relation types is sometimes emptied, as a
+    fresh process would have it), and every answer is the general matcher's."""
+    from robocog.atomspace import fastpath
+
+    pattern = body[0] if len(body) == 1 else Link("AndLink", *body)
+    s = AtomSpace()
+    for adding, fact, forget in steps:
+        if adding:
+            s.add(fact)
+        else:
+            s.remove(fact)
+        if forget:
+            fastpath._PLAIN.clear()
+        found = query(s, pattern)
+        assert len(found) == len(key(found))
+        assert key(found) == key(Pattern(pattern).groundings(s))
+
+
+@settings(max_examples=100, deadline=None)
+@given(spaces(), st.lists(binary, min_size=1, max_size=2))
+def test_getlink_lists_the_variables_in_order_of_appearance(space: AtomSpace, body: list) -> None:
+    """Without a declaration a GetLink's groundings are its variables' atoms, in a
+    ListLink in order of first appearance when there are several."""
+    from robocog.atomspace import variables_of
+
+    pattern = body[0] if len(body) == 1 else Link("AndLink", *body)
+    vs = variables_of(pattern)
+    if not vs:
+        return
+    expected = [
+        b[vs[0]] if len(vs) == 1 else Link("ListLink", *[b[v] for v in vs])
+        for b in Pattern(pattern).groundings(space)
+    ]
+    assert space.execute(Link("GetLink", pattern)) == Link("SetLink", *expected)
+
+
+def test_two_joined_relations_by_hand() -> None:
+    s = AtomSpace()
+    for x, y in [("a", "b"), ("b", "c"), ("a", "c"), ("c", "a"), ("b", "b")]:
+        s.add(rel(P("on"), C(x), C(y)))
+    x, y, z = VARS
+    a, b, c = (C(n) for n in "abc")
+
+    def on(u: Node, w: Node) -> Link:
+        return rel(P("on"), u, w)
+
+    cases = [
+        # known at both ends: the far end is checked, not bound
+        ((on(a, y), on(y, c)), [{y: b}]),
+        ((on(y, b), on(a, y)), [{y: b}]),
+        # the variable twice in the second clause
+        ((on(a, y), on(y, y)), [{y: b}]),
+        # bound at the first end, at the last end
+        ((on(a, y), on(y, z)), [{y: b, z: c}, {y: b, z: b}, {y: c, z: a}]),
+        ((on(x, y), on(y, a)), [{x: b, y: c}, {x: a, y: c}]),
+        # nothing known: the general path
+        ((on(x, y), on(y, x)), [{x: a, y: c}, {x: c, y: a}, {x: b, y: b}]),
+        # a relation that is not there, a constant that is not there
+        ((on(a, y), rel(P("near"), y, z)), []),
+        ((on(a, y), on(y, C("absent"))), []),
+    ]
+    for clauses, expected in cases:
+        found = query(s, Link("AndLink", *clauses))
+        assert len(found) == len(expected), clauses
+        assert key(found) == key(expected), clauses

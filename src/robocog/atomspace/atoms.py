@@ -145,7 +145,11 @@ def variables_of(atom: Atom, found: list[Atom] | None = None) -> list[Atom]:
     if atom[0] in _t.QUERY_TYPES or atom[0] == "LambdaLink":
         return found  # a nested scope binds its own variables
     for a in atom[1]:
-        variables_of(a, found)
+        if a.__class__ is Node:  # the node case above, without a call per leaf
+            if a[0] == "VariableNode" and a not in found:
+                found.append(a)
+        else:
+            variables_of(a, found)
     return found
 
 

@@ -24,8 +24,13 @@ from typing import TYPE_CHECKING, Any
 
 from robocog.atomspace import types as _t
 from robocog.atomspace.atoms import Atom, Link, Node, _raw_link, variables_of
-from robocog.atomspace.fastpath import fast_query
-from robocog.atomspace.matcher import PatternError, compile_pattern, is_variable_decl, substitute
+from robocog.atomspace.matcher import (
+    PatternError,
+    compile_pattern,
+    is_variable_decl,
+    query,
+    substitute,
+)
 from robocog.atomspace.values import FALSE_TV, TRUE_TV, QueueValue, TruthValue, Value
 
 if TYPE_CHECKING:
@@ -144,17 +149,28 @@ def run_query(space: AtomSpace, link: Atom) -> Any:
     """Run a GetLink, BindLink, QueryLink, MeetLink or SatisfactionLink."""
     decl, body, rewrite = _split(link)
     t = link[0]
-    # no declaration: the plain relation queries need no compiled pattern
-    found = fast_query(space, body) if decl is None and t != "SatisfactionLink" else None
-    if found is None:
+    if decl is None and t != "SatisfactionLink":
+        # no declaration: every variable of the body, in order, free; query() takes the
+        # fast path for the plain relation queries, which need no compiled pattern
+        found = query(space, body)
+        vs = variables_of(body)
+    else:
         pattern = compile_pattern(body, decl)
         if t == "SatisfactionLink":
             return TRUE_TV if pattern.groundings(space, limit=1) else FALSE_TV
         found = pattern.groundings(space)
         vs = pattern.variables
-    else:
-        vs = variables_of(body)
     if t == "GetLink":
+        # grounding_atom, inlined for one and two variables (a ListLink is ordered)
+        if len(vs) == 1:
+            v = vs[0]
+            return _raw_link("SetLink", tuple([b[v] for b in found]))
+        if len(vs) == 2:
+            v, w = vs
+            new = tuple.__new__
+            return _raw_link(
+                "SetLink", tuple([new(Link, ("ListLink", (b[v], b[w]))) for b in found])
+            )
         return _raw_link("SetLink", tuple([grounding_atom(vs, b) for b in found]))
     if t == "MeetLink":
         return QueueValue(grounding_atom(vs, b) for b in found)

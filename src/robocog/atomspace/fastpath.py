@@ -11,6 +11,14 @@ that leaf at that place; any other plain clause from the incoming set of a known
 (checked in full). A clause's variables, once bound, anchor the clauses joined to it,
 and the clause with the fewest candidates is taken next, as in the general matcher.
 
+The commonest shapes have their own code, as a query of them takes about a microsecond
+and each call or step saved shows: one two-leaf relation with one leaf known is answered
+by ``matcher.query`` itself, two joined by a variable by :func:`_two`, longer
+conjunctions of relations by :func:`_pair_join`, other plain clauses by the rest of
+:func:`fast_query`. None of them keeps anything between queries but ``_PLAIN``, the
+table of which link types are plain relations, which depends on the type declarations
+only, never on the store's contents.
+
 Only what this path answers exactly as the general matcher would is taken: no variable
 declaration (every variable free and untyped), no limit, a flat space, and clauses that
 are ordered links of ordinary relation types holding nodes and ordered links of nodes.
@@ -55,24 +63,26 @@ _EVAL_PREDICATES = frozenset({"GroundedPredicateNode", "DefinedPredicateNode"})
 _VAR = "VariableNode"
 
 
-#: type -> True for an ordered link type the matcher treats as a plain relation (filled
-#: on first sight of each type by _plain; an atom of a type exists only once the type
-#: is declared, and a declaration never changes, so the answer never does)
-_PLAIN: dict[str, bool] = {}
+#: the ordered link types the matcher treats as plain relations, as they are met (a set,
+#: as membership is the cheapest test on the hot path; an atom of a type exists only
+#: once the type is declared, and a declaration never changes, so a member stays one)
+_PLAIN: set[str] = set()
 
 
 def _plain(t: str) -> bool:
-    """True for an ordered link type the matcher treats as a plain relation."""
-    ok = _PLAIN.get(t)
-    if ok is None:
-        ok = (
-            t in _t.LINK_TYPES
-            and t not in _t.UNORDERED
-            and t not in _NOT_PLAIN
-            and t not in _t.QUERY_TYPES
-            and not _t.is_a(t, "PatternLink")
-        )
-        _PLAIN[t] = ok
+    """True for an ordered link type the matcher treats as a plain relation (and then
+    remembered in ``_PLAIN``; other types are answered afresh, as they leave this path)."""
+    if t in _PLAIN:
+        return True
+    ok = (
+        t in _t.LINK_TYPES
+        and t not in _t.UNORDERED
+        and t not in _NOT_PLAIN
+        and t not in _t.QUERY_TYPES
+        and not _t.is_a(t, "PatternLink")
+    )
+    if ok:
+        _PLAIN.add(t)
     return ok
 
 
@@ -221,44 +231,16 @@ def _candidates(space: AtomSpace, clause: tuple, b: Bindings) -> tuple[int, obje
 def fast_query(space: AtomSpace, body: Atom) -> list[Bindings] | None:
     """Every grounding of ``body`` (no declaration, every variable free), or None if
     the body is not a conjunction of plain clauses (then the general matcher runs)."""
-    if space._parent is not None or body.__class__ is not Link:
+    if body.__class__ is not Link or space._parent is not None:
         return None
-    found: list[Bindings]
     typ, out = body
-    if typ != "AndLink":
-        # one clause (R c (L a0 a1)): _pair_clause and _pair_one inlined, as this is
-        # the query asked most and the calls would cost a fifth of its time
-        if len(out) == 2 and (_PLAIN.get(typ) or _plain(typ)):
-            c, inner = out
-            if (
-                c.__class__ is Node
-                and inner.__class__ is Link
-                and c[0] != _VAR
-                and (typ != "EvaluationLink" or c[0] not in _EVAL_PREDICATES)
-            ):
-                itype, leaves = inner
-                if len(leaves) == 2 and (_PLAIN.get(itype) or _plain(itype)):
-                    a0, a1 = leaves
-                    if a0.__class__ is Node and a1.__class__ is Node:
-                        if a0[0] == _VAR:
-                            if a1[0] != _VAR:
-                                best = space._relations.get((a1, 1, c, typ, itype, 2))
-                                if best is None:
-                                    return []
-                                return [{a0: x} for x in best]
-                        elif a1[0] == _VAR:
-                            best = space._relations.get((a0, 0, c, typ, itype, 2))
-                            if best is None:
-                                return []
-                            return [{a1: x} for x in best]
-        pc = _pair_clause(body)
-        if pc is not None:
-            one = _pair_one(space._relations.get, pc)
-            if one is not None:
-                return one
-    else:
+    if typ == "AndLink":
+        if len(out) == 2:
+            found = _two(space._relations.get, out[0], out[1])
+            if found is not None:
+                return found
         pairs = []
-        for c in body[1]:
+        for c in out:
             pc = _pair_clause(c)
             if pc is None:
                 break
@@ -268,6 +250,12 @@ def fast_query(space: AtomSpace, body: Atom) -> list[Bindings] | None:
                 found = []
                 if _pair_join(space._relations.get, pairs, _NO_BINDINGS, found):
                     return found
+    else:
+        pc = _pair_clause(body)
+        if pc is not None:
+            one = _pair_one(space._relations.get, pc)
+            if one is not None:
+                return one
     atoms = space._atoms
     try:
         if body[0] == "AndLink":
@@ -348,7 +336,7 @@ def _pair_clause(clause: Atom) -> tuple | None:
     if clause.__class__ is not Link:
         return None
     typ, out = clause
-    if len(out) != 2 or not (_PLAIN.get(typ) or _plain(typ)):
+    if len(out) != 2 or not (typ in _PLAIN or _plain(typ)):
         return None
     c, inner = out
     if c.__class__ is not Node or inner.__class__ is not Link or c[0] == _VAR:
@@ -356,12 +344,117 @@ def _pair_clause(clause: Atom) -> tuple | None:
     if typ == "EvaluationLink" and c[0] in _EVAL_PREDICATES:
         return None
     itype, leaves = inner
-    if not (_PLAIN.get(itype) or _plain(itype)):
+    if not (itype in _PLAIN or _plain(itype)):
         return None
     for a in leaves:
         if a.__class__ is not Node:
             return None
     return typ, c, itype, leaves, len(leaves)
+
+
+def _two(rel_get, p: Atom, q: Atom) -> list[Bindings] | None:  # noqa: ANN001, C901
+    """Every grounding of ``(AndLink p q)`` when p and q are clauses ``(R c (L a0 a1))``
+    with node leaves joined by a variable, such as ``on(B, ?y), on(?y, ?z)``; None for
+    any other shape (then :func:`_pair_join` or the general matcher answers).
+
+    The rarest known leaf anchors one clause; each atom that gives the variable at that
+    clause's other end is looked up in the other clause. The two clauses are read here
+    rather than by a helper, as reading them is a third of the query's time.
+    """
+    if p.__class__ is not Link or q.__class__ is not Link:
+        return None
+    # atoms are indexed rather than unpacked: Python unpacks tuple subclasses slowly
+    pt = p[0]
+    po = p[1]
+    qt = q[0]
+    qo = q[1]
+    if len(po) != 2 or len(qo) != 2:
+        return None
+    if not (pt in _PLAIN or _plain(pt)) or not (qt in _PLAIN or _plain(qt)):
+        return None
+    pc, pi = po
+    qc, qi = qo
+    if (
+        pc.__class__ is not Node
+        or qc.__class__ is not Node
+        or pc[0] == "VariableNode"
+        or qc[0] == "VariableNode"
+        or pt == "EvaluationLink"
+        and pc[0] in _EVAL_PREDICATES
+        or qt == "EvaluationLink"
+        and qc[0] in _EVAL_PREDICATES
+    ):
+        return None
+    # a plain type is a link type: pi and qi are links once their types are plain
+    pit = pi[0]
+    qit = qi[0]
+    if not (pit in _PLAIN or _plain(pit)) or not (qit in _PLAIN or _plain(qit)):
+        return None
+    pl = pi[1]
+    ql = qi[1]
+    if len(pl) != 2 or len(ql) != 2:
+        return None
+    p0, p1 = pl
+    q0, q1 = ql
+    if (
+        p0.__class__ is not Node
+        or p1.__class__ is not Node
+        or q0.__class__ is not Node
+        or q1.__class__ is not Node
+    ):
+        return None
+    # the anchor: the known leaf with the fewest relations; v the leaf at its other end
+    best = None
+    if p0[0] != "VariableNode":
+        best = rel_get((p0, 0, pc, pt, pit, 2))
+        if best is None:
+            return []
+        v, anchored_p = p1, True
+    if p1[0] != "VariableNode":
+        s = rel_get((p1, 1, pc, pt, pit, 2))
+        if s is None:
+            return []
+        if best is None or len(s) < len(best):
+            best, v, anchored_p = s, p0, True
+    if q0[0] != "VariableNode":
+        s = rel_get((q0, 0, qc, qt, qit, 2))
+        if s is None:
+            return []
+        if best is None or len(s) < len(best):
+            best, v, anchored_p = s, q1, False
+    if q1[0] != "VariableNode":
+        s = rel_get((q1, 1, qc, qt, qit, 2))
+        if s is None:
+            return []
+        if best is None or len(s) < len(best):
+            best, v, anchored_p = s, q0, False
+    if best is None or v[0] != "VariableNode":
+        return None
+    if anchored_p:
+        typ, c, itype, b0, b1 = qt, qc, qit, q0, q1
+    else:
+        typ, c, itype, b0, b1 = pt, pc, pit, p0, p1
+    # the other clause, looked up by v at position j; w is its other leaf
+    if b0 == v:
+        j, w = 0, b1
+    elif b1 == v:
+        j, w = 1, b0
+    else:
+        return None  # no shared variable: a product, left to _pair_join
+    found: list[Bindings] = []
+    if w[0] != "VariableNode" or w == v:
+        # w is known: a constant, or v again
+        for x in best:
+            s = rel_get((x, j, c, typ, itype, 2))
+            if s is not None and (x if w == v else w) in s:
+                found.append({v: x})
+        return found
+    for x in best:
+        s = rel_get((x, j, c, typ, itype, 2))
+        if s is not None:
+            for z in s:
+                found.append({v: x, w: z})
+    return found
 
 
 def _pair_one(rel_get, clause: tuple) -> list[Bindings] | None:  # noqa: ANN001

@@ -23,6 +23,8 @@ from typing import Any
 
 from robocog.atomspace import types as _t
 from robocog.atomspace.atoms import Atom, Link, Node
+from robocog.atomspace.execute import evaluate as _evaluate
+from robocog.atomspace.execute import execute as _execute
 from robocog.atomspace.values import DEFAULT_TV, TruthValue, Value
 
 _EMPTY: frozenset = frozenset()
@@ -585,15 +587,11 @@ class AtomSpace:
     # ------------------------------------------------------------------ execution
     def execute(self, atom: Atom) -> Any:
         """Execute an executable atom (a query link, an ExecutionOutputLink) here."""
-        from robocog.atomspace.execute import execute
-
-        return execute(self, atom)
+        return _execute(self, atom)
 
     def evaluate(self, atom: Atom) -> TruthValue:
         """Evaluate an evaluatable atom (SatisfactionLink, EqualLink, ...) to a TV."""
-        from robocog.atomspace.execute import evaluate
-
-        return evaluate(self, atom)
+        return _evaluate(self, atom)
 
     def load_atomese(self, text: str, source: str = "<string>") -> list[Atom]:
         """Parse Atomese text and add its atoms; returns the top-level atoms."""
