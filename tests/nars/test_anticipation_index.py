@@ -22,6 +22,14 @@ def _scan(nar: NAR, source):  # noqa: ANN001, ANN202 - reference: the plain newe
     return best
 
 
+def _sources(names: list[str]) -> list:  # noqa: ANN202 - parsed terms
+    sources = [parse_term(f"<$1 --> [{n}]>") for n in names]
+    sources += [parse_term(f"<{n} --> [$1]>") for n in names]
+    sources += [parse_term("<$1 --> $2>"), parse_term("<$1 --> [nothing]>")]
+    sources += [parse_term(f"(<$1 --> [{n}]> &/ <$1 --> [{m}]>)") for n in names for m in names]
+    return sources
+
+
 def test_indexed_precondition_lookup_matches_scan() -> None:
     rng = random.Random(3)
     nar = NAR(seed=3)
@@ -30,14 +38,37 @@ def test_indexed_precondition_lookup_matches_scan() -> None:
     for _ in range(120):
         a, b = rng.choice(names), rng.choice(names)
         nar.add_input(f"<{a} --> [{b}]>. :|:")
-    groups = nar._ground_spikes()
-    sources = [parse_term(f"<$1 --> [{n}]>") for n in names]
-    sources += [parse_term(f"<{n} --> [$1]>") for n in names]
-    sources += [parse_term("<$1 --> $2>"), parse_term("<$1 --> [nothing]>")]
-    sources += [parse_term(f"(<$1 --> [{n}]> &/ <$1 --> [{m}]>)") for n in names for m in names]
+    groups = nar._spike_groups()
     found = 0
-    for s in sources:
+    for s in _sources(names):
         want = _scan(nar, s)
         assert nar._source_spike(s, groups) is want
         found += want is not None
     assert found > len(names)  # the check compared real events, not only misses
+
+
+def test_groups_follow_the_index_as_it_fills_overflows_and_loses_concepts() -> None:
+    """Groups kept in step with the index agree with the scan at every step, through a
+    full index dropping its oldest concepts and through evictions from memory."""
+    rng = random.Random(5)
+    nar = NAR(seed=5, occurrence_time_index_size=16, concepts_max=64)
+    nar.output = lambda _line: None
+    names = [f"n{i}" for i in range(12)]
+    sources = _sources(names[:4])
+    nar._spike_groups()  # built early, then only maintained
+    compared = 0
+    for step in range(300):
+        a, b = rng.choice(names), rng.choice(names)
+        nar.add_input(f"<{a} --> [{b}]>. :|:")
+        if step % 10 == 0:
+            for s in sources:
+                want = _scan(nar, s)
+                assert nar._source_spike(s) is want
+                compared += want is not None
+    assert len(nar.time_index) == 16
+    assert nar.memory.evictions > 0
+    # what was maintained is what a fresh build gives, group by group, in order
+    kept = {k: list(v) for k, v in nar._spike_groups().items()}
+    nar._groups = None
+    assert kept == {k: list(v) for k, v in nar._spike_groups().items()}
+    assert compared > 50

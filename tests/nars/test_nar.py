@@ -113,9 +113,34 @@ def test_random_stream_keeps_memory_within_capacity() -> None:
     live = set(nar.memory.concepts.values())
     for d in nar.memory.atom_index.values():
         assert set(d) <= live
-    for d in [*nar.table_index.values(), *nar.pre_index.values()]:
+    for d in nar.table_index.values():
         assert set(d) <= live
     assert set(nar.time_index) <= live
+
+
+def test_forgotten_concepts_are_released_under_an_endless_event_stream() -> None:
+    """Evicted concepts must not stay reachable from any index: recurring preconditions
+    into many consequences overflow the small implication tables, which is where a
+    concept could linger after it left memory."""
+    import gc
+
+    from robocog.nars.memory import Concept
+
+    rng = random.Random(2)
+    nar = NAR(concepts_max=150, table_size=2)
+    nar.output = None
+    for i in range(1000):
+        k = rng.random()
+        if k < 0.4:
+            nar.add_input(f"<f{rng.randrange(40)} --> [w]>. :|:")
+        elif k < 0.8:
+            nar.add_input(f"<p{rng.randrange(400)} --> [z]>. :|:")
+        else:
+            nar.add_input(f"<q{i} --> [v]>. :|:")
+    assert nar.memory.evictions > 300
+    gc.collect()
+    alive = sum(isinstance(o, Concept) for o in gc.get_objects())
+    assert alive <= len(nar.memory) + 10
 
 
 def test_many_distinct_names_are_no_problem() -> None:

@@ -90,3 +90,26 @@ def test_merge_interleaves_and_truncates(a: tuple[int, ...], b: tuple[int, ...],
 def test_overlap_and_duplicates(a: tuple[int, ...], b: tuple[int, ...]) -> None:
     assert overlap(a, b) == any(x in b for x in a)
     assert has_duplicate(a + b) == overlap(a, b)
+
+
+def test_sweep_drops_unreferenced_subtrees_in_one_pass_and_keeps_held_terms() -> None:
+    from robocog.nars import terms
+
+    held = compound("-->", (atom("sweep_x"), compound("*", (atom("sweep_a"), atom("sweep_b")))))
+
+    def chain(i: int) -> None:
+        t = atom(f"sweep_z{i}")
+        for j in range(5):
+            t = compound("*", (t, atom(f"sweep_w{i}_{j}")))
+
+    for i in range(200):
+        chain(i)
+    before = terms.interned_count()
+    terms._sweep()
+    gone = before - terms.interned_count()
+    assert gone >= 200 * 11  # every chain: 6 names and 5 products
+    assert compound("*", (atom("sweep_a"), atom("sweep_b"))) is held.args[1]
+    assert str(held) == "<sweep_x --> (sweep_a * sweep_b)>"
+    # what the sweep dropped is made again on demand, as a new interned term
+    again = compound("*", (atom("sweep_z0"), atom("sweep_w0_0")))
+    assert again is compound("*", (atom("sweep_z0"), atom("sweep_w0_0")))

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 from .stamp import Stamp, fmt, merge
 from .terms import Term
@@ -96,4 +96,3 @@ class Implication:
     dt: float = 0.0
     creation_time: int = 0
     source: Term | None = None
-    extra: dict[str, object] = field(default_factory=dict)

@@ -34,6 +34,7 @@ class Concept:
         "priority_time",
         "selected_time",
         "process_id",
+        "timed",
     )
 
     def __init__(self, cid: int, term: Term, now: int, operations: int, table_size: int) -> None:
@@ -53,6 +54,7 @@ class Concept:
         self.priority_time = 0  # when ``priority`` was set (decay is applied lazily)
         self.selected_time = 0  # when an event of this concept was last selected (ONA: 0)
         self.process_id = 0
+        self.timed = False  # ever entered the occurrence-time index (most never do)
 
     def use(self, now: int, eternal_input: bool, boost: int) -> None:
         """Record a use (input eternal beliefs count as very many uses)."""
@@ -225,12 +227,13 @@ class Memory:
         self.concepts.pop(c.term, None)
         if self.on_remove is not None:
             self.on_remove(c)
-        for a in _index_atoms(c.term):
-            d = self.atom_index.get(a)
+        index = self.atom_index
+        for a in c.term.index_names():
+            d = index.get(a)
             if d is not None:
                 d.pop(c, None)
                 if not d:
-                    del self.atom_index[a]
+                    del index[a]
 
     def related(self, term: Term) -> Iterator[Concept]:
         """The concept of ``term``, then every concept sharing a name with it (ONA's order).

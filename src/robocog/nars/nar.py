@@ -343,6 +343,9 @@ class NAR(SensorimotorMixin, DecisionMixin):
     def _queue(self, e: Event, priority: float) -> bool:
         q = self.memory.belief_events
         if e.type == BELIEF:
+            prio = q.prio
+            if len(prio) >= q.capacity and priority < min(prio):
+                return False  # the full queue would refuse it whatever the checks below say
             if q.contains(e):
                 return False
             c = self.memory.find(e.term)
@@ -365,8 +368,14 @@ class NAR(SensorimotorMixin, DecisionMixin):
             self._add_implication(e.term, e.truth, e.stamp, e.dt, is_input, priority)
             return
         c = self.memory.conceptualize(e.term, now)
-        c.use(now, eternal_input, self.config.eternal_input_usage_boost)
-        self._set_priority(c, max(self._priority(c), priority))
+        # Concept.use and the lazy priority decay, written out: this runs for every
+        # derived belief
+        c.use_count += self.config.eternal_input_usage_boost if eternal_input else 1
+        c.last_used = now
+        dt = now - c.priority_time
+        old_p = c.priority if dt <= 0 else c.priority * self.config.concept_durability**dt
+        c.priority = old_p if old_p > priority else priority
+        c.priority_time = now
         if e.occurrence_time != ETERNAL:
             if index:
                 # derived compositions stay out of the occurrence-time index: they
@@ -391,7 +400,12 @@ class NAR(SensorimotorMixin, DecisionMixin):
             if revised:
                 self._add_event(belief, priority, revised=True)
             return
-        belief, revised = self._revision_and_choice(c.belief, e)
+        if c.belief is None:
+            # a first belief needs no copy: of an eternal event only ``creation_time``
+            # ever changes, and it is ``now`` already
+            belief, revised = e, False
+        else:
+            belief, revised = self._revision_and_choice(c.belief, e)
         belief.creation_time = now
         c.belief = belief
         if e.term.op in ("==>", "<=>"):
@@ -438,8 +452,6 @@ class NAR(SensorimotorMixin, DecisionMixin):
             return
         if term.op in ("==>", "<=>") and not term.has_indep_var:
             return
-        if has_duplicate(stamp):
-            return
         e = Event(term, BELIEF, t, stamp, occurrence, self.time)
         self._add_event(e, priority)
 
@@ -477,8 +489,11 @@ class NAR(SensorimotorMixin, DecisionMixin):
         cfg = self.config
         table = _rule_table(cfg.semantic_inference_nal_level)
         now = self.time
-        single = Derivation(self, e.occurrence_time, e.stamp, priority, 1.0)
-        apply_single(table, e.term, e.truth, single)
+        # a stamp counting one input twice refuses every conclusion drawn with it, so
+        # such a premise (pair) is skipped whole rather than conclusion by conclusion
+        if not has_duplicate(e.stamp):
+            single = Derivation(self, e.occurrence_time, e.stamp, priority, 1.0)
+            apply_single(table, e.term, e.truth, single)
         self.process_id += 1
         avg = self.matched_total / now
         self.concept_threshold = min(
@@ -517,6 +532,8 @@ class NAR(SensorimotorMixin, DecisionMixin):
                 continue
             c.use(now, False, 0)
             stamp = merge(e.stamp, belief.stamp, cfg.stamp_size)
+            if has_duplicate(stamp):
+                continue
             d = Derivation(self, e.occurrence_time, stamp, priority, cp)
             apply_double(table, e.term, c.term, e.truth, belief.truth, d)
             special(e.term, c.term, e.truth, belief.truth, d)
@@ -662,6 +679,8 @@ class NAR(SensorimotorMixin, DecisionMixin):
                             continue
                         done.add(key)
                         stamp = merge(b1.stamp, b2.stamp, self.config.stamp_size)
+                        if has_duplicate(stamp):
+                            continue
                         der = Derivation(self, ETERNAL, stamp, 1.0, 1.0)
                         apply_double(table, c.term, d.term, b1.truth, b2.truth, der)
 
@@ -717,7 +736,6 @@ class NAR(SensorimotorMixin, DecisionMixin):
             "pending": self.pending_questions,
             "time_index": self.time_index,
             "table_index": self.table_index,
-            "pre_index": self.pre_index,
             "links_by_subject": self.links_by_subject,
             "general_links": self.general_links,
             "goal_layers": self.goal_layers,
@@ -758,7 +776,6 @@ class NAR(SensorimotorMixin, DecisionMixin):
         for key in (
             "time_index",
             "table_index",
-            "pre_index",
             "goal_layers",
             "recent_goal_concepts",
         ):

@@ -66,10 +66,11 @@ class SensorimotorMixin:
 
     def _init_sensorimotor(self) -> None:
         self.time_index: deque[Concept] = deque(maxlen=self.config.occurrence_time_index_size)  # type: ignore[attr-defined]
+        #: the index's concepts grouped by term shape (see ``_spike_groups``), or None
+        #: until anticipation first needs them
+        self._groups: dict[object, dict[Concept, None]] | None = None
         #: op id -> concepts with implications in that table
         self.table_index: dict[int, dict[Concept, None]] = {}
-        #: (precondition without op, op id) -> concepts with such implications
-        self.pre_index: dict[tuple[Term, int], dict[Concept, None]] = {}
         #: declarative links by subject: ground subject -> {link term}; general ones apart
         self.links_by_subject: dict[Term, dict[Term, None]] = {}
         self.general_links: dict[Term, None] = {}
@@ -116,7 +117,6 @@ class SensorimotorMixin:
         table = target.tables(cfg.operations_max, cfg.table_size)[opi]
         stored = table.add_and_revise(imp, cfg.stamp_size)
         self.table_index.setdefault(opi, {})[target] = None
-        self.pre_index.setdefault((pre, opi), {})[target] = None
         if stored is not None and not is_input and self._shows(priority):  # type: ignore[attr-defined]
             self._print(  # type: ignore[attr-defined]
                 f"Derived: dt={dt:f} {term}. Priority={priority:f} Stamp={fmt(stamp)} {t}"
@@ -137,10 +137,14 @@ class SensorimotorMixin:
 
     def _forget_concept(self, c: Concept) -> None:
         """Drop an evicted concept from the implication, link and time indexes."""
-        try:
-            self.time_index.remove(c)
-        except ValueError:
-            pass
+        if c.timed:
+            try:
+                self.time_index.remove(c)
+            except ValueError:
+                pass  # it fell off the end of the full index
+            else:
+                if self._groups is not None:
+                    _group_remove(self._groups, c)
         tables = c.precondition_beliefs
         if tables is not None:
             for opi, table in enumerate(tables):
@@ -149,13 +153,6 @@ class SensorimotorMixin:
                 d = self.table_index.get(opi)
                 if d is not None:
                     d.pop(c, None)
-                for imp in table.items:
-                    key = (imp.source, opi)
-                    targets = self.pre_index.get(key)  # type: ignore[arg-type]
-                    if targets is not None:
-                        targets.pop(c, None)
-                        if not targets:
-                            del self.pre_index[key]  # type: ignore[arg-type]
         t = c.term
         if t.op in ("==>", "<=>"):
             self.general_links.pop(t, None)
@@ -236,11 +233,17 @@ class SensorimotorMixin:
     def _note_event(self, c: Concept) -> None:
         """Remember that ``c`` just received an event (newest first)."""
         idx = self.time_index
+        groups = self._groups
+        c.timed = True
         try:
             idx.remove(c)
         except ValueError:
-            pass
+            if groups is not None and len(idx) == idx.maxlen:
+                _group_remove(groups, idx[-1])  # about to fall off the full index
         idx.appendleft(c)
+        if groups is not None:
+            _group_remove(groups, c)
+            _group_add(groups, c)
 
     def _process_belief_event(self, e: Event, priority: float) -> None:
         """ONA's sensorimotor processing of a selected belief event (Cycle.c, 0.9.2).
@@ -384,10 +387,11 @@ class SensorimotorMixin:
         # implications whose precondition happened long ago without computing them.
         weak = min(0.05, 1.98 * (threshold - 0.5)) if threshold > 0.5 + 1e-9 else 0.0
         # precondition term -> (its event, that event projected to now with the
-        # operation, whether it is weak); the same precondition serves many
-        # implications. Dropped when an event or the concept store changes below.
-        sources: dict[Term, tuple[Event, Truth, bool] | None] = {}
-        groups: dict[object, list[Concept]] | None = None
+        # operation, whether it is weak, the bindings making the precondition that
+        # event's term); the same precondition serves many implications. Dropped when
+        # an event or the concept store changes below.
+        sources: dict[Term, tuple[Event, Truth, bool, dict[Term, Term] | None] | None] = {}
+        groups: dict[object, dict[Concept, None]] | None = None
         var_sources: list[Term] = []
         evictions = mem.evictions
         for post in list(targets):
@@ -404,7 +408,7 @@ class SensorimotorMixin:
                     if source.has_var:
                         var_sources.append(source)
                         if groups is None:
-                            groups = self._ground_spikes()
+                            groups = self._spike_groups()
                     spike = self._source_spike(source, groups)
                     if spike is None:
                         entry = None
@@ -412,11 +416,11 @@ class SensorimotorMixin:
                         pre_i = tf.intersection(
                             tf.projection(spike.truth, spike.occurrence_time, now), op_truth
                         )
-                        entry = (spike, pre_i, pre_i.c < weak)
+                        entry = (spike, pre_i, pre_i.c < weak, unify(source, spike.term))
                     sources[source] = entry
                 if entry is None:
                     continue
-                spike, pre_i, is_weak = entry
+                spike, pre_i, is_weak, bind = entry
                 if is_weak and imp.truth.f * pre_i.f != 0.0:
                     continue
                 if opi:
@@ -432,7 +436,6 @@ class SensorimotorMixin:
                 ):
                     continue
                 self._add_negative_evidence(post, opi, imp, spike.truth)
-                bind = unify(source, spike.term)
                 if bind is None:
                     continue
                 outcome = apply(imp.term.args[1], bind) if bind else imp.term.args[1]
@@ -467,52 +470,26 @@ class SensorimotorMixin:
                     for v in var_sources:
                         sources.pop(v, None)
                     var_sources.clear()
-                    groups = None
 
-    def _ground_spikes(self) -> dict[object, list[Concept]]:
-        """Concepts of the occurrence-time index holding a belief event and no variable,
-        newest first, grouped so that a precondition with variables is unified only
-        against terms that can match it: by connector and arity, and by each component
-        at each position (a path of connector, arity and index from the top). Key
-        ``None`` holds all of them."""
-        groups: dict[object, list[Concept]] = {None: []}
-        everything = groups[None]
-        get = groups.get
-        for c in self.time_index:
-            t = c.term
-            if c.belief_spike is None or t.has_var:
-                continue
-            everything.append(c)
-            if t.op is None:
-                continue
-            key: object = (t.op, len(t.args))
-            got = get(key)
-            if got is None:
-                groups[key] = [c]
-            else:
-                got.append(c)
-            stack: list[tuple[tuple[object, ...], Term]] = [((), t)]
-            while stack:
-                path, x = stack.pop()
-                op = x.op
-                if op is None:
-                    continue
-                n = len(x.args)
-                for i, arg in enumerate(x.args):
-                    sub = (*path, op, n, i)
-                    key = (sub, arg)
-                    got = get(key)
-                    if got is None:
-                        groups[key] = [c]
-                    elif got[-1] is not c:
-                        got.append(c)
-                    if arg.op is not None:
-                        stack.append((sub, arg))
+    def _spike_groups(self) -> dict[object, dict[Concept, None]]:
+        """Concepts of the occurrence-time index without variables, grouped so that a
+        precondition with variables is unified only against terms that can match it: by
+        connector and arity, and by each component at each position (a path of
+        connector, arity and index from the top); key ``None`` holds all of them. Each
+        group is ordered oldest to newest. Built once, then kept in step with the index
+        by :meth:`_note_event` and :meth:`_forget_concept`; whether a member has a belief
+        event is checked where it is read, since events come and go more often than
+        concepts."""
+        groups = self._groups
+        if groups is None:
+            groups = self._groups = {None: {}}
+            for c in reversed(self.time_index):  # oldest first: the newest ends last
+                _group_add(groups, c)
         return groups
 
     @staticmethod
     def _spike_key(source: Term) -> object:
-        """The group of :meth:`_ground_spikes` a term with variables must be in: its
+        """The group of :meth:`_spike_groups` a term with variables must be in: its
         shallowest ground component with its path, else its connector and arity."""
         if source.op is None:
             return None
@@ -531,7 +508,7 @@ class SensorimotorMixin:
         return (source.op, len(source.args))
 
     def _source_spike(
-        self, source: Term, groups: dict[object, list[Concept]] | None = None
+        self, source: Term, groups: dict[object, dict[Concept, None]] | None = None
     ) -> Event | None:
         """The belief event of a precondition concept; a concept with variables holds
         the newest event that instantiates it (ONA activates such concepts too)."""
@@ -539,11 +516,12 @@ class SensorimotorMixin:
         best = c.belief_spike if c is not None else None
         if source.has_var:
             if groups is None:
-                groups = self._ground_spikes()
-            for c2 in groups.get(self._spike_key(source), ()):
-                if unify(source, c2.term) is None:
-                    continue
+                groups = self._spike_groups()
+            group = groups.get(self._spike_key(source))
+            for c2 in reversed(group) if group else ():  # newest first
                 b = c2.belief_spike
+                if b is None or unify(source, c2.term) is None:
+                    continue
                 if best is None or b.occurrence_time > best.occurrence_time:
                     best = b
                 break
@@ -571,3 +549,46 @@ class SensorimotorMixin:
         post.tables(cfg.operations_max, cfg.table_size)[opi].add_and_revise(
             Implication(imp.term, neg, (), imp.dt, imp.creation_time, imp.source), cfg.stamp_size
         )
+
+
+def _group_keys(t: Term) -> list[object]:
+    """The keys of every group of ``_spike_groups`` that ``t`` belongs to."""
+    keys: list[object] = [None]
+    if t.op is None:
+        return keys
+    keys.append((t.op, len(t.args)))
+    stack: list[tuple[tuple[object, ...], Term]] = [((), t)]
+    while stack:
+        path, x = stack.pop()
+        op = x.op
+        n = len(x.args)
+        for i, arg in enumerate(x.args):
+            sub = (*path, op, n, i)
+            keys.append((sub, arg))
+            if arg.op is not None:
+                stack.append((sub, arg))
+    return keys
+
+
+def _group_add(groups: dict[object, dict[Concept, None]], c: Concept) -> None:
+    """Enter ``c`` as the newest member of its groups (terms with variables stay out)."""
+    if c.term.has_var:
+        return
+    for k in _group_keys(c.term):
+        d = groups.get(k)
+        if d is None:
+            groups[k] = {c: None}
+        else:
+            d[c] = None
+
+
+def _group_remove(groups: dict[object, dict[Concept, None]], c: Concept) -> None:
+    """Take ``c`` out of its groups, dropping groups left empty."""
+    if c.term.has_var:
+        return
+    for k in _group_keys(c.term):
+        d = groups.get(k)
+        if d is not None:
+            d.pop(c, None)
+            if not d and k is not None:
+                del groups[k]

@@ -6,6 +6,8 @@ operation id, so a decision looks only at the implications that can reach its go
 
 from __future__ import annotations
 
+from bisect import bisect_right
+
 from .event import Implication
 from .stamp import merge, overlap
 from .truth import c2w, expectation, revision
@@ -14,11 +16,14 @@ from .truth import c2w, expectation, revision
 class Table:
     """Add-and-revise table of implications, best expectation first."""
 
-    __slots__ = ("items", "size")
+    __slots__ = ("items", "size", "_neg")
 
     def __init__(self, size: int) -> None:
         self.items: list[Implication] = []
         self.size = size
+        #: minus each item's expectation, ascending: kept beside the items so that
+        #: placing a revised link is a bisection, not a recomputation of every entry
+        self._neg: list[float] = []
 
     def __len__(self) -> int:
         return len(self.items)
@@ -26,17 +31,23 @@ class Table:
     def __iter__(self):  # noqa: ANN204 - iterator of Implication
         return iter(self.items)
 
-    def _insert(self, imp: Implication) -> None:
-        e = expectation(imp.truth)
-        items = self.items
-        for i, other in enumerate(items):
-            if expectation(other.truth) < e:
-                items.insert(i, imp)
-                break
-        else:
-            items.append(imp)
-        if len(items) > self.size:
-            items.pop()
+    def _insert(self, imp: Implication) -> bool:
+        """Place ``imp`` after every entry of equal or higher expectation; False if the
+        full table dropped it at once."""
+        neg = self._neg
+        e = -expectation(imp.truth)
+        i = bisect_right(neg, e)
+        self.items.insert(i, imp)
+        neg.insert(i, e)
+        if len(neg) > self.size:
+            self.items.pop()
+            neg.pop()
+            return i < self.size
+        return True
+
+    def _delete(self, i: int) -> None:
+        del self.items[i]
+        del self._neg[i]
 
     def add_and_revise(self, imp: Implication, stamp_size: int = 10) -> Implication | None:
         """Revise with the entry of the same term (or insert); returns the stored entry."""
@@ -45,7 +56,7 @@ class Table:
             if old.term is imp.term and (old.dt == 0.0) == (imp.dt == 0.0):
                 if imp.term.op == "==>" and overlap(old.stamp, imp.stamp):
                     keep = imp if imp.truth.c > old.truth.c else old
-                    del self.items[i]
+                    self._delete(i)
                     self._insert(keep)
                     return keep
                 w1, w2 = c2w(old.truth.c), c2w(imp.truth.c)
@@ -58,8 +69,7 @@ class Table:
                     imp.creation_time,
                     imp.source,
                 )
-                del self.items[i]
+                self._delete(i)
                 self._insert(revised)
                 return revised
-        self._insert(imp)
-        return imp if imp in self.items else None
+        return imp if self._insert(imp) else None

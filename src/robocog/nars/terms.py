@@ -190,20 +190,23 @@ _SWEEP_AT = [200_000]
 
 
 def _sweep() -> None:
-    """Drop interned terms referenced only by the table (a few passes, parents first)."""
+    """Drop interned terms referenced only by the table, in one pass.
+
+    A term's components are interned before it, so the table's insertion order puts
+    them first; visiting the newest first drops a dead term (and its key) before its
+    components are looked at, so a whole dead subtree goes in the same pass.
+    """
     table = _TABLE
-    for _ in range(4):
-        dead = []
-        t = None
-        for k in list(table):
-            t = table[k]
-            if sys.getrefcount(t) <= 3:  # the table, ``t`` and the call's argument
-                dead.append(k)
-        t = None
-        if not dead:
-            break
-        for k in dead:
+    keys = list(table)
+    pop = keys.pop
+    refs = sys.getrefcount
+    t = None
+    while keys:
+        k = pop()  # the previous key and term are released here and on the next line
+        t = table[k]
+        if refs(t) <= 3:  # the table, ``t`` and the call's argument
             del table[k]
+    t = None
     _SWEEP_AT[0] = max(200_000, 2 * len(table))
 
 

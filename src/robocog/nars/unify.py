@@ -30,9 +30,18 @@ def _unify(g: Term, s: Term, b: dict[Term, Term], query_only: bool) -> bool:
                 return True
             return got is s
         return g is s
-    if g.op != s.op or len(g.args) != len(s.args):
+    ga = g.args
+    sa = s.args
+    if g.op != s.op or len(ga) != len(sa):
         return False
-    return all(_unify(ga, sa, b, query_only) for ga, sa in zip(g.args, s.args, strict=True))
+    # a plain loop: a generator inside ``all`` costs a frame per argument on this hot path
+    for x, y in zip(ga, sa):  # noqa: B905 - lengths checked above
+        if x.has_var:
+            if not _unify(x, y, b, query_only):
+                return False
+        elif x is not y:  # ground terms are interned: unifiable only if identical
+            return False
+    return True
 
 
 def apply(term: Term, bindings: dict[Term, Term]) -> Term:
