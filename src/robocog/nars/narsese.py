@@ -10,6 +10,7 @@ so a person typing into the shell sees where the line went wrong.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 
 from lark import Lark, Token, Transformer, UnexpectedEOF, UnexpectedInput, UnexpectedToken, v_args
 
@@ -223,18 +224,32 @@ def _error(text: str, exc: Exception, line: int) -> NarseseError:
 
 
 def parse_sentence(text: str, line: int = 1) -> Sentence:
-    """Parse one Narsese sentence such as ``<a --> b>. :|: {1.0 0.9}``."""
+    """Parse one Narsese sentence such as ``<a --> b>. :|: {1.0 0.9}``.
+
+    A robot's sensors send the same few lines over and over, so the sentences of recent
+    lines are kept (they are immutable and their terms interned): a repeated line costs
+    a dictionary lookup instead of a parse."""
+    try:
+        return _parse_sentence(text)
+    except NarseseError as exc:
+        if line == 1:
+            raise
+        raise NarseseError(line, exc.column, exc.message) from None
+
+
+@lru_cache(maxsize=4096)
+def _parse_sentence(text: str) -> Sentence:
     if len(text) > MAX_LINE:
-        raise NarseseError(line, MAX_LINE + 1, f"line longer than {MAX_LINE} characters")
+        raise NarseseError(1, MAX_LINE + 1, f"line longer than {MAX_LINE} characters")
     try:
         tree = _SENTENCE.parse(text)
         return _BUILD.transform(tree)  # type: ignore[no-any-return]
     except RecursionError:
-        raise NarseseError(line, 1, "term nested too deeply") from None
+        raise NarseseError(1, 1, "term nested too deeply") from None
     except UnexpectedInput as exc:
-        raise _error(text, exc, line) from None
+        raise _error(text, exc, 1) from None
     except Exception as exc:  # noqa: BLE001 - a transformer check, reported with position
-        raise _error(text, exc, line) from None
+        raise _error(text, exc, 1) from None
 
 
 def parse_term(text: str, line: int = 1) -> Term:
