@@ -393,6 +393,7 @@ class SensorimotorMixin:
         sources: dict[Term, tuple[Event, Truth, bool, dict[Term, Term] | None] | None] = {}
         groups: dict[object, dict[Concept, None]] | None = None
         var_sources: list[Term] = []
+        negatives: dict[tuple[Truth, int], Truth] = {}
         evictions = mem.evictions
         for post in list(targets):
             if mem.find(post.term) is not post:
@@ -435,7 +436,7 @@ class SensorimotorMixin:
                     predicted.c < 0.05 and predicted.f == 0.0
                 ):
                     continue
-                self._add_negative_evidence(post, opi, imp, spike.truth)
+                self._add_negative_evidence(post, opi, imp, spike.truth, negatives)
                 if bind is None:
                     continue
                 outcome = apply(imp.term.args[1], bind) if bind else imp.term.args[1]
@@ -539,13 +540,25 @@ class SensorimotorMixin:
             self._print("Derived: " + new.line(1.0))  # type: ignore[attr-defined]
 
     def _add_negative_evidence(
-        self, post: Concept, opi: int, imp: Implication, pre_truth: Truth
+        self,
+        post: Concept,
+        opi: int,
+        imp: Implication,
+        pre_truth: Truth,
+        cache: dict[tuple[Truth, int], Truth] | None = None,
     ) -> None:
         """One failure of ``imp``: induction from a {0, anticipation_confidence} outcome
-        and the precondition projected over the implication's time offset."""
+        and the precondition projected over the implication's time offset. The truth
+        depends on nothing else, so one anticipation computes it once per precondition
+        truth and offset (``cache``)."""
         cfg = self.config  # type: ignore[attr-defined]
-        past = tf.projection(pre_truth, 0, round(imp.dt))
-        neg = tf.eternalize(tf.induction(Truth(0.0, cfg.anticipation_confidence), past))
+        rdt = round(imp.dt)
+        neg = cache.get((pre_truth, rdt)) if cache is not None else None
+        if neg is None:
+            past = tf.projection(pre_truth, 0, rdt)
+            neg = tf.eternalize(tf.induction(Truth(0.0, cfg.anticipation_confidence), past))
+            if cache is not None:
+                cache[pre_truth, rdt] = neg
         post.tables(cfg.operations_max, cfg.table_size)[opi].add_and_revise(
             Implication(imp.term, neg, (), imp.dt, imp.creation_time, imp.source), cfg.stamp_size
         )

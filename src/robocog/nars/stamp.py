@@ -14,6 +14,10 @@ Stamp = tuple[int, ...]
 
 def merge(a: Stamp, b: Stamp, size: int = STAMP_SIZE) -> Stamp:
     """Interleave a0, b0, a1, b1, ... and keep the first ``size`` ids (ONA's zip)."""
+    if not b:  # negative evidence has an empty stamp
+        return a if len(a) <= size else a[:size]
+    if not a:
+        return b if len(b) <= size else b[:size]
     n = min(len(a), len(b))
     out = [0] * (2 * n)
     out[0::2] = a[:n]
