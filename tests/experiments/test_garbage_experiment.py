@@ -6,8 +6,10 @@ import json
 from collections.abc import Sequence
 from pathlib import Path
 
+import pytest
+
 from robocog import cli
-from robocog.experiments.garbage import MindSpec, run_experiment
+from robocog.experiments.garbage import MindSpec, default_minds, learn_accumulation, run_experiment
 from robocog.experiments.report import explain, write_json, write_report
 from robocog.robot import Command, Detection, Drop, GoTo, Gripper, Outcome, Percept, Pick
 from robocog.worlds.garbage import GarbageConfig, GarbageField
@@ -117,3 +119,21 @@ def test_a_spent_time_budget_leaves_runs_out_and_says_so() -> None:
     for m in result.minds.values():
         assert len(m.runs) == 1 and m.cut_short == 3
         assert m.summary()["runs_skipped_for_time"] == 3
+
+
+def test_nars_ranks_the_hotspots_first_after_a_few_rounds() -> None:
+    """A small field (six checkpoints, two hotspots, six objects a round) for six rounds:
+    the order comes from NARS's evidence for ``<<({SELF} * {p}) --> at> =/> <trash -->
+    [see]>>``, one piece per arrival, and must put the hotspots on top."""
+    spec = default_minds(["nars"])[0]
+    why = spec.probe()
+    if why:
+        pytest.skip(f"the reasoner cannot drive the robot yet: {why}")
+    config = GarbageConfig(checkpoints=6, objects=6, hotspots={1: 5.0, 4: 5.0})
+    acc = learn_accumulation(spec, config, seed=0, rounds=6)
+    assert acc.rounds == 6 and acc.hotspots == ["p1", "p4"]
+    assert all(acc.arrivals[p] >= 5 for p in acc.arrivals)
+    assert acc.hotspots_first, acc.ranking
+    expectations = [e for _p, _f, _c, e in acc.ranking]
+    assert expectations == sorted(expectations, reverse=True)
+    assert acc.answer is not None and acc.answer[0].startswith("<<({SELF} * {p")

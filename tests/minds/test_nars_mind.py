@@ -173,9 +173,20 @@ def test_a_reasoner_that_rejects_the_printed_goto_rule_gets_it_bracketed() -> No
     assert NarsMind(["p0"], nar=Recorder(lambda r: [])).notes == []  # type: ignore[arg-type]
 
 
-def test_a_kind_once_seen_is_reported_missing_when_out_of_view() -> None:
+def test_by_default_an_absent_kind_is_left_to_anticipation() -> None:
     nar = Recorder(lambda r: [])
     mind = NarsMind(["p0"], nar=nar)  # type: ignore[arg-type]
+    for seen in (True, False, False):
+        mind.perceive(_frame(seen=seen))
+        mind.decide()
+    assert "<trash --> [see]>. :|: {1.000000 0.810000}" in nar.inputs
+    assert not any(ln.endswith("[see]>. :|: {0.0 0.9}") for ln in nar.inputs)
+
+
+def test_a_kind_once_seen_can_be_reported_missing_when_out_of_view() -> None:
+    nar = Recorder(lambda r: [])
+    settings = NarsSettings(report_absence=True, place_on_change=False)
+    mind = NarsMind(["p0"], settings, nar=nar)  # type: ignore[arg-type]
     mind.perceive(_frame(seen=False))
     mind.decide()
     assert "<trash --> [see]>. :|: {0.0 0.9}" not in nar.inputs  # nothing looked for yet

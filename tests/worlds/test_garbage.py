@@ -293,3 +293,34 @@ def test_no_command_sequence_takes_the_robot_off_the_field(commands: list) -> No
         assert -math.pi <= world.theta <= math.pi
     assert world.time() >= before
     assert world.collected() + sum(t.on_field or t.held for t in world.trash) == len(world.trash)
+
+
+def test_a_new_round_starts_from_the_corner_on_a_cleared_field() -> None:
+    world = GarbageField(seed=3)
+    world.execute(GoTo("p4"))
+    left = [t for t in world.trash if t.on_field]
+    left[0].upright = False  # a bottle lying over would be seen in every later round
+    placed = world.new_round()
+    assert (world.x, world.y) == world.start and world.last_checkpoint == -1
+    assert all(not t.on_field for t in left) and all(t.on_field for t in placed)
+    assert world.failure_cause(left[0]) is not None  # cleared is not collected
+    kept = GarbageField(GarbageConfig(clear_between_rounds=False), seed=3)
+    before = [t for t in kept.trash if t.on_field]
+    kept.new_round()
+    assert all(t.on_field for t in before)
+
+
+def test_hotspots_have_trash_in_view_on_more_arrivals() -> None:
+    """The field's own statistic, with a tour that collects nothing: at a hotspot the
+    camera has something to show on nearly every arrival, elsewhere on about half."""
+    world = GarbageField(GarbageConfig(mission_time=1e6), seed=11)
+    for r in range(40):
+        if r:
+            world.new_round()
+        for place in world.route:
+            world.execute(GoTo(place))
+    share = {p: world.arrivals_with_trash[p] / world.arrivals[p] for p in world.route}
+    assert all(world.arrivals[p] == 40 for p in world.route)
+    hot = {world.route[i] for i in world.config.hotspots}
+    assert min(share[p] for p in hot) > 0.85
+    assert max(share[p] for p in world.route if p not in hot) < 0.75

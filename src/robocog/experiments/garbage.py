@@ -175,6 +175,14 @@ class Accumulation:
     hotspots: list[str]
     unavailable: str | None = None
     mind: str = "NARS"
+    #: the field's own count per checkpoint: arrivals, and arrivals with trash in view
+    arrivals: dict[str, int] = field(default_factory=dict)
+    arrivals_with_trash: dict[str, int] = field(default_factory=dict)
+
+    def trash_share(self, place: str) -> float | None:
+        """Share of the arrivals at ``place`` with trash in view (None if never there)."""
+        n = self.arrivals.get(place, 0)
+        return self.arrivals_with_trash.get(place, 0) / n if n else None
 
     @property
     def hotspots_first(self) -> bool | None:
@@ -228,6 +236,10 @@ class ExperimentResult:
                     for p, f, c, e in acc.ranking
                 ],
                 "seen_per_place": acc.seen_per_place,
+                "arrivals": {
+                    p: {"arrivals": n, "with_trash_in_view": acc.arrivals_with_trash.get(p, 0)}
+                    for p, n in acc.arrivals.items()
+                },
                 "hotspots": acc.hotspots,
                 "hotspots_first": acc.hotspots_first,
                 "unavailable": acc.unavailable,
@@ -340,7 +352,14 @@ def learn_accumulation(
     deadline: float | None = None,
 ) -> Accumulation:
     """Let a NARS mind collect for several rounds of one field, then ask where trash is
-    seen (the mind must offer ``ask``, ``trash_places`` and ``new_round``)."""
+    seen (the mind must offer ``ask``, ``trash_places`` and ``new_round``).
+
+    Each round is one run of the test procedure on the same field with the same mind:
+    the field starts the robot again from its corner with fresh objects, and the mind
+    keeps everything it has learned. The ranking is the mind's evidence for
+    ``<<({SELF} * {p}) --> at> =/> <trash --> [see]>>`` per checkpoint, by expectation;
+    the field's own count of arrivals with trash in view is returned beside it.
+    """
     import time
 
     from robocog.minds.nars_mind import TRASH_QUESTION
@@ -376,7 +395,16 @@ def learn_accumulation(
         close = getattr(mind, "close", None)
         if callable(close):
             close()
-    return Accumulation(world.rounds, answer, ranking, seen, hotspots, mind=spec.name)
+    return Accumulation(
+        world.rounds,
+        answer,
+        ranking,
+        seen,
+        hotspots,
+        mind=spec.name,
+        arrivals=dict(world.arrivals),
+        arrivals_with_trash=dict(world.arrivals_with_trash),
+    )
 
 
 def default_minds(names: Sequence[str] = ("nars", "bdi")) -> list[MindSpec]:

@@ -187,14 +187,24 @@ def markdown(result: ExperimentResult, images: dict[str, str]) -> str:
             ),
             "",
             f"The field's hotspots are {', '.join(acc.hotspots) or 'none'}; {acc.mind}'s "
-            "evidence per checkpoint, best first:",
+            "evidence per checkpoint, best expectation first, beside what the field "
+            "counted: arrivals, and the share of them with trash in view (a checkpoint "
+            "without a hypothesis comes last: the reasoner formed none or forgot it).",
             "",
-            "| place | frequency | confidence | expectation | objects seen there |",
-            "|---|---|---|---|---|",
+            "| place | frequency | confidence | expectation | arrivals | with trash in view "
+            "| objects seen there |",
+            "|---|---|---|---|---|---|---|",
         ]
-        for place, f, c, e in acc.ranking:
+        ranked = {r[0] for r in acc.ranking}
+        rows = [(p, f"{f:.3f}", f"{c:.3f}", f"{e:.3f}") for p, f, c, e in acc.ranking]
+        rows += [(p, "-", "-", "-") for p in acc.arrivals if p not in ranked]
+        for place, f, c, e in rows:
+            share = acc.trash_share(place)
+            mark = f"{place} (hotspot)" if place in acc.hotspots else place
             lines.append(
-                f"| {place} | {f:.3f} | {c:.3f} | {e:.3f} | {acc.seen_per_place.get(place, 0)} |"
+                f"| {mark} | {f} | {c} | {e} | {acc.arrivals.get(place, 0)} | "
+                f"{'-' if share is None else f'{share:.2f}'} | "
+                f"{acc.seen_per_place.get(place, 0)} |"
             )
         verdict = acc.hotspots_first
         lines += [

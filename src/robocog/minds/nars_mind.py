@@ -11,11 +11,22 @@ that predicted it loses evidence (Section V.D).
 For each label in view the mind asks the reasoner what it is (``<bottle --> ?1>?``) and
 reports the sighting under the answer as well (``<trash --> [see]>``), so the category
 comes from the reasoner's own knowledge yet enters as an event it can learn from; a
-sighting it would only derive is soon crowded out of its attention. Once a kind has
-been reported, a frame without it says so (``<trash --> [see]>. :|: {0.0 0.9}``), so
-that being at a checkpoint where no trash is seen is evidence too. The place is
-told once a second, as Section IV's localisation channel does (``place_on_change``
-tells it on arrival only, so that each visit is one piece of evidence).
+sighting it would only derive is soon crowded out of its attention.
+
+The place is told when the robot arrives at a checkpoint, not every second
+(``place_on_change``): each visit is then one piece of evidence for
+``<<({SELF} * {p3}) --> at> =/> <trash --> [see]>>``, as Section V.D describes it
+(confidence from the visits, frequency from those with trash seen). A visit with trash
+in view confirms the hypothesis by temporal induction; a visit without it leaves the
+reasoner's anticipation of ``<trash --> [see]>`` unmet, which is negative evidence.
+Each input event after the arrival counts as one unmet anticipation, so the detector
+reports its most confident box per frame (``max_detections=1``): with three boxes,
+nine events per frame, a visit to a cluttered checkpoint would weigh as more failure
+than a visit to a checkpoint with a single bottle. Reporting a kind that went out of
+view as not seen (``report_absence``) is possible, but then a checkpoint with trash on
+fewer than about half of its visits gets net negative evidence, its hypothesis sinks to
+the bottom of ONA's bounded implication table and is dropped, and the next sighting
+starts it afresh from that one visit (see docs/garbage.md).
 
 The operator's knowledge of the checkpoints (Section V.C, step 4) enters as a goal:
 when ``patience`` frames have passed without an operation that succeeded (nothing
@@ -83,9 +94,12 @@ class NarsSettings:
     cycles_per_frame: int = 10  # thinking time per frame, also after an execution
     patience: int = 2  # frames without a successful operation before the route goal
     instances: bool = True
-    place_on_change: bool = False  # True: tell the place on arrival only, not each second
+    #: tell the place on arrival only (one piece of evidence per visit), not each second
+    place_on_change: bool = True
     recall: bool = True  # ask what a seen label is; report the sighting under the answer
-    max_detections: int = 3
+    #: report a kind once seen as not seen (``{0.0 0.9}``) in frames without it
+    report_absence: bool = False
+    max_detections: int = 1  # the most confident box per frame (see above)
     fov: float = DEFAULT_FOV
     motor_babbling: bool = False
     transcript: int = 0  # keep the last N output lines of the reasoner (0: none)
@@ -198,8 +212,9 @@ class NarsMind:
                     self._kinds.add(event.split(" -->")[0].lstrip("<"))
                     self._input(event)
         seen = {e.split(" -->")[0].lstrip("<") for e in seen_kinds}
-        for kind in sorted(self._kinds - seen):  # looked for, and not there
-            self._input(not_seen(kind))
+        if self.settings.report_absence:
+            for kind in sorted(self._kinds - seen):  # looked for, and not there
+                self._input(not_seen(kind))
         for line in self._frame:
             if line not in place:
                 self._input(line)
@@ -250,6 +265,7 @@ class NarsMind:
     def new_round(self) -> None:
         """The operator restarts the route: the next checkpoint is the first again."""
         self._last_place = None
+        self._reported_place = None  # the robot starts again from the start corner
         self._idle = 0
 
     def next_place(self) -> str | None:

@@ -16,7 +16,11 @@ comes out of the same causes the paper names:
 - the mission runs on one battery charge (``mission_time``): time spent on futile picks
   is time missing at the end of the route;
 - trash accumulates at some checkpoints more often than at others, so a mind that
-  keeps evidence can learn where it is seen.
+  keeps evidence can learn where it is seen. Each round is one run of the paper's test
+  procedure (Section V.C): the robot starts again from the start corner on a fresh
+  battery, the operator clears away what the last round left, and fresh objects are
+  placed with the hotspot weights. The field counts, per checkpoint, the arrivals and
+  those with trash in view, which is what a mind's evidence can be checked against.
 
 Time is simulated: every ``percepts()`` call is one camera frame (4 per second, as on
 the paper's Jetson Nano) and each command takes the time it would take the robot, so a
@@ -79,6 +83,9 @@ class GarbageConfig:
     drop_seconds: float = 4.0
     tip_on_failure: float = 0.6
     mission_time: float = 420.0  # one battery charge, seconds
+    #: a new round starts from a cleared field (the test procedure places the objects
+    #: anew); False leaves what the last round left, tipped bottles included
+    clear_between_rounds: bool = True
 
     def __post_init__(self) -> None:
         if self.light not in DETECTION_RATE:
@@ -111,6 +118,7 @@ class Trash:
     upright: bool = True
     held: bool = False
     collected: bool = False
+    cleared: bool = False  # taken away by the operator at the end of its round
     times_seen: int = 0
     pick_attempts: int = 0
     picks_while_tipped: int = 0
@@ -119,7 +127,7 @@ class Trash:
     @property
     def on_field(self) -> bool:
         """Still lying or standing on the ground."""
-        return not (self.held or self.collected)
+        return not (self.held or self.collected or self.cleared)
 
 
 @dataclass(frozen=True)
@@ -168,6 +176,9 @@ class GarbageField:
         self.events: list[Event] = []
         self.futile_seconds = 0.0  # spent on picks at objects lying over
         self._last_pose_time = -math.inf
+        #: per checkpoint: arrivals, and arrivals with an object the camera can show
+        self.arrivals: dict[str, int] = dict.fromkeys(self.route, 0)
+        self.arrivals_with_trash: dict[str, int] = dict.fromkeys(self.route, 0)
         self.new_round()
 
     # ---- setting up a round -------------------------------------------------------
@@ -180,12 +191,24 @@ class GarbageField:
         return math.atan2(cy - prev[1], cx - prev[0])
 
     def new_round(self) -> list[Trash]:
-        """Scatter a fresh set of objects over the checkpoints and restart the route.
+        """Start a run of the test procedure: scatter a fresh set of objects over the
+        checkpoints and restart the route from the start corner.
 
         Checkpoints with a hotspot weight receive objects more often, which is what a
-        mind can learn over repeated rounds. Objects left from earlier rounds stay.
+        mind can learn over repeated rounds. With ``clear_between_rounds`` what the last
+        round left on the ground is taken away first, so that what a later round shows
+        at a checkpoint is that round's trash, not a bottle the robot tipped over before.
+        An object the robot holds stays in its gripper.
         """
         c = self.config
+        if self.rounds:
+            if c.clear_between_rounds:
+                for t in self.trash:
+                    if t.on_field:
+                        t.cleared = True
+            self.x, self.y = self.start
+            self.theta = -math.pi / 4.0
+            self.trajectory.append((self.x, self.y))
         self.rounds += 1
         weights = [c.hotspots.get(i, 1.0) for i in range(len(self.route))]
         counts = [0] * len(self.route)
@@ -398,6 +421,9 @@ class GarbageField:
         self.last_checkpoint = index
         if name not in self.visited:
             self.visited.append(name)
+        self.arrivals[name] += 1
+        if any(self.detection_probability(t) > 0.0 for t in self.trash):
+            self.arrivals_with_trash[name] += 1
         self._log("goto", name)
         return Outcome.success()
 
