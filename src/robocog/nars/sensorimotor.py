@@ -466,11 +466,18 @@ class SensorimotorMixin:
                     old = oc.belief_spike
                     oc.belief_spike, _ = self._revision_and_choice(old, pred)  # type: ignore[attr-defined]
                     self._show_prediction(old, oc.belief_spike)
-                    # only this term's entry and those found through unification change
+                    # only this term's entry changes, and the entries of preconditions
+                    # with variables that the outcome instantiates (the others cannot
+                    # have found their event in its concept)
                     sources.pop(outcome, None)
-                    for v in var_sources:
-                        sources.pop(v, None)
-                    var_sources.clear()
+                    if var_sources:
+                        kept = []
+                        for v in var_sources:
+                            if unify(v, outcome) is None:
+                                kept.append(v)
+                            else:
+                                sources.pop(v, None)
+                        var_sources[:] = kept
 
     def _spike_groups(self) -> dict[object, dict[Concept, None]]:
         """Concepts of the occurrence-time index without variables, grouped so that a
@@ -489,11 +496,13 @@ class SensorimotorMixin:
         return groups
 
     @staticmethod
-    def _spike_key(source: Term) -> object:
-        """The group of :meth:`_spike_groups` a term with variables must be in: its
-        shallowest ground component with its path, else its connector and arity."""
+    def _spike_keys(source: Term) -> list[object]:
+        """The groups of :meth:`_spike_groups` a term with variables must be in: one per
+        ground component (with its path), and its connector and arity; a term matching
+        ``source`` is in every one of them, so the smallest will do."""
         if source.op is None:
-            return None
+            return [None]
+        keys: list[object] = [(source.op, len(source.args))]
         level: list[tuple[tuple[object, ...], Term]] = [((), source)]
         while level:
             nxt: list[tuple[tuple[object, ...], Term]] = []
@@ -502,11 +511,11 @@ class SensorimotorMixin:
                 for i, arg in enumerate(x.args):
                     sub = (*path, x.op, n, i)
                     if not arg.has_var:
-                        return (sub, arg)
-                    if arg.op is not None:
+                        keys.append((sub, arg))
+                    elif arg.op is not None:
                         nxt.append((sub, arg))
             level = nxt
-        return (source.op, len(source.args))
+        return keys
 
     def _source_spike(
         self, source: Term, groups: dict[object, dict[Concept, None]] | None = None
@@ -518,7 +527,13 @@ class SensorimotorMixin:
         if source.has_var:
             if groups is None:
                 groups = self._spike_groups()
-            group = groups.get(self._spike_key(source))
+            group: dict[Concept, None] | None = None
+            for key in self._spike_keys(source):
+                g = groups.get(key)
+                if not g:
+                    return best  # no concept has this component here: none matches
+                if group is None or len(g) < len(group):
+                    group = g
             for c2 in reversed(group) if group else ():  # newest first
                 b = c2.belief_spike
                 if b is None or unify(source, c2.term) is None:
