@@ -91,3 +91,30 @@ def test_stats_keep_a_bounded_window_but_count_every_cycle() -> None:
     assert summary["cycles"] == 25.0
     # only the last ten cycles (15..24 ms of reasoning) are in the figures
     assert abs(summary["reason_p50_ms"] - 19.5) < 1e-9
+
+
+def test_cycle_collector_is_paused_during_decisions_and_restored_after() -> None:
+    """Garbage is collected between cycles, never in the middle of a decision, and the
+    interpreter's own policy is back once the loop ends (also when a mind raises)."""
+    import gc
+
+    seen: list[bool] = []
+
+    class Watching(Cautious):
+        def decide(self) -> list[Command]:
+            seen.append(gc.isenabled())
+            return super().decide()
+
+    class Failing(Cautious):
+        def decide(self) -> list[Command]:
+            raise RuntimeError("mind failed")
+
+    assert gc.isenabled()
+    Loop(Corridor(), Watching()).run(3)
+    assert seen == [False, False, False]
+    assert gc.isenabled()
+    try:
+        Loop(Corridor(), Failing()).run(3)
+    except RuntimeError:
+        pass
+    assert gc.isenabled()

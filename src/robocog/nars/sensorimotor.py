@@ -69,6 +69,10 @@ class SensorimotorMixin:
         #: the index's concepts grouped by term shape (see ``_spike_groups``), or None
         #: until anticipation first needs them
         self._groups: dict[object, dict[Concept, None]] | None = None
+        #: (link, precondition instance) -> the link's consequence for that instance
+        self._outcomes: dict[tuple[Term, Term], Term] = {}
+        #: precondition with variables -> its keys into the groups (``_spike_keys``)
+        self._source_keys: dict[Term, list[object]] = {}
         #: op id -> concepts with implications in that table
         self.table_index: dict[int, dict[Concept, None]] = {}
         #: declarative links by subject: ground subject -> {link term}; general ones apart
@@ -394,6 +398,8 @@ class SensorimotorMixin:
         groups: dict[object, dict[Concept, None]] | None = None
         var_sources: list[Term] = []
         negatives: dict[tuple[Truth, int], Truth] = {}
+        outcomes = self._outcomes
+        showing = self._shows(1.0)  # type: ignore[attr-defined]
         evictions = mem.evictions
         for post in list(targets):
             if mem.find(post.term) is not post:
@@ -439,7 +445,17 @@ class SensorimotorMixin:
                 self._add_negative_evidence(post, opi, imp, spike.truth, negatives)
                 if bind is None:
                     continue
-                outcome = apply(imp.term.args[1], bind) if bind else imp.term.args[1]
+                if bind:
+                    # the same link meets the same instance at every input: keep the
+                    # instantiated outcome (a pure function of the two terms)
+                    okey = (imp.term, spike.term)
+                    outcome = outcomes.get(okey)
+                    if outcome is None:
+                        if len(outcomes) >= 4096:
+                            outcomes.clear()
+                        outcome = outcomes[okey] = apply(imp.term.args[1], bind)
+                else:
+                    outcome = imp.term.args[1]
                 if outcome.has_var or overlap(spike.stamp, imp.stamp):
                     continue
                 oc = mem.conceptualize(outcome, now)
@@ -448,7 +464,8 @@ class SensorimotorMixin:
                     sources.clear()
                     var_sources.clear()
                     groups = None
-                oc.use(now, False, cfg.eternal_input_usage_boost)
+                oc.use_count += 1  # Concept.use, written out
+                oc.last_used = now
                 occ = now + round(imp.dt)
                 pred = Event(
                     outcome,
@@ -461,11 +478,13 @@ class SensorimotorMixin:
                 if imp.dt > 0.0:
                     old = oc.predicted_belief
                     oc.predicted_belief, _ = self._revision_and_choice(old, pred)  # type: ignore[attr-defined]
-                    self._show_prediction(old, oc.predicted_belief)
+                    if showing:
+                        self._show_prediction(old, oc.predicted_belief)
                 elif oc.belief_spike is None or occ > oc.belief_spike.occurrence_time:
                     old = oc.belief_spike
                     oc.belief_spike, _ = self._revision_and_choice(old, pred)  # type: ignore[attr-defined]
-                    self._show_prediction(old, oc.belief_spike)
+                    if showing:
+                        self._show_prediction(old, oc.belief_spike)
                     # only this term's entry changes, and the entries of preconditions
                     # with variables that the outcome instantiates (the others cannot
                     # have found their event in its concept)
@@ -527,8 +546,13 @@ class SensorimotorMixin:
         if source.has_var:
             if groups is None:
                 groups = self._spike_groups()
+            keys = self._source_keys.get(source)
+            if keys is None:
+                if len(self._source_keys) >= 4096:
+                    self._source_keys.clear()
+                keys = self._source_keys[source] = self._spike_keys(source)
             group: dict[Concept, None] | None = None
-            for key in self._spike_keys(source):
+            for key in keys:
                 g = groups.get(key)
                 if not g:
                     return best  # no concept has this component here: none matches
@@ -574,7 +598,10 @@ class SensorimotorMixin:
             neg = tf.eternalize(tf.induction(Truth(0.0, cfg.anticipation_confidence), past))
             if cache is not None:
                 cache[pre_truth, rdt] = neg
-        post.tables(cfg.operations_max, cfg.table_size)[opi].add_and_revise(
+        tables = post.precondition_beliefs  # ``imp`` came from one of them
+        if tables is None:
+            tables = post.tables(cfg.operations_max, cfg.table_size)
+        tables[opi].add_and_revise(
             Implication(imp.term, neg, (), imp.dt, imp.creation_time, imp.source), cfg.stamp_size
         )
 

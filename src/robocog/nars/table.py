@@ -51,9 +51,11 @@ class Table:
 
     def add_and_revise(self, imp: Implication, stamp_size: int = 10) -> Implication | None:
         """Revise with the entry of the same term (or insert); returns the stored entry."""
+        term = imp.term
+        concurrent = imp.dt == 0.0
         for i, old in enumerate(self.items):
             # a concurrent (dt 0) and a predictive (dt > 0) link of one term stay apart
-            if old.term is imp.term and (old.dt == 0.0) == (imp.dt == 0.0):
+            if old.term is term and (old.dt == 0.0) == concurrent:
                 if imp.term.op == "==>" and overlap(old.stamp, imp.stamp):
                     keep = imp if imp.truth.c > old.truth.c else old
                     self._delete(i)
