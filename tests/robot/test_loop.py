@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
+import pytest
+
 from robocog.robot import Body, Command, Forward, Mind, Obstacle, Outcome, Percept, Turn
 from robocog.robot.loop import Loop, percentile
 
@@ -113,8 +115,6 @@ def test_cycle_collector_is_paused_during_decisions_and_restored_after() -> None
     Loop(Corridor(), Watching()).run(3)
     assert seen == [False, False, False]
     assert gc.isenabled()
-    try:
+    with pytest.raises(RuntimeError):
         Loop(Corridor(), Failing()).run(3)
-    except RuntimeError:
-        pass
     assert gc.isenabled()
