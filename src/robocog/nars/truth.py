@@ -183,11 +183,16 @@ def eternalize(a: Truth) -> Truth:
     return _new(Truth, (a.f, w2c(a.c)))
 
 
+#: ``PROJECTION_DECAY ** d`` for the distances that occur (the same floats, looked up)
+_DECAY_POWERS = [PROJECTION_DECAY**d for d in range(1024)]
+
+
 def projection(a: Truth, source_time: int, target_time: int) -> Truth:
     """Confidence decays by 0.8 per cycle of distance; eternal (-1) is unchanged."""
     if source_time == -1:
         return a
-    return _new(Truth, (a.f, a.c * PROJECTION_DECAY ** abs(target_time - source_time)))
+    d = abs(target_time - source_time)
+    return _new(Truth, (a.f, a.c * (_DECAY_POWERS[d] if d < 1024 else PROJECTION_DECAY**d)))
 
 
 def anonymous_analogy(a: Truth, b: Truth) -> Truth:
