@@ -42,8 +42,9 @@ class Event:
         )
 
     def projected(self, target_time: int) -> Event:
-        """This event seen from ``target_time`` (confidence decays with distance)."""
-        if self.occurrence_time == ETERNAL:
+        """This event seen from ``target_time`` (confidence decays with distance); the
+        event itself when nothing changes (callers only read what they get)."""
+        if self.occurrence_time == ETERNAL or self.occurrence_time == target_time:
             return self
         return Event(
             self.term,
