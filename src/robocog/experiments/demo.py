@@ -18,7 +18,9 @@ def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--runs", type=int, default=6, help="runs per mind (default 6)")
     parser.add_argument("--seed", type=int, default=0, help="seed (default 0)")
     parser.add_argument("--light", choices=LIGHTS, default="sunny")
-    parser.add_argument("--rounds", type=int, default=3, help="NARS's learning rounds (default 3)")
+    parser.add_argument(
+        "--rounds", type=int, default=12, help="NARS's learning rounds (default 12)"
+    )
     parser.add_argument("--out", type=Path, default=Path("robocog-demo"), metavar="DIR")
     parser.add_argument("--json", type=Path, metavar="FILE", help="also write the results as JSON")
     parser.add_argument(
