@@ -400,12 +400,17 @@ class SensorimotorMixin:
         negatives: dict[tuple[Truth, int], Truth] = {}
         outcomes = self._outcomes
         showing = self._shows(1.0)  # type: ignore[attr-defined]
+        stamp_size = cfg.stamp_size
         evictions = mem.evictions
         for post in list(targets):
             if mem.find(post.term) is not post:
                 targets.pop(post, None)
                 continue
-            for imp in list(self.implications_for(post, opi)):
+            tables = post.precondition_beliefs
+            if tables is None or opi >= len(tables):
+                continue
+            table = tables[opi]
+            for imp in list(table.items):
                 source = imp.source
                 if source is None:
                     continue
@@ -442,7 +447,17 @@ class SensorimotorMixin:
                     predicted.c < 0.05 and predicted.f == 0.0
                 ):
                     continue
-                self._add_negative_evidence(post, opi, imp, spike.truth, negatives)
+                # one failure: induction from a {0, anticipation_confidence} outcome and
+                # the precondition projected over the link's offset, the same for every
+                # link of this precondition truth and offset
+                rdt = round(imp.dt)
+                neg = negatives.get((spike.truth, rdt))
+                if neg is None:
+                    neg = negatives[spike.truth, rdt] = self._negative_evidence(spike.truth, rdt)
+                table.add_and_revise(
+                    Implication(imp.term, neg, (), imp.dt, imp.creation_time, imp.source),
+                    stamp_size,
+                )
                 if bind is None:
                     continue
                 if bind:
@@ -578,31 +593,12 @@ class SensorimotorMixin:
         if self._shows(1.0):  # type: ignore[attr-defined]
             self._print("Derived: " + new.line(1.0))  # type: ignore[attr-defined]
 
-    def _add_negative_evidence(
-        self,
-        post: Concept,
-        opi: int,
-        imp: Implication,
-        pre_truth: Truth,
-        cache: dict[tuple[Truth, int], Truth] | None = None,
-    ) -> None:
-        """One failure of ``imp``: induction from a {0, anticipation_confidence} outcome
-        and the precondition projected over the implication's time offset. The truth
-        depends on nothing else, so one anticipation computes it once per precondition
-        truth and offset (``cache``)."""
-        cfg = self.config  # type: ignore[attr-defined]
-        rdt = round(imp.dt)
-        neg = cache.get((pre_truth, rdt)) if cache is not None else None
-        if neg is None:
-            past = tf.projection(pre_truth, 0, rdt)
-            neg = tf.eternalize(tf.induction(Truth(0.0, cfg.anticipation_confidence), past))
-            if cache is not None:
-                cache[pre_truth, rdt] = neg
-        tables = post.precondition_beliefs  # ``imp`` came from one of them
-        if tables is None:
-            tables = post.tables(cfg.operations_max, cfg.table_size)
-        tables[opi].add_and_revise(
-            Implication(imp.term, neg, (), imp.dt, imp.creation_time, imp.source), cfg.stamp_size
+    def _negative_evidence(self, pre_truth: Truth, rdt: int) -> Truth:
+        """The truth of one failure of a link whose precondition had ``pre_truth``
+        ``rdt`` cycles before the predicted outcome."""
+        past = tf.projection(pre_truth, 0, rdt)
+        return tf.eternalize(
+            tf.induction(Truth(0.0, self.config.anticipation_confidence), past)  # type: ignore[attr-defined]
         )
 
 
