@@ -419,9 +419,13 @@ class NAR(SensorimotorMixin, DecisionMixin):
                 self._print("Revised: " + belief.line(priority))
             self._add_event(belief, priority, revised=True)
 
-    def _revision_and_choice(self, old: Event | None, new: Event) -> tuple[Event, bool]:
+    def _revision_and_choice(
+        self, old: Event | None, new: Event, fresh: bool = False
+    ) -> tuple[Event, bool]:
+        """The revised event and True, or the stronger of the two and False; ``new`` is
+        copied before it is kept unless the caller made it for this call (``fresh``)."""
         if old is None:
-            return _copy(new), False
+            return (new if fresh else _copy(new)), False
         later = max(old.occurrence_time, new.occurrence_time)
         po = old.projected(later)
         pn = new.projected(later)
@@ -433,7 +437,7 @@ class NAR(SensorimotorMixin, DecisionMixin):
             or old.term is not new.term
         ):
             if pn.truth.c > po.truth.c:
-                return _copy(new), False
+                return (new if fresh else _copy(new)), False
             return old, False
         r = revise_events(po, pn, self.config.stamp_size)
         return r, True

@@ -492,12 +492,12 @@ class SensorimotorMixin:
                 )
                 if imp.dt > 0.0:
                     old = oc.predicted_belief
-                    oc.predicted_belief, _ = self._revision_and_choice(old, pred)  # type: ignore[attr-defined]
+                    oc.predicted_belief, _ = self._revision_and_choice(old, pred, True)  # type: ignore[attr-defined]
                     if showing:
                         self._show_prediction(old, oc.predicted_belief)
                 elif oc.belief_spike is None or occ > oc.belief_spike.occurrence_time:
                     old = oc.belief_spike
-                    oc.belief_spike, _ = self._revision_and_choice(old, pred)  # type: ignore[attr-defined]
+                    oc.belief_spike, _ = self._revision_and_choice(old, pred, True)  # type: ignore[attr-defined]
                     if showing:
                         self._show_prediction(old, oc.belief_spike)
                     # only this term's entry changes, and the entries of preconditions
