@@ -206,6 +206,8 @@ class SensorimotorMixin:
                     continue
                 a, b = link.args
                 for cond, concl in ((a, b), (b, a)) if link.op == "<=>" else ((a, b),):
+                    if cond.op is not None and cond.op != c.term.op:
+                        continue  # what unify would say first, without the call
                     bind = unify(cond, c.term)
                     if bind is None:
                         continue
