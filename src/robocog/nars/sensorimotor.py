@@ -394,9 +394,11 @@ class SensorimotorMixin:
         weak = min(0.05, 1.98 * (threshold - 0.5)) if threshold > 0.5 + 1e-9 else 0.0
         # precondition term -> (its event, that event projected to now with the
         # operation, whether it is weak, the bindings making the precondition that
-        # event's term); the same precondition serves many implications. Dropped when
-        # an event or the concept store changes below.
-        sources: dict[Term, tuple[Event, Truth, bool, dict[Term, Term] | None] | None] = {}
+        # event's term, its stamp's ids); the same precondition serves many
+        # implications. Dropped when an event or the concept store changes below.
+        sources: dict[
+            Term, tuple[Event, Truth, bool, dict[Term, Term] | None, frozenset[int]] | None
+        ] = {}
         groups: dict[object, dict[Concept, None]] | None = None
         var_sources: list[Term] = []
         negatives: dict[tuple[Truth, int], Truth] = {}
@@ -430,11 +432,17 @@ class SensorimotorMixin:
                         pre_i = tf.intersection(
                             tf.projection(spike.truth, spike.occurrence_time, now), op_truth
                         )
-                        entry = (spike, pre_i, pre_i.c < weak, unify(source, spike.term))
+                        entry = (
+                            spike,
+                            pre_i,
+                            pre_i.c < weak,
+                            unify(source, spike.term),
+                            frozenset(spike.stamp),
+                        )
                     sources[source] = entry
                 if entry is None:
                     continue
-                spike, pre_i, is_weak, bind = entry
+                spike, pre_i, is_weak, bind, spike_ids = entry
                 if is_weak and imp.truth.f * pre_i.f != 0.0:
                     continue
                 if opi:
@@ -452,7 +460,7 @@ class SensorimotorMixin:
                 # one failure: induction from a {0, anticipation_confidence} outcome and
                 # the precondition projected over the link's offset, the same for every
                 # link of this precondition truth and offset
-                rdt = round(imp.dt)
+                rdt = round(imp.dt)  # also the prediction's offset below
                 neg = negatives.get((spike.truth, rdt))
                 if neg is None:
                     neg = negatives[spike.truth, rdt] = self._negative_evidence(spike.truth, rdt)
@@ -473,8 +481,8 @@ class SensorimotorMixin:
                         outcome = outcomes[okey] = apply(imp.term.args[1], bind)
                 else:
                     outcome = imp.term.args[1]
-                if outcome.has_var or overlap(spike.stamp, imp.stamp):
-                    continue
+                if outcome.has_var or not spike_ids.isdisjoint(imp.stamp):
+                    continue  # (the stamps overlap)
                 oc = mem.conceptualize(outcome, now)
                 if mem.evictions != evictions:
                     evictions = mem.evictions
@@ -483,7 +491,7 @@ class SensorimotorMixin:
                     groups = None
                 oc.use_count += 1  # Concept.use, written out
                 oc.last_used = now
-                occ = now + round(imp.dt)
+                occ = now + rdt
                 pred = Event(
                     outcome,
                     BELIEF,
