@@ -452,11 +452,14 @@ class SensorimotorMixin:
                         continue
                     if unify(apply(op_term, subs), e.term) is None:
                         continue  # same operation, other arguments
-                predicted = tf.deduction(imp.truth, pre_i)
-                if expectation(predicted) <= threshold and not (
-                    predicted.c < 0.05 and predicted.f == 0.0
-                ):
+                # deduction and its expectation written out (most links stop here);
+                # the same operations in the same order as tf.deduction/expectation
+                it = imp.truth
+                pf = it.f * pre_i.f
+                pc = it.c * pre_i.c * pf
+                if pc * (pf - 0.5) + 0.5 <= threshold and not (pc < 0.05 and pf == 0.0):
                     continue
+                predicted = Truth(pf, pc)
                 # one failure: induction from a {0, anticipation_confidence} outcome and
                 # the precondition projected over the link's offset, the same for every
                 # link of this precondition truth and offset
@@ -517,7 +520,9 @@ class SensorimotorMixin:
                     if var_sources:
                         kept = []
                         for v in var_sources:
-                            if unify(v, outcome) is None:
+                            if (v.op is not None and v.op != outcome.op) or unify(
+                                v, outcome
+                            ) is None:
                                 kept.append(v)
                             else:
                                 sources.pop(v, None)
