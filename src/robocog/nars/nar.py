@@ -30,7 +30,9 @@ from .terms import F_COMPOSED, TEMPORAL_IMPLICATION, Term, atom
 from .truth import Truth, expectation
 from .unify import unify
 
-SAVE_FORMAT = "robocog-nar-1"
+#: bumped whenever the pickled layout changes (2: tables keep their expectations, concepts
+#: whether they were ever in the time index)
+SAVE_FORMAT = "robocog-nar-2"
 PENDING_QUESTIONS = 32
 DEFAULT_OPERATIONS = (
     "^left",
@@ -762,8 +764,14 @@ class NAR(SensorimotorMixin, DecisionMixin):
         """A reasoner restored from a file written by :meth:`save`."""
         with open(path, "rb") as f:
             state = pickle.load(f)  # noqa: S301 - files written by save()
-        if not isinstance(state, dict) or state.get("format") != SAVE_FORMAT:
+        if not isinstance(state, dict) or not str(state.get("format", "")).startswith(
+            "robocog-nar-"
+        ):
             raise ValueError(f"{path}: not a saved reasoner")
+        if state["format"] != SAVE_FORMAT:
+            raise ValueError(
+                f"{path}: saved in format {state['format']}, this robocog reads {SAVE_FORMAT}"
+            )
         nar = cls(seed=state["seed"])
         cfg = state["config"]
         for k, v in cfg.items():
