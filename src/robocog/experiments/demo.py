@@ -26,8 +26,8 @@ def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--budget",
         type=float,
-        default=60.0,
-        help="seconds of wall time for all runs (default 60): a slow mind runs fewer",
+        default=90.0,
+        help="seconds of wall time for all runs (default 90): a slow mind runs fewer",
     )
 
 
