@@ -425,7 +425,10 @@ class SensorimotorMixin:
                         var_sources.append(source)
                         if groups is None:
                             groups = self._spike_groups()
-                    spike = self._source_spike(source, groups)
+                        spike = self._source_spike(source, groups)
+                    else:  # what _source_spike gives for a ground precondition
+                        sc = mem.find(source)
+                        spike = sc.belief_spike if sc is not None else None
                     if spike is None:
                         entry = None
                     else:
@@ -467,10 +470,7 @@ class SensorimotorMixin:
                 neg = negatives.get((spike.truth, rdt))
                 if neg is None:
                     neg = negatives[spike.truth, rdt] = self._negative_evidence(spike.truth, rdt)
-                table.add_and_revise(
-                    Implication(imp.term, neg, (), imp.dt, imp.creation_time, imp.source),
-                    stamp_size,
-                )
+                table.add_evidence(imp.term, neg, imp.dt, imp.creation_time, source, stamp_size)
                 if bind is None:
                     continue
                 if bind:

@@ -6,17 +6,18 @@ operation id, so a decision looks only at the implications that can reach its go
 
 from __future__ import annotations
 
-from bisect import bisect_right
+from bisect import bisect_left, bisect_right
 
 from .event import Implication
-from .stamp import merge, overlap
-from .truth import c2w, expectation, revision
+from .stamp import Stamp, merge, overlap
+from .terms import Term
+from .truth import Truth, c2w, expectation, revision
 
 
 class Table:
     """Add-and-revise table of implications, best expectation first."""
 
-    __slots__ = ("items", "size", "_neg")
+    __slots__ = ("items", "size", "_neg", "_entry")
 
     def __init__(self, size: int) -> None:
         self.items: list[Implication] = []
@@ -24,6 +25,9 @@ class Table:
         #: minus each item's expectation, ascending: kept beside the items so that
         #: placing a revised link is a bisection, not a recomputation of every entry
         self._neg: list[float] = []
+        #: (term, whether dt is 0) -> the one entry of that term and kind; anticipation
+        #: revises hundreds of entries per input, so finding one must not be a scan
+        self._entry: dict[tuple[Term, bool], Implication] = {}
 
     def __len__(self) -> int:
         return len(self.items)
@@ -39,39 +43,82 @@ class Table:
         i = bisect_right(neg, e)
         self.items.insert(i, imp)
         neg.insert(i, e)
+        self._entry[imp.term, imp.dt == 0.0] = imp
         if len(neg) > self.size:
-            self.items.pop()
+            dropped = self.items.pop()
             neg.pop()
+            del self._entry[dropped.term, dropped.dt == 0.0]
             return i < self.size
         return True
 
-    def _delete(self, i: int) -> None:
-        del self.items[i]
+    def _remove(self, old: Implication) -> None:
+        """Take the stored entry ``old`` out (found by its expectation, then identity)."""
+        items = self.items
+        i = bisect_left(self._neg, -expectation(old.truth))
+        while items[i] is not old:
+            i += 1
+        del items[i]
         del self._neg[i]
+        del self._entry[old.term, old.dt == 0.0]
 
     def add_and_revise(self, imp: Implication, stamp_size: int = 10) -> Implication | None:
         """Revise with the entry of the same term (or insert); returns the stored entry."""
-        term = imp.term
-        concurrent = imp.dt == 0.0
-        for i, old in enumerate(self.items):
-            # a concurrent (dt 0) and a predictive (dt > 0) link of one term stay apart
-            if old.term is term and (old.dt == 0.0) == concurrent:
-                if imp.term.op == "==>" and overlap(old.stamp, imp.stamp):
-                    keep = imp if imp.truth.c > old.truth.c else old
-                    self._delete(i)
-                    self._insert(keep)
-                    return keep
-                w1, w2 = c2w(old.truth.c), c2w(imp.truth.c)
-                dt = (w1 * old.dt + w2 * imp.dt) / (w1 + w2) if w1 + w2 > 0 else imp.dt
-                revised = Implication(
-                    imp.term,
-                    revision(old.truth, imp.truth),
-                    merge(old.stamp, imp.stamp, stamp_size),
-                    dt,
-                    imp.creation_time,
-                    imp.source,
-                )
-                self._delete(i)
-                self._insert(revised)
-                return revised
-        return imp if self._insert(imp) else None
+        # a concurrent (dt 0) and a predictive (dt > 0) link of one term stay apart
+        old = self._entry.get((imp.term, imp.dt == 0.0))
+        if old is None:
+            return imp if self._insert(imp) else None
+        return self._revise(old, imp.term, imp.truth, imp.stamp, imp.dt, imp, stamp_size)
+
+    def add_evidence(
+        self,
+        term: Term,
+        truth: Truth,
+        dt: float,
+        creation_time: int,
+        source: Term | None,
+        stamp_size: int = 10,
+    ) -> Implication | None:
+        """``add_and_revise`` of a link with no stamp (a failure counted by anticipation),
+        without building that link unless it is stored as it is."""
+        old = self._entry.get((term, dt == 0.0))
+        if old is None:
+            imp = Implication(term, truth, (), dt, creation_time, source)
+            return imp if self._insert(imp) else None
+        return self._revise(old, term, truth, (), dt, None, stamp_size, creation_time, source)
+
+    def _revise(
+        self,
+        old: Implication,
+        term: Term,
+        truth: Truth,
+        stamp: Stamp,
+        dt: float,
+        imp: Implication | None,
+        stamp_size: int,
+        creation_time: int = 0,
+        source: Term | None = None,
+    ) -> Implication:
+        """Revise the stored ``old`` with new evidence of the same term; ``imp`` is the
+        new link when the caller has one (else it is built from the other arguments)."""
+        if imp is not None:
+            creation_time, source = imp.creation_time, imp.source
+        if term.op == "==>" and overlap(old.stamp, stamp):
+            keep = old
+            if truth.c > old.truth.c:
+                keep = imp or Implication(term, truth, stamp, dt, creation_time, source)
+            self._remove(old)
+            self._insert(keep)
+            return keep
+        w1, w2 = c2w(old.truth.c), c2w(truth.c)
+        mean_dt = (w1 * old.dt + w2 * dt) / (w1 + w2) if w1 + w2 > 0 else dt
+        revised = Implication(
+            term,
+            revision(old.truth, truth),
+            merge(old.stamp, stamp, stamp_size),
+            mean_dt,
+            creation_time,
+            source,
+        )
+        self._remove(old)
+        self._insert(revised)
+        return revised

@@ -1,0 +1,87 @@
+"""Implication tables against the plain definition: a list kept sorted by expectation,
+revised by scanning for the entry of the same term and kind."""
+
+from __future__ import annotations
+
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from robocog.nars.event import Implication
+from robocog.nars.narsese import parse_term
+from robocog.nars.stamp import merge, overlap
+from robocog.nars.table import Table
+from robocog.nars.truth import Truth, c2w, expectation, revision
+
+_TERMS = [
+    parse_term(t) for t in ("<a =/> b>", "<c =/> b>", "<<$1 --> a> ==> <$1 --> b>>", "<d =/> b>")
+]
+
+
+def _reference(items: list[Implication], imp: Implication, size: int) -> list[Implication]:
+    """The table after ``add_and_revise(imp)``, computed the obvious way."""
+    items = list(items)
+
+    def insert(x: Implication) -> None:
+        e = expectation(x.truth)
+        for i, other in enumerate(items):
+            if expectation(other.truth) < e:
+                items.insert(i, x)
+                break
+        else:
+            items.append(x)
+        del items[size:]
+
+    for i, old in enumerate(items):
+        if old.term is imp.term and (old.dt == 0.0) == (imp.dt == 0.0):
+            del items[i]
+            if imp.term.op == "==>" and overlap(old.stamp, imp.stamp):
+                insert(imp if imp.truth.c > old.truth.c else old)
+                return items
+            w1, w2 = c2w(old.truth.c), c2w(imp.truth.c)
+            dt = (w1 * old.dt + w2 * imp.dt) / (w1 + w2) if w1 + w2 > 0 else imp.dt
+            insert(
+                Implication(
+                    imp.term,
+                    revision(old.truth, imp.truth),
+                    merge(old.stamp, imp.stamp, 10),
+                    dt,
+                    imp.creation_time,
+                    imp.source,
+                )
+            )
+            return items
+    insert(imp)
+    return items
+
+
+_steps = st.lists(
+    st.tuples(
+        st.integers(0, len(_TERMS) - 1),
+        st.sampled_from([0.0, 1.0, 2.0]),
+        st.one_of(st.sampled_from([0.0, 0.5, 1.0]), st.floats(0.0, 1.0)),  # ties too
+        st.one_of(st.sampled_from([0.3, 0.9]), st.floats(0.01, 0.95)),
+        st.lists(st.integers(1, 6), max_size=3, unique=True),
+        st.booleans(),  # through add_evidence (no stamp) rather than add_and_revise
+    ),
+    max_size=40,
+)
+
+
+@settings(max_examples=200, deadline=None)
+@given(_steps, st.integers(1, 4))
+def test_table_matches_the_plain_definition(steps, size) -> None:  # noqa: ANN001
+    table = Table(size)
+    want: list[Implication] = []
+    for k, dt, f, c, ids, evidence in steps:
+        term = _TERMS[k]
+        stamp = () if evidence else tuple(ids)
+        imp = Implication(term, Truth(f, c), stamp, dt, 7, None)
+        want = _reference(want, imp, size)
+        if evidence:
+            table.add_evidence(term, Truth(f, c), dt, 7, None)
+        else:
+            table.add_and_revise(imp)
+        assert [(x.term, x.truth, x.stamp, x.dt) for x in table.items] == [
+            (x.term, x.truth, x.stamp, x.dt) for x in want
+        ]
+        assert len(table.items) <= size
