@@ -370,14 +370,8 @@ class NAR(SensorimotorMixin, DecisionMixin):
             self._add_implication(e.term, e.truth, e.stamp, e.dt, is_input, priority)
             return
         c = self.memory.conceptualize(e.term, now)
-        # Concept.use and the lazy priority decay, written out: this runs for every
-        # derived belief
-        c.use_count += self.config.eternal_input_usage_boost if eternal_input else 1
-        c.last_used = now
-        dt = now - c.priority_time
-        old_p = c.priority if dt <= 0 else c.priority * self.config.concept_durability**dt
-        c.priority = old_p if old_p > priority else priority
-        c.priority_time = now
+        c.use(now, eternal_input, self.config.eternal_input_usage_boost)
+        self._set_priority(c, max(self._priority(c), priority))
         if e.occurrence_time != ETERNAL:
             if index:
                 # derived compositions stay out of the occurrence-time index: they

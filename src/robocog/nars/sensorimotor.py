@@ -71,7 +71,7 @@ class SensorimotorMixin:
         self._groups: dict[object, dict[Concept, None]] | None = None
         #: (link, precondition instance) -> the link's consequence for that instance
         self._outcomes: dict[tuple[Term, Term], Term] = {}
-        #: precondition with variables -> its keys into the groups (``_spike_keys``)
+        #: precondition with variables -> the groups a match must be in (``_group_keys``)
         self._source_keys: dict[Term, list[object]] = {}
         #: op id -> concepts with implications in that table
         self.table_index: dict[int, dict[Concept, None]] = {}
@@ -131,13 +131,6 @@ class SensorimotorMixin:
                     f"Stamp={fmt(stored.stamp)} {stored.truth}"
                 )
         return stored
-
-    def implications_for(self, post: Concept, opi: int) -> list[Implication]:
-        """The ``=/>`` links into ``post`` for operation table ``opi``."""
-        tables = post.precondition_beliefs
-        if tables is None or opi >= len(tables):
-            return []
-        return tables[opi].items
 
     def _forget_concept(self, c: Concept) -> None:
         """Drop an evicted concept from the implication, link and time indexes."""
@@ -403,8 +396,8 @@ class SensorimotorMixin:
         var_sources: list[Term] = []
         negatives: dict[tuple[Truth, int], Truth] = {}
         outcomes = self._outcomes
-        showing = self._shows(1.0)  # type: ignore[attr-defined]
         stamp_size = cfg.stamp_size
+        showing = self._shows(1.0)  # type: ignore[attr-defined]  # printing is rare: test once
         evictions = mem.evictions
         for post in list(targets):
             if mem.find(post.term) is not post:
@@ -470,7 +463,9 @@ class SensorimotorMixin:
                 neg = negatives.get((spike.truth, rdt))
                 if neg is None:
                     neg = negatives[spike.truth, rdt] = self._negative_evidence(spike.truth, rdt)
-                table.add_evidence(imp.term, neg, imp.dt, imp.creation_time, source, stamp_size)
+                table.add_and_revise(
+                    Implication(imp.term, neg, (), imp.dt, imp.creation_time, source), stamp_size
+                )
                 if bind is None:
                     continue
                 if bind:
@@ -492,8 +487,7 @@ class SensorimotorMixin:
                     sources.clear()
                     var_sources.clear()
                     groups = None
-                oc.use_count += 1  # Concept.use, written out
-                oc.last_used = now
+                oc.use(now, False, cfg.eternal_input_usage_boost)
                 occ = now + rdt
                 pred = Event(
                     outcome,
@@ -544,28 +538,6 @@ class SensorimotorMixin:
                 _group_add(groups, c)
         return groups
 
-    @staticmethod
-    def _spike_keys(source: Term) -> list[object]:
-        """The groups of :meth:`_spike_groups` a term with variables must be in: one per
-        ground component (with its path), and its connector and arity; a term matching
-        ``source`` is in every one of them, so the smallest will do."""
-        if source.op is None:
-            return [None]
-        keys: list[object] = [(source.op, len(source.args))]
-        level: list[tuple[tuple[object, ...], Term]] = [((), source)]
-        while level:
-            nxt: list[tuple[tuple[object, ...], Term]] = []
-            for path, x in level:
-                n = len(x.args)
-                for i, arg in enumerate(x.args):
-                    sub = (*path, x.op, n, i)
-                    if not arg.has_var:
-                        keys.append((sub, arg))
-                    elif arg.op is not None:
-                        nxt.append((sub, arg))
-            level = nxt
-        return keys
-
     def _source_spike(
         self, source: Term, groups: dict[object, dict[Concept, None]] | None = None
     ) -> Event | None:
@@ -580,7 +552,7 @@ class SensorimotorMixin:
             if keys is None:
                 if len(self._source_keys) >= 4096:
                     self._source_keys.clear()
-                keys = self._source_keys[source] = self._spike_keys(source)
+                keys = self._source_keys[source] = _group_keys(source, ground_only=True)
             group: dict[Concept, None] | None = None
             for key in keys:
                 g = groups.get(key)
@@ -598,15 +570,15 @@ class SensorimotorMixin:
         return best
 
     def _show_prediction(self, old: Event | None, new: Event) -> None:
-        """Print a changed prediction as ONA does (a derived event of priority 1)."""
+        """Print a changed prediction as ONA does (a derived event of priority 1); the
+        caller has checked that derivations of that priority are shown."""
         if (
             old is not None
             and old.truth == new.truth
             and old.occurrence_time == new.occurrence_time
         ):
             return
-        if self._shows(1.0):  # type: ignore[attr-defined]
-            self._print("Derived: " + new.line(1.0))  # type: ignore[attr-defined]
+        self._print("Derived: " + new.line(1.0))  # type: ignore[attr-defined]
 
     def _negative_evidence(self, pre_truth: Truth, rdt: int) -> Truth:
         """The truth of one failure of a link whose precondition had ``pre_truth``
@@ -617,8 +589,11 @@ class SensorimotorMixin:
         )
 
 
-def _group_keys(t: Term) -> list[object]:
-    """The keys of every group of ``_spike_groups`` that ``t`` belongs to."""
+def _group_keys(t: Term, ground_only: bool = False) -> list[object]:
+    """The keys of every group of ``_spike_groups`` that ``t`` belongs to. With
+    ``ground_only``, those of its components without variables: a ground term matching
+    ``t`` (a precondition with variables) is in every one of those groups, so the
+    smallest of them will do for finding it."""
     keys: list[object] = [None]
     if t.op is None:
         return keys
@@ -630,7 +605,8 @@ def _group_keys(t: Term) -> list[object]:
         n = len(x.args)
         for i, arg in enumerate(x.args):
             sub = (*path, op, n, i)
-            keys.append((sub, arg))
+            if not (ground_only and arg.has_var):
+                keys.append((sub, arg))
             if arg.op is not None:
                 stack.append((sub, arg))
     return keys

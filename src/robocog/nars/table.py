@@ -9,9 +9,9 @@ from __future__ import annotations
 from bisect import bisect_left, bisect_right
 
 from .event import Implication
-from .stamp import Stamp, merge, overlap
+from .stamp import merge, overlap
 from .terms import Term
-from .truth import Truth, c2w, expectation, revision
+from .truth import c2w, expectation, revision
 
 
 class Table:
@@ -67,57 +67,20 @@ class Table:
         old = self._entry.get((imp.term, imp.dt == 0.0))
         if old is None:
             return imp if self._insert(imp) else None
-        return self._revise(old, imp.term, imp.truth, imp.stamp, imp.dt, imp, stamp_size)
-
-    def add_evidence(
-        self,
-        term: Term,
-        truth: Truth,
-        dt: float,
-        creation_time: int,
-        source: Term | None,
-        stamp_size: int = 10,
-    ) -> Implication | None:
-        """``add_and_revise`` of a link with no stamp (a failure counted by anticipation),
-        without building that link unless it is stored as it is."""
-        old = self._entry.get((term, dt == 0.0))
-        if old is None:
-            imp = Implication(term, truth, (), dt, creation_time, source)
-            return imp if self._insert(imp) else None
-        return self._revise(old, term, truth, (), dt, None, stamp_size, creation_time, source)
-
-    def _revise(
-        self,
-        old: Implication,
-        term: Term,
-        truth: Truth,
-        stamp: Stamp,
-        dt: float,
-        imp: Implication | None,
-        stamp_size: int,
-        creation_time: int = 0,
-        source: Term | None = None,
-    ) -> Implication:
-        """Revise the stored ``old`` with new evidence of the same term; ``imp`` is the
-        new link when the caller has one (else it is built from the other arguments)."""
-        if imp is not None:
-            creation_time, source = imp.creation_time, imp.source
-        if term.op == "==>" and overlap(old.stamp, stamp):
-            keep = old
-            if truth.c > old.truth.c:
-                keep = imp or Implication(term, truth, stamp, dt, creation_time, source)
+        if imp.term.op == "==>" and overlap(old.stamp, imp.stamp):
+            keep = imp if imp.truth.c > old.truth.c else old
             self._remove(old)
             self._insert(keep)
             return keep
-        w1, w2 = c2w(old.truth.c), c2w(truth.c)
-        mean_dt = (w1 * old.dt + w2 * dt) / (w1 + w2) if w1 + w2 > 0 else dt
+        w1, w2 = c2w(old.truth.c), c2w(imp.truth.c)
+        dt = (w1 * old.dt + w2 * imp.dt) / (w1 + w2) if w1 + w2 > 0 else imp.dt
         revised = Implication(
-            term,
-            revision(old.truth, truth),
-            merge(old.stamp, stamp, stamp_size),
-            mean_dt,
-            creation_time,
-            source,
+            imp.term,
+            revision(old.truth, imp.truth),
+            merge(old.stamp, imp.stamp, stamp_size),
+            dt,
+            imp.creation_time,
+            imp.source,
         )
         self._remove(old)
         self._insert(revised)
