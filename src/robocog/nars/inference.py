@@ -10,7 +10,6 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from . import truth as tf
-from .event import ETERNAL
 from .rules import (
     RuleTable,
     hol_component_invalid,
@@ -65,18 +64,9 @@ class Derivation:
                     self._derive(v, t)
             return
         if term.op == CONJUNCTION:
-            # a conjunction with a dependent variable derived from two premises (or in
-            # time) is kept only where its concept exists already (see NAR._add_event)
-            concepts = (
-                self.nar.memory.concepts
-                if len(self.stamp) > 1 or self.occurrence != ETERNAL
-                else None
-            )
             for ext in (True, False):
                 v = introduce_conjunction_variables(term, ext)
-                if v is None or v is term or (concepts is not None and v not in concepts):
-                    continue
-                if not hol_component_invalid(v):
+                if v is not None and v is not term and not hol_component_invalid(v):
                     self._derive(v, t)
             return
         self._derive(term, t)

@@ -246,18 +246,13 @@ class Memory:
         if own is not None:
             seen.add(own.id)
             yield own
-        for a in _index_atoms(term):
+        for a in term.index_names():
             d = self.atom_index.get(a)
             if d:
                 for c in d:
                     if c.id not in seen:
                         seen.add(c.id)
                         yield c
-
-
-def _index_atoms(term: Term) -> tuple[Term, ...]:
-    """Distinct non-variable atoms of ``term`` in ONA's array (breadth-first) order."""
-    return term.index_names()
 
 
 def is_eternal(e: Event | None) -> bool:

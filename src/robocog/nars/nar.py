@@ -316,7 +316,7 @@ class NAR(SensorimotorMixin, DecisionMixin):
         composition = (
             derived
             and (len(e.stamp) > 1 or e.occurrence_time != ETERNAL)
-            and _needs_existing_concept(e)
+            and _needs_existing_concept(e.term, e.occurrence_time)
         )
         if composition and self.memory.find(e.term) is None:
             if self.config.compositions_need_concept or e.term.has_var:
@@ -442,10 +442,10 @@ class NAR(SensorimotorMixin, DecisionMixin):
         self, term: Term, t: Truth, stamp: tuple[int, ...], occurrence: int, priority: float
     ) -> None:
         if (
-            term.flags & F_COMPOSED
-            and (self.config.compositions_need_concept or term.has_var)
+            (self.config.compositions_need_concept or term.has_var)
             and (len(stamp) > 1 or occurrence != ETERNAL)
             and term not in self.memory.concepts
+            and _needs_existing_concept(term, occurrence)
         ):
             return  # what ``_add_event`` would decide, before the costlier filters
         if rejected(term):
@@ -803,12 +803,11 @@ _IMAGES = frozenset({"/1", "/2", "\\1", "\\2"})
 _COMPOSED = frozenset({"-", "~", "&", "|"})
 
 
-def _needs_existing_concept(e: Event) -> bool:
+def _needs_existing_concept(t: Term, occurrence: int) -> bool:
     """ONA: images at the top, differences and intersections anywhere, and
     conjunctions with dependent variables (or in time) are derived only into
     concepts that already exist."""
-    t = e.term
-    if t.op == "&&" and (t.has_dep_var or e.occurrence_time != ETERNAL):
+    if t.op == "&&" and (t.has_dep_var or occurrence != ETERNAL):
         return True
     if (
         t.op is not None
