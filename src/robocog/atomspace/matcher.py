@@ -28,7 +28,7 @@ from typing import TYPE_CHECKING
 
 from robocog.atomspace import types as _t
 from robocog.atomspace.atoms import Atom, Link, Node, variables_of
-from robocog.atomspace.fastpath import _EVAL_PREDICATES, _PLAIN, _two, fast_query
+from robocog.atomspace.fastpath import _EVAL_PREDICATES, _PLAIN, fast_query
 
 if TYPE_CHECKING:
     from robocog.atomspace.space import AtomSpace
@@ -823,7 +823,8 @@ def query(
         # The query asked most, one relation (R c (L a0 a1)) with one leaf known and the
         # other a variable, is answered right here from the relation index (see
         # fastpath): a call more would cost a tenth of its time. Its types are plain
-        # relations once fast_query has met them (the first query of a type goes there).
+        # relations once fast_query has met them (the first query of a type goes there);
+        # everything else, joins included, goes to fast_query.
         if body.__class__ is Link and space._parent is None:
             # atoms are tuple subclasses, which Python unpacks more slowly than it
             # indexes them: hence body[0], body[1] rather than typ, out = body
@@ -842,27 +843,24 @@ def query(
                     # a plain type is a link type, so inner is a link
                     if itype in _PLAIN and len(leaves) == 2:
                         a0, a1 = leaves
-                        # a VariableNode is a node; the known leaf must be one too (a
-                        # link may hold variables)
+                        # the variable leaf and the known one (a VariableNode is a
+                        # node; the known leaf must be one too: a link may hold
+                        # variables)
                         if a1[0] == "VariableNode":
-                            if a0.__class__ is Node and a0[0] != "VariableNode":
-                                best = space._relations.get((a0, 0, c, typ, itype, 2))
-                                found = []
-                                if best is not None:
-                                    for x in best:
-                                        found.append({a1: x})
-                                return found
-                        elif a0[0] == "VariableNode" and a1.__class__ is Node:
-                            best = space._relations.get((a1, 1, c, typ, itype, 2))
+                            known, pos, var = a0, 0, a1
+                        else:
+                            known, pos, var = a1, 1, a0
+                        if (
+                            var[0] == "VariableNode"
+                            and known.__class__ is Node
+                            and known[0] != "VariableNode"
+                        ):
+                            best = space._relations.get((known, pos, c, typ, itype, 2))
                             found = []
                             if best is not None:
                                 for x in best:
-                                    found.append({a0: x})
+                                    found.append({var: x})
                             return found
-            elif typ == "AndLink" and len(out) == 2:
-                found = _two(space._relations.get, out[0], out[1])
-                if found is not None:
-                    return found
         found = fast_query(space, body)
         if found is not None:
             return found
