@@ -260,32 +260,31 @@ class Rel:
         return term_str(self)
 
 
-class And:
+class _Junction:
+    """Two formulas joined by a connective; the subclass says which (code dispatches on
+    the exact class, so the two stay distinct types)."""
+
+    __slots__ = ("left", "right")
+    ground = False
+
+    def __init__(self, left: Term, right: Term) -> None:
+        self.left = left
+        self.right = right
+
+    def __repr__(self) -> str:
+        return term_str(self)
+
+
+class And(_Junction):
     """Conjunction ``a & b``."""
 
-    __slots__ = ("left", "right")
-    ground = False
-
-    def __init__(self, left: Term, right: Term) -> None:
-        self.left = left
-        self.right = right
-
-    def __repr__(self) -> str:
-        return term_str(self)
+    __slots__ = ()
 
 
-class Or:
+class Or(_Junction):
     """Disjunction ``a | b``."""
 
-    __slots__ = ("left", "right")
-    ground = False
-
-    def __init__(self, left: Term, right: Term) -> None:
-        self.left = left
-        self.right = right
-
-    def __repr__(self) -> str:
-        return term_str(self)
+    __slots__ = ()
 
 
 class Not:
