@@ -82,3 +82,32 @@ def test_table_matches_the_plain_definition(steps, size) -> None:  # noqa: ANN00
             (x.term, x.truth, x.stamp, x.dt) for x in want
         ]
         assert len(table.items) <= size
+
+
+def _state(table: Table) -> list[tuple[object, ...]]:
+    """Every stored field, floats as their bits."""
+    return [
+        (x.term, x.truth.f.hex(), x.truth.c.hex(), x.stamp, x.dt.hex(), x.creation_time, x.source)
+        for x in table.items
+    ]
+
+
+@settings(max_examples=200, deadline=None)
+@given(_steps, st.integers(1, 4), st.integers(1, 12))
+def test_a_failure_is_a_revision_by_a_stampless_link(steps, size, stamp_size) -> None:  # noqa: ANN001
+    """``add_failure`` stores what ``add_and_revise`` of the stampless implication
+    would, to the bit, wherever the entry sits and however long its stamp is."""
+    plain, quick = Table(size), Table(size)
+    for k, dt, f, c, ids, failure in steps:
+        term = _TERMS[k]
+        if failure:
+            truth = Truth(f, c)
+            plain.add_and_revise(Implication(term, truth, (), dt, 7, term), stamp_size)
+            # only the term, offset, creation time and source of the link are used
+            link = Implication(term, Truth(0.5, 0.5), (99,), dt, 7, term)
+            quick.add_failure(link, truth, c2w(c), stamp_size)
+        else:
+            imp = Implication(term, Truth(f, c), tuple(ids) * 3, dt, 7, term)
+            plain.add_and_revise(imp, stamp_size)
+            quick.add_and_revise(imp, stamp_size)
+        assert _state(quick) == _state(plain)

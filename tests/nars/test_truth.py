@@ -89,6 +89,30 @@ def test_revision_never_loses_confidence(f1: float, c1: float, f2: float, c2: fl
     assert min(f1, f2) - 1e-9 <= r.f <= max(f1, f2) + 1e-9
 
 
+def _bits(t: Truth) -> tuple[str, str]:
+    return (t.f.hex(), t.c.hex())
+
+
+# confidences of every size, 0 and 1 included (weights 0 and infinite), and frequencies
+# outside [0, 1], where the frequency cap and the confidence cap both act
+_any_c = st.one_of(st.sampled_from([0.0, 0.5, 0.99, 1.0]), st.floats(0.0, 1.0))
+_any_f = st.one_of(unit, st.floats(-2.0, 3.0))
+
+
+@given(_any_f, _any_c, _any_f, _any_c)
+def test_revision_is_the_plain_definition_to_the_bit(f1, c1, f2, c2) -> None:  # noqa: ANN001
+    """min/max are spelled out in ``pooled``: the same floats as the builtins give."""
+    a, b = Truth(f1, c1), Truth(f2, c2)
+    w1 = tf.HORIZON * c1 / (1.0 - c1) if c1 < 1.0 else float("inf")
+    w2 = tf.HORIZON * c2 / (1.0 - c2) if c2 < 1.0 else float("inf")
+    w = w1 + w2
+    f = min(1.0, (w1 * f1 + w2 * f2) / w) if w > 0 else 0.0
+    c = min(tf.MAX_CONFIDENCE, max(w / (w + tf.HORIZON), c1, c2))
+    assert _bits(tf.pooled(a, b, w1, w2)) == (f.hex(), c.hex())
+    if c1 < 1.0 and c2 < 1.0:
+        assert _bits(tf.revision(a, b)) == (f.hex(), c.hex())
+
+
 @given(unit, conf, unit, conf)
 def test_syllogisms_stay_in_range_and_below_premises(f1, c1, f2, c2) -> None:  # noqa: ANN001
     for name in ("deduction", "abduction", "induction", "analogy", "comparison"):

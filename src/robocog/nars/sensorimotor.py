@@ -25,6 +25,18 @@ if TYPE_CHECKING:
     from .memory import Concept
 
 
+#: what anticipation keeps per precondition term (see ``_anticipate``)
+_Source = tuple[
+    Event,
+    float,
+    float,
+    bool,
+    dict[Term, Term] | None,
+    frozenset[int],
+    dict[int, tuple[Truth, float]],
+]
+
+
 def split_precondition(subject: Term) -> tuple[Term, Term | None]:
     """``(pre &/ op)`` -> (pre, op); anything else -> (subject, None)."""
     if subject.op == SEQUENCE and subject.args[1].is_op:
@@ -71,8 +83,20 @@ class SensorimotorMixin:
         self._groups: dict[object, dict[Concept, None]] | None = None
         #: (link, precondition instance) -> the link's consequence for that instance
         self._outcomes: dict[tuple[Term, Term], Term] = {}
-        #: precondition with variables -> the groups a match must be in (``_group_keys``)
-        self._source_keys: dict[Term, list[object]] = {}
+        #: precondition with variables -> where its instances are found (``_source_spike``)
+        self._patterns: dict[Term, _Pattern] = {}
+        #: concept term -> its groups' keys (``_group_keys``): a concept moves to the
+        #: newest end of its groups at every event, so they are not recomputed each time
+        self._term_keys: dict[Term, list[object]] = {}
+        #: induced link -> its forms with variables (``_variable_forms``)
+        self._var_forms: dict[Term, tuple[Term, ...]] = {}
+        #: precondition truth -> offset -> ``_failure``, for the anticipation confidence
+        #: ``_failures_for``
+        self._failures: dict[Truth, dict[int, tuple[Truth, float]]] = {}
+        self._failures_for = -1.0
+        #: (event stamp, link stamp, size) -> their merge: a prediction's stamp, which
+        #: is the same at every input while the precondition's event stays
+        self._merged: dict[tuple[tuple[int, ...], tuple[int, ...], int], tuple[int, ...]] = {}
         #: op id -> concepts with implications in that table
         self.table_index: dict[int, dict[Concept, None]] = {}
         #: declarative links by subject: ground subject -> {link term}; general ones apart
@@ -140,8 +164,8 @@ class SensorimotorMixin:
             except ValueError:
                 pass  # it fell off the end of the full index
             else:
-                if self._groups is not None:
-                    _group_remove(self._groups, c)
+                if self._groups is not None and not c.term.has_var:
+                    _group_remove(self._groups, c, self._keys_of(c.term))
         tables = c.precondition_beliefs
         if tables is not None:
             for opi, table in enumerate(tables):
@@ -180,11 +204,12 @@ class SensorimotorMixin:
         mem = self.memory  # type: ignore[attr-defined]
         if not self.links_by_subject and not self.general_links:
             return
+        tolerance = cfg.belief_last_used_tolerance
         fresh = [
             c
             for c in self.time_index
-            if c.belief_spike is not None
-            and now - c.belief_spike.creation_time <= cfg.belief_last_used_tolerance
+            if (b := c.belief_spike) is not None
+            and now - b.creation_time <= tolerance
             and not c.term.has_var
         ]
         for c in fresh:
@@ -233,16 +258,37 @@ class SensorimotorMixin:
         """Remember that ``c`` just received an event (newest first)."""
         idx = self.time_index
         groups = self._groups
+        present = False
+        if c.timed:  # it has been in the index (a search for any other is in vain)
+            try:
+                idx.remove(c)
+                present = True
+            except ValueError:
+                pass  # it fell off the end of the full index
+        if not present and groups is not None and len(idx) == idx.maxlen:
+            gone = idx[-1]  # about to fall off the full index
+            if not gone.term.has_var:
+                _group_remove(groups, gone, self._keys_of(gone.term))
         c.timed = True
-        try:
-            idx.remove(c)
-        except ValueError:
-            if groups is not None and len(idx) == idx.maxlen:
-                _group_remove(groups, idx[-1])  # about to fall off the full index
         idx.appendleft(c)
-        if groups is not None:
-            _group_remove(groups, c)
-            _group_add(groups, c)
+        if groups is not None and not c.term.has_var:
+            # the newest member of each of its groups: moved to (or entered at) the end
+            for k in self._keys_of(c.term):
+                d = groups.get(k)
+                if d is None:
+                    groups[k] = {c: None}
+                else:
+                    d.pop(c, None)
+                    d[c] = None
+
+    def _keys_of(self, term: Term) -> list[object]:
+        """``_group_keys(term)``, remembered (the same concepts come and go)."""
+        keys = self._term_keys.get(term)
+        if keys is None:
+            if len(self._term_keys) >= 4096:
+                self._term_keys.clear()
+            keys = self._term_keys[term] = _group_keys(term)
+        return keys
 
     def _process_belief_event(self, e: Event, priority: float) -> None:
         """ONA's sensorimotor processing of a selected belief event (Cycle.c, 0.9.2).
@@ -275,14 +321,16 @@ class SensorimotorMixin:
                     or abs(opc.selected_time - occ) >= window
                 ):
                     continue
+                # (the tests are pure reads, so their order is free: the time window,
+                # which excludes most of the index, comes first)
                 for pc in snapshot:
                     pre = pc.belief_spike
                     if (
                         pre is None
+                        or abs(pre.occurrence_time - occ) >= window
                         or pc.term.is_op
                         or pre.creation_time >= now
                         or pre.occurrence_time >= op_ev.occurrence_time
-                        or abs(pre.occurrence_time - occ) >= window
                         or abs(pc.selected_time - occ) >= window
                         or pc.term.op in ("==>", "<=>")
                         or pc.term is e.term
@@ -292,17 +340,16 @@ class SensorimotorMixin:
                     self._induce(pre, op_ev, e, priority)
         # temporal: <c =/> e> for recent non-op events, and the sequence (c &/ e)
         tdiff = cfg.max_sequence_timediff
-        for c in list(self.time_index):
+        for c in () if e_is_op else list(self.time_index):  # an operation pairs with none
             b = c.belief_spike
             if (
                 b is None
+                or abs(b.occurrence_time - occ) > tdiff  # most of the index: first
                 or b.creation_time > now
-                or abs(b.occurrence_time - occ) > tdiff
                 or abs(c.selected_time - occ) > tdiff
                 or b.occurrence_time > occ
                 or c.term.op in ("==>", "<=>")
                 or c.term.is_op
-                or e_is_op
                 or overlap(b.stamp, e.stamp)
             ):
                 continue
@@ -334,31 +381,47 @@ class SensorimotorMixin:
         """beliefInduction: ``<pre =/> post>`` (or with ``op``) with ONA's truth."""
         cfg = self.config  # type: ignore[attr-defined]
         if op is not None:
-            subj = compound(SEQUENCE, (pre.term, op.term))
             pre_t = tf.intersection(
                 tf.projection(pre.truth, pre.occurrence_time, op.occurrence_time), op.truth
             )
             pre_occ = op.occurrence_time
-            stamp = merge(merge(pre.stamp, op.stamp, cfg.stamp_size), post.stamp, cfg.stamp_size)
-            dt = post.occurrence_time - op.occurrence_time
         else:
-            subj = pre.term
             pre_t = pre.truth
             pre_occ = pre.occurrence_time
-            stamp = merge(pre.stamp, post.stamp, cfg.stamp_size)
-            dt = post.occurrence_time - pre.occurrence_time
         proj = tf.projection(pre_t, pre_occ, post.occurrence_time)
         t = tf.eternalize(tf.induction(post.truth, proj))
-        term = compound(TEMPORAL_IMPLICATION, (subj, post.term))
         if t.c < cfg.min_confidence:
-            return
+            return  # most pairs stop here: the link's term and stamp are not built
+        size = cfg.stamp_size
+        if op is not None:
+            subj = compound(SEQUENCE, (pre.term, op.term))
+            stamp = merge(merge(pre.stamp, op.stamp, size), post.stamp, size)
+        else:
+            subj = pre.term
+            stamp = merge(pre.stamp, post.stamp, size)
+        dt = float(post.occurrence_time - pre_occ)
+        term = compound(TEMPORAL_IMPLICATION, (subj, post.term))
         p = priority * expectation(t)
-        self._add_implication(term, t, stamp, float(dt), False, p)
+        self._add_implication(term, t, stamp, dt, False, p)
         if cfg.allow_var_intro:
+            for v in self._variable_forms(term):
+                self._add_implication(v, t, stamp, dt, False, p)
+
+    def _variable_forms(self, term: Term) -> tuple[Term, ...]:
+        """The forms of an induced link with variables introduced (extensional, then
+        intensional) that are stored beside it. A function of the term alone, kept
+        because the same links are induced again at nearly every step."""
+        forms = self._var_forms.get(term)
+        if forms is None:
+            if len(self._var_forms) >= 4096:
+                self._var_forms.clear()
+            found = []
             for ext in (True, False):
                 v = introduce_implication_variables(term, ext)
                 if v is not None and v is not term and not hol_component_invalid(v):
-                    self._add_implication(v, t, stamp, float(dt), False, p)
+                    found.append(v)
+            forms = self._var_forms[term] = tuple(found)
+        return forms
 
     # ------------------------------------------------------------ anticipation
     def _anticipate(self, e: Event) -> None:
@@ -385,18 +448,22 @@ class SensorimotorMixin:
         # only an exactly-zero predicted frequency still counts; this skips the many
         # implications whose precondition happened long ago without computing them.
         weak = min(0.05, 1.98 * (threshold - 0.5)) if threshold > 0.5 + 1e-9 else 0.0
-        # precondition term -> (its event, that event projected to now with the
-        # operation, whether it is weak, the bindings making the precondition that
-        # event's term, its stamp's ids); the same precondition serves many
-        # implications. Dropped when an event or the concept store changes below.
-        sources: dict[
-            Term, tuple[Event, Truth, bool, dict[Term, Term] | None, frozenset[int]] | None
-        ] = {}
+        # precondition term -> (its event, the frequency and confidence of that event
+        # projected to now with the operation, whether that is weak, the bindings making
+        # the precondition that event's term, its stamp's ids, the failures counted for
+        # that event's truth by offset); the same precondition serves many implications.
+        # Dropped when an event or the concept store changes below.
+        sources: dict[Term, _Source | None] = {}
         groups: dict[object, dict[Concept, None]] | None = None
         var_sources: list[Term] = []
-        negatives: dict[tuple[Truth, int], Truth] = {}
+        failures = self._failures
+        if self._failures_for != cfg.anticipation_confidence:
+            failures.clear()
+            self._failures_for = cfg.anticipation_confidence
+        merged = self._merged
         outcomes = self._outcomes
         stamp_size = cfg.stamp_size
+        boost = cfg.eternal_input_usage_boost
         showing = self._shows(1.0)  # type: ignore[attr-defined]  # printing is rare: test once
         evictions = mem.evictions
         for post in list(targets):
@@ -419,27 +486,40 @@ class SensorimotorMixin:
                         if groups is None:
                             groups = self._spike_groups()
                         spike = self._source_spike(source, groups)
-                    else:  # what _source_spike gives for a ground precondition
+                        bind = None if spike is None else self._match(source, spike.term)
+                    else:  # what _source_spike and unify give for a ground precondition
                         sc = mem.find(source)
                         spike = sc.belief_spike if sc is not None else None
+                        bind = None if spike is None or spike.term is not source else {}
                     if spike is None:
                         entry = None
                     else:
+                        by_offset = failures.get(spike.truth)
+                        if by_offset is None:
+                            if len(failures) >= 4096:
+                                failures.clear()
+                            by_offset = failures[spike.truth] = {}
                         pre_i = tf.intersection(
                             tf.projection(spike.truth, spike.occurrence_time, now), op_truth
                         )
                         entry = (
                             spike,
-                            pre_i,
+                            pre_i.f,
+                            pre_i.c,
                             pre_i.c < weak,
-                            unify(source, spike.term),
+                            bind,
                             frozenset(spike.stamp),
+                            by_offset,
                         )
                     sources[source] = entry
                 if entry is None:
                     continue
-                spike, pre_i, is_weak, bind, spike_ids = entry
-                if is_weak and imp.truth.f * pre_i.f != 0.0:
+                spike, pre_f, pre_c, is_weak, bind, spike_ids, by_offset = entry
+                # deduction and its expectation written out (most links stop here);
+                # the same operations in the same order as tf.deduction/expectation
+                it = imp.truth
+                pf = it.f * pre_f
+                if is_weak and pf != 0.0:
                     continue
                 if opi:
                     pre_term, op_term = split_precondition(imp.term.args[0])
@@ -448,24 +528,16 @@ class SensorimotorMixin:
                         continue
                     if unify(apply(op_term, subs), e.term) is None:
                         continue  # same operation, other arguments
-                # deduction and its expectation written out (most links stop here);
-                # the same operations in the same order as tf.deduction/expectation
-                it = imp.truth
-                pf = it.f * pre_i.f
-                pc = it.c * pre_i.c * pf
+                pc = it.c * pre_c * pf
                 if pc * (pf - 0.5) + 0.5 <= threshold and not (pc < 0.05 and pf == 0.0):
                     continue
-                predicted = Truth(pf, pc)
-                # one failure: induction from a {0, anticipation_confidence} outcome and
-                # the precondition projected over the link's offset, the same for every
-                # link of this precondition truth and offset
+                # one failure counted against the link: the same for every link of this
+                # precondition truth and offset, at every input
                 rdt = round(imp.dt)  # also the prediction's offset below
-                neg = negatives.get((spike.truth, rdt))
-                if neg is None:
-                    neg = negatives[spike.truth, rdt] = self._negative_evidence(spike.truth, rdt)
-                table.add_and_revise(
-                    Implication(imp.term, neg, (), imp.dt, imp.creation_time, source), stamp_size
-                )
+                failure = by_offset.get(rdt)
+                if failure is None:
+                    failure = by_offset[rdt] = self._failure(spike.truth, rdt)
+                table.add_failure(imp, failure[0], failure[1], stamp_size)
                 if bind is None:
                     continue
                 if bind:
@@ -487,16 +559,15 @@ class SensorimotorMixin:
                     sources.clear()
                     var_sources.clear()
                     groups = None
-                oc.use(now, False, cfg.eternal_input_usage_boost)
+                oc.use(now, False, boost)
                 occ = now + rdt
-                pred = Event(
-                    outcome,
-                    BELIEF,
-                    predicted,
-                    merge(spike.stamp, imp.stamp, cfg.stamp_size),
-                    occ,
-                    now,
-                )
+                mkey = (spike.stamp, imp.stamp, stamp_size)
+                stamp = merged.get(mkey)
+                if stamp is None:
+                    if len(merged) >= 4096:
+                        merged.clear()
+                    stamp = merged[mkey] = merge(spike.stamp, imp.stamp, stamp_size)
+                pred = Event(outcome, BELIEF, Truth(pf, pc), stamp, occ, now)  # (deduction)
                 if imp.dt > 0.0:
                     old = oc.predicted_belief
                     oc.predicted_belief, _ = self._revision_and_choice(old, pred, True)  # type: ignore[attr-defined]
@@ -535,7 +606,8 @@ class SensorimotorMixin:
         if groups is None:
             groups = self._groups = {None: {}}
             for c in reversed(self.time_index):  # oldest first: the newest ends last
-                _group_add(groups, c)
+                if not c.term.has_var:
+                    _group_add(groups, c, self._keys_of(c.term))
         return groups
 
     def _source_spike(
@@ -548,21 +620,40 @@ class SensorimotorMixin:
         if source.has_var:
             if groups is None:
                 groups = self._spike_groups()
-            keys = self._source_keys.get(source)
-            if keys is None:
-                if len(self._source_keys) >= 4096:
-                    self._source_keys.clear()
-                keys = self._source_keys[source] = _group_keys(source, ground_only=True)
-            group: dict[Concept, None] | None = None
-            for key in keys:
-                g = groups.get(key)
-                if not g:
-                    return best  # no concept has this component here: none matches
-                if group is None or len(g) < len(group):
-                    group = g
-            for c2 in reversed(group) if group else ():  # newest first
+            pattern = self._patterns.get(source)
+            if pattern is None:
+                if len(self._patterns) >= 4096:
+                    self._patterns.clear()
+                pattern = self._patterns[source] = _Pattern(source)
+            # Every instance is in each of the pattern's groups, all ordered alike (by
+            # their concepts' last event), so each group yields the same first match and
+            # an empty one means none. The smallest is the cheapest to scan; group sizes
+            # drift slowly, so it is chosen afresh only now and then.
+            pattern.uses += 1
+            key = pattern.key
+            if key is _UNCHOSEN or not pattern.uses & 31:
+                group: dict[Concept, None] | None = None
+                for k in pattern.keys:
+                    g = groups.get(k)
+                    if not g:
+                        return best  # no concept has this component here: none matches
+                    if group is None or len(g) < len(group):
+                        group = g
+                        key = k
+                pattern.key = key
+            else:
+                group = groups.get(key)
+                if not group:
+                    return best
+            matches = pattern.matches
+            for c2 in reversed(group):  # newest first
                 b = c2.belief_spike
-                if b is None or unify(source, c2.term) is None:
+                if b is None:
+                    continue
+                bind = matches.get(c2.term, _UNCHOSEN)  # (pattern.match, read inline)
+                if bind is _UNCHOSEN:
+                    bind = pattern.match(c2.term)
+                if bind is None:
                     continue
                 if best is None or b.occurrence_time > best.occurrence_time:
                     best = b
@@ -580,13 +671,50 @@ class SensorimotorMixin:
             return
         self._print("Derived: " + new.line(1.0))  # type: ignore[attr-defined]
 
-    def _negative_evidence(self, pre_truth: Truth, rdt: int) -> Truth:
+    def _failure(self, pre_truth: Truth, rdt: int) -> tuple[Truth, float]:
         """The truth of one failure of a link whose precondition had ``pre_truth``
-        ``rdt`` cycles before the predicted outcome."""
+        ``rdt`` cycles before the predicted outcome (induction from a {0, anticipation
+        confidence} outcome and the projected precondition), and its evidence weight."""
         past = tf.projection(pre_truth, 0, rdt)
-        return tf.eternalize(
+        t = tf.eternalize(
             tf.induction(Truth(0.0, self.config.anticipation_confidence), past)  # type: ignore[attr-defined]
         )
+        return t, tf.c2w(t.c)
+
+    def _match(self, source: Term, term: Term) -> dict[Term, Term] | None:
+        """``unify(source, term)`` for a precondition with variables, remembered with
+        the precondition's pattern when it has one."""
+        pattern = self._patterns.get(source)
+        return unify(source, term) if pattern is None else pattern.match(term)
+
+
+#: "not yet known": a pattern's group before it is first chosen, an unseen match
+_UNCHOSEN = object()
+
+
+class _Pattern:
+    """What ``_source_spike`` keeps about a precondition with variables."""
+
+    __slots__ = ("source", "keys", "key", "uses", "matches")
+
+    def __init__(self, source: Term) -> None:
+        self.source = source
+        #: the groups every instance of the precondition is in
+        self.keys = _group_keys(source, ground_only=True)
+        #: the one of them scanned (the smallest when last chosen)
+        self.key: object = _UNCHOSEN
+        self.uses = 0
+        #: ground term -> unify(precondition, term), a pure function of the two
+        self.matches: dict[Term, dict[Term, Term] | None] = {}
+
+    def match(self, term: Term) -> dict[Term, Term] | None:
+        """``unify(source, term)``, remembered (nobody changes the bindings returned)."""
+        bind = self.matches.get(term, _UNCHOSEN)
+        if bind is _UNCHOSEN:
+            if len(self.matches) >= 128:  # (a few groups' worth; memory stays bounded)
+                self.matches.clear()
+            bind = self.matches[term] = unify(self.source, term)
+        return bind
 
 
 def _group_keys(t: Term, ground_only: bool = False) -> list[object]:
@@ -612,11 +740,9 @@ def _group_keys(t: Term, ground_only: bool = False) -> list[object]:
     return keys
 
 
-def _group_add(groups: dict[object, dict[Concept, None]], c: Concept) -> None:
-    """Enter ``c`` as the newest member of its groups (terms with variables stay out)."""
-    if c.term.has_var:
-        return
-    for k in _group_keys(c.term):
+def _group_add(groups: dict[object, dict[Concept, None]], c: Concept, keys: list[object]) -> None:
+    """Enter ``c`` (its term without variables) as the newest member of its groups."""
+    for k in keys:
         d = groups.get(k)
         if d is None:
             groups[k] = {c: None}
@@ -624,11 +750,12 @@ def _group_add(groups: dict[object, dict[Concept, None]], c: Concept) -> None:
             d[c] = None
 
 
-def _group_remove(groups: dict[object, dict[Concept, None]], c: Concept) -> None:
-    """Take ``c`` out of its groups, dropping groups left empty."""
-    if c.term.has_var:
-        return
-    for k in _group_keys(c.term):
+def _group_remove(
+    groups: dict[object, dict[Concept, None]], c: Concept, keys: list[object]
+) -> None:
+    """Take ``c`` (its term without variables) out of its groups, dropping groups left
+    empty."""
+    for k in keys:
         d = groups.get(k)
         if d is not None:
             d.pop(c, None)

@@ -9,9 +9,9 @@ from __future__ import annotations
 from bisect import bisect_left, bisect_right
 
 from .event import Implication
-from .stamp import merge, overlap
+from .stamp import Stamp, merge, overlap
 from .terms import Term
-from .truth import c2w, expectation, revision
+from .truth import Truth, c2w, expectation, pooled
 
 
 class Table:
@@ -51,15 +51,38 @@ class Table:
             return i < self.size
         return True
 
-    def _remove(self, old: Implication) -> None:
-        """Take the stored entry ``old`` out (found by its expectation, then identity)."""
+    def _replace(self, old: Implication, new: Implication) -> None:
+        """Put ``new`` in the stored entry ``old``'s stead, after every other entry of
+        equal or higher expectation (where taking ``old`` out and inserting ``new`` would
+        put it). ``old`` is found by its expectation, then identity; a revision moves an
+        entry by a few places at most, so when it stays put no list is shifted, and
+        otherwise only the side it moved to is searched."""
         items = self.items
-        i = bisect_left(self._neg, -expectation(old.truth))
+        neg = self._neg
+        # minus the expectations, written out (this runs for every revision)
+        t = old.truth
+        e_old = -(t.c * (t.f - 0.5) + 0.5)
+        i = bisect_left(neg, e_old)
         while items[i] is not old:
             i += 1
-        del items[i]
-        del self._neg[i]
-        del self._entry[old.term, old.dt == 0.0]
+        t = new.truth
+        e = -(t.c * (t.f - 0.5) + 0.5)
+        last = len(neg) - 1
+        if (i == 0 or neg[i - 1] <= e) and (i == last or neg[i + 1] > e):
+            items[i] = new
+            neg[i] = e
+        else:
+            del items[i]
+            del neg[i]
+            # the entries before i were <= e_old, those after it >= e_old
+            j = bisect_right(neg, e, i) if e >= e_old else bisect_right(neg, e, 0, i)
+            items.insert(j, new)
+            neg.insert(j, e)
+        entry = self._entry
+        zero = new.dt == 0.0
+        if zero is not (old.dt == 0.0) or new.term is not old.term:
+            del entry[old.term, old.dt == 0.0]
+        entry[new.term, zero] = new
 
     def add_and_revise(self, imp: Implication, stamp_size: int = 10) -> Implication | None:
         """Revise with the entry of the same term (or insert); returns the stored entry."""
@@ -69,19 +92,41 @@ class Table:
             return imp if self._insert(imp) else None
         if imp.term.op == "==>" and overlap(old.stamp, imp.stamp):
             keep = imp if imp.truth.c > old.truth.c else old
-            self._remove(old)
-            self._insert(keep)
+            self._replace(old, keep)
             return keep
-        w1, w2 = c2w(old.truth.c), c2w(imp.truth.c)
-        dt = (w1 * old.dt + w2 * imp.dt) / (w1 + w2) if w1 + w2 > 0 else imp.dt
+        return self._revise(old, imp, imp.truth, c2w(imp.truth.c), imp.stamp, stamp_size)
+
+    def add_failure(self, imp: Implication, truth: Truth, weight: float, stamp_size: int) -> None:
+        """``add_and_revise(Implication(imp.term, truth, (), imp.dt, imp.creation_time,
+        imp.source))`` without making that implication: anticipation counts one failure
+        (evidence without a stamp) against hundreds of links per input. ``weight`` is
+        ``c2w(truth.c)``, the same for all of them."""
+        old = self._entry.get((imp.term, imp.dt == 0.0))
+        if old is None:
+            self._insert(Implication(imp.term, truth, (), imp.dt, imp.creation_time, imp.source))
+            return
+        # an empty stamp overlaps nothing: never the ``==>`` case of add_and_revise
+        self._revise(old, imp, truth, weight, (), stamp_size)
+
+    def _revise(
+        self,
+        old: Implication,
+        imp: Implication,
+        truth: Truth,
+        weight: float,
+        stamp: Stamp,
+        stamp_size: int,
+    ) -> Implication:
+        """Replace ``old`` by its revision with ``imp`` carrying ``truth`` (of evidence
+        weight ``weight``) and ``stamp``; the offset is the weights' mean of both."""
+        w1 = c2w(old.truth.c)
+        dt = (w1 * old.dt + weight * imp.dt) / (w1 + weight) if w1 + weight > 0 else imp.dt
+        # merged with no ids, a stamp is itself cut to size
+        kept = old.stamp
+        if stamp or len(kept) > stamp_size:
+            kept = merge(kept, stamp, stamp_size)
         revised = Implication(
-            imp.term,
-            revision(old.truth, imp.truth),
-            merge(old.stamp, imp.stamp, stamp_size),
-            dt,
-            imp.creation_time,
-            imp.source,
+            imp.term, pooled(old.truth, truth, w1, weight), kept, dt, imp.creation_time, imp.source
         )
-        self._remove(old)
-        self._insert(revised)
+        self._replace(old, revised)
         return revised
