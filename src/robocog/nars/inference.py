@@ -46,39 +46,28 @@ class Derivation:
 
     def emit(self, term: Term, t: Truth, var_intro: bool = False) -> None:
         """Hand one conclusion to memory, introducing variables where the rule asks."""
-        if not var_intro:  # the common case, without a further call
-            self.nar._derived(
-                term,
-                t,
-                self.stamp,
-                self.occurrence,
-                self.concept_priority * self.parent_priority * (t.c * (t.f - 0.5) + 0.5),
-            )
+        # the premises' priorities times the conclusion's truth expectation, computed
+        # once for a conclusion and its variable-introduced forms alike
+        priority = self.concept_priority * self.parent_priority * (t.c * (t.f - 0.5) + 0.5)
+        if not var_intro:  # the common case
+            self.nar._derived(term, t, self.stamp, self.occurrence, priority)
             return
-        if term.op in (IMPLICATION, EQUIVALENCE, TEMPORAL_IMPLICATION):
+        op = term.op
+        if op in (IMPLICATION, EQUIVALENCE, TEMPORAL_IMPLICATION):
             for ext in (True, False):
                 v = introduce_implication_variables(term, ext)
                 if v is not None and v is not term and not hol_component_invalid(v):
                     if v.op in (IMPLICATION, EQUIVALENCE) and not v.has_indep_var:
                         continue
-                    self._derive(v, t)
+                    self.nar._derived(v, t, self.stamp, self.occurrence, priority)
             return
-        if term.op == CONJUNCTION:
+        if op == CONJUNCTION:
             for ext in (True, False):
                 v = introduce_conjunction_variables(term, ext)
                 if v is not None and v is not term and not hol_component_invalid(v):
-                    self._derive(v, t)
+                    self.nar._derived(v, t, self.stamp, self.occurrence, priority)
             return
-        self._derive(term, t)
-
-    def _derive(self, term: Term, t: Truth) -> None:
-        self.nar._derived(
-            term,
-            t,
-            self.stamp,
-            self.occurrence,
-            self.concept_priority * self.parent_priority * tf.expectation(t),
-        )
+        self.nar._derived(term, t, self.stamp, self.occurrence, priority)
 
 
 def apply_single(table: RuleTable, term: Term, t: Truth, d: Derivation) -> None:

@@ -10,6 +10,7 @@ names (ONA stops at 255 atoms), and is cleaned when a concept leaves.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
+from operator import itemgetter
 
 from .event import ETERNAL, Event
 from .table import Table
@@ -35,6 +36,8 @@ class Concept:
         "selected_time",
         "process_id",
         "timed",
+        "filed",
+        "book",
     )
 
     def __init__(self, cid: int, term: Term, now: int, operations: int, table_size: int) -> None:
@@ -55,11 +58,30 @@ class Concept:
         self.selected_time = 0  # when an event of this concept was last selected (ONA: 0)
         self.process_id = 0
         self.timed = False  # ever entered the occurrence-time index (most never do)
+        # (use_count, last_used) under which the memory has the concept in its
+        # usefulness groups, and the memory's list of concepts to file again, while
+        # the concept is filed there unchanged (see ``Memory._refile``)
+        self.filed: tuple[int, int] | None = None
+        self.book: list[Concept] | None = None
+
+    def __getstate__(self) -> tuple[None, dict[str, object]]:
+        state = {k: getattr(self, k) for k in self.__slots__}
+        state["filed"] = state["book"] = None  # the loading memory files it anew
+        return None, state
+
+    def __setstate__(self, state: tuple[object, dict[str, object]]) -> None:
+        self.filed = self.book = None  # absent from older saves
+        for k, v in state[1].items():
+            setattr(self, k, v)
 
     def use(self, now: int, eternal_input: bool, boost: int) -> None:
         """Record a use (input eternal beliefs count as very many uses)."""
         self.use_count += boost if eternal_input else 1
         self.last_used = now
+        book = self.book
+        if book is not None:  # changed since its memory filed it: to be filed again
+            self.book = None
+            book.append(self)
 
     def tables(self, operations: int, size: int) -> list[Table]:
         """The precondition tables, made on first use."""
@@ -84,13 +106,28 @@ class EventQueue:
     strongest item is one C-level ``min``/``max`` over at most a few hundred floats.
     """
 
-    __slots__ = ("events", "prio", "capacity", "keys")
+    __slots__ = ("events", "prio", "capacity", "keys", "_low")
 
     def __init__(self, capacity: int) -> None:
         self.events: list[Event] = []
         self.prio: list[float] = []
         self.capacity = capacity
         self.keys: dict[tuple[object, ...], int] = {}
+        #: ``min(prio)`` while the queue is unchanged, else None: a full queue is asked
+        #: for its weakest item by every derived event, and changes only now and then
+        self._low: float | None = None
+
+    def __setstate__(self, state: tuple[object, dict[str, object]]) -> None:
+        for k, v in state[1].items():
+            setattr(self, k, v)
+        self._low = None  # not kept by older saves
+
+    def lowest(self) -> float:
+        """The weakest priority queued (the queue must not be empty)."""
+        low = self._low
+        if low is None:
+            low = self._low = min(self.prio)
+        return low
 
     def __len__(self) -> int:
         return len(self.events)
@@ -116,7 +153,7 @@ class EventQueue:
         """Add ``e``; a full queue evicts its weakest item or rejects a weaker newcomer."""
         prio = self.prio
         if len(prio) >= self.capacity:
-            m = min(prio)
+            m = self.lowest()
             if priority < m:
                 return False
             i = prio.index(m)
@@ -126,6 +163,7 @@ class EventQueue:
         else:
             self.events.append(e)
             prio.append(priority)
+        self._low = None
         k = _key(e)
         self.keys[k] = self.keys.get(k, 0) + 1
         return True
@@ -136,6 +174,7 @@ class EventQueue:
         if not prio:
             return None
         i = prio.index(max(prio))
+        self._low = None
         p = prio.pop(i)
         e = self.events.pop(i)
         self._forget(e)
@@ -145,12 +184,14 @@ class EventQueue:
         """Forget a little: every priority times ``factor``."""
         if self.prio:
             self.prio = [p * factor for p in self.prio]
+            self._low = None
 
     def clear(self) -> None:
         """Drop every item."""
         self.events.clear()
         self.prio.clear()
         self.keys.clear()
+        self._low = None
 
 
 class Memory:
@@ -165,6 +206,11 @@ class Memory:
         self.belief_events = EventQueue(events_max)
         self.next_concept_id = 1
         self.evictions = 0
+        # concepts grouped by (use_count, last_used), which fixes their usefulness: an
+        # eviction ranks a few hundred groups instead of every concept. Concepts made
+        # or used since the last eviction wait in ``_unfiled``.
+        self._groups: dict[tuple[int, int], dict[Concept, None]] = {}
+        self._unfiled: list[Concept] = []
         #: called with each concept that leaves, so owners of other indexes can clean up
         self.on_remove: Callable[[Concept], None] | None = None
         # ``find`` is the dict's own ``get`` (called millions of times per run)
@@ -174,11 +220,15 @@ class Memory:
         state = dict(self.__dict__)
         state["on_remove"] = None  # re-attached by the owner after loading
         state.pop("find", None)
+        state["_groups"] = {}  # rebuilt from the concepts on loading
+        state["_unfiled"] = []
         return state
 
     def __setstate__(self, state: dict[str, object]) -> None:
         self.__dict__.update(state)
         self.find = self.concepts.get  # type: ignore[method-assign]
+        self._groups = {}
+        self._unfiled = list(self.concepts.values())
 
     def __len__(self) -> int:
         return len(self.concepts)
@@ -192,14 +242,16 @@ class Memory:
 
     def conceptualize(self, term: Term, now: int) -> Concept:
         """The concept of ``term``, made (evicting the least useful if full) if missing."""
-        c = self.concepts.get(term)
+        concepts = self.concepts
+        c = concepts.get(term)
         if c is not None:
             return c
-        if len(self.concepts) >= self.capacity:
+        if len(concepts) >= self.capacity:
             self._evict(now)
         c = Concept(self.next_concept_id, term, now, self.operations, self.table_size)
         self.next_concept_id += 1
-        self.concepts[term] = c
+        concepts[term] = c
+        self._unfiled.append(c)
         index = self.atom_index
         for a in term.index_names():
             d = index.get(a)
@@ -209,31 +261,83 @@ class Memory:
                 d[c] = None
         return c
 
+    def _refile(self) -> None:
+        """Put the concepts made or used since the last call into the group of their
+        (use_count, last_used)."""
+        groups = self._groups
+        concepts = self.concepts
+        unfiled = self._unfiled
+        for c in unfiled:
+            if concepts.get(c.term) is not c:
+                continue  # removed meanwhile
+            key = (c.use_count, c.last_used)
+            old = c.filed
+            if key != old:
+                if old is not None:
+                    _ungroup(groups, old, c)
+                g = groups.get(key)
+                if g is None:
+                    groups[key] = {c: None}
+                else:
+                    g[c] = None
+                c.filed = key
+            c.book = unfiled
+        unfiled.clear()
+
     def _evict(self, now: int) -> None:
+        """Remove the ``capacity/16`` least useful concepts, least useful first; ties
+        fall to the older concept."""
+        self._refile()
         batch = max(1, self.capacity // 16)
-        # usefulness u/(u+1) of every concept, computed in one comprehension; the
-        # selection then keys on list positions (a C-level getter), and ties fall to the
-        # older concept exactly as a per-concept key function would
+        # usefulness u/(u+1), u = uses per cycle since the last use, of every group
         now1 = now + 1
-        cs = list(self.concepts.values())
-        keys = [(u := c.use_count / (now1 - c.last_used)) / (u + 1.0) for c in cs]
-        # a stable C-level sort: the same choice and order as ``heapq.nsmallest``
-        for i in sorted(range(len(cs)), key=keys.__getitem__)[:batch]:
-            self.remove(cs[i])
-            self.evictions += 1
+        ranked = [
+            ((u := n / (now1 - last)) / (u + 1.0), g) for (n, last), g in self._groups.items()
+        ]
+        ranked.sort(key=itemgetter(0))
+        # the least useful groups until the batch is full, with every group as useful
+        # as the last one taken, so the oldest of those can be picked
+        chosen: list[tuple[float, int, Concept]] = []
+        last_key = None
+        for key, g in ranked:
+            if len(chosen) >= batch and key != last_key:
+                break
+            chosen += [(key, c.id, c) for c in g]
+            last_key = key
+        # ids grow with the order concepts were made in, which is the dict's order
+        chosen.sort()
+        victims = [c for _, _, c in chosen[:batch]]
+        self._remove_all(victims)
+        self.evictions += len(victims)
 
     def remove(self, c: Concept) -> None:
         """Forget concept ``c`` and its index entries."""
-        self.concepts.pop(c.term, None)
-        if self.on_remove is not None:
-            self.on_remove(c)
+        self._remove_all((c,))
+        if len(self._unfiled) > 2 * self.capacity:
+            self._refile()  # drops removed concepts from the list (evictions do it too)
+
+    def _remove_all(self, cs: list[Concept] | tuple[Concept, ...]) -> None:
+        """Forget the concepts ``cs`` in order (one loop, so an eviction batch of
+        hundreds pays the attribute look-ups once)."""
+        concepts = self.concepts
         index = self.atom_index
-        for a in c.term.index_names():
-            d = index.get(a)
-            if d is not None:
-                d.pop(c, None)
-                if not d:
-                    del index[a]
+        groups = self._groups
+        on_remove = self.on_remove
+        for c in cs:
+            gone = concepts.pop(c.term, None)
+            if gone is not None:
+                if gone.filed is not None:
+                    _ungroup(groups, gone.filed, gone)
+                    gone.filed = None
+                gone.book = None
+            if on_remove is not None:
+                on_remove(c)
+            for a in c.term.index_names():
+                d = index.get(a)
+                if d is not None:
+                    d.pop(c, None)
+                    if not d:
+                        del index[a]
 
     def related(self, term: Term) -> Iterator[Concept]:
         """The concept of ``term``, then every concept sharing a name with it (ONA's order).
@@ -253,6 +357,15 @@ class Memory:
                     if c.id not in seen:
                         seen.add(c.id)
                         yield c
+
+
+def _ungroup(
+    groups: dict[tuple[int, int], dict[Concept, None]], key: tuple[int, int], c: Concept
+) -> None:
+    g = groups[key]
+    del g[c]
+    if not g:
+        del groups[key]
 
 
 def is_eternal(e: Event | None) -> bool:

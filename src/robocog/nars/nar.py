@@ -303,8 +303,10 @@ class NAR(SensorimotorMixin, DecisionMixin):
             return c.priority
         return c.priority * self.config.concept_durability**dt
 
-    def _set_priority(self, c: Concept, p: float) -> None:
-        c.priority = p
+    def _raise_priority(self, c: Concept, p: float) -> None:
+        """Lift the (decayed) priority of ``c`` to at least ``p``, as of now."""
+        cp = self._priority(c)
+        c.priority = p if p > cp else cp  # ``max(cp, p)`` without the call
         c.priority_time = self.time
 
     # ----------------------------------------------------------------- events
@@ -331,8 +333,13 @@ class NAR(SensorimotorMixin, DecisionMixin):
                 self._print("Input: " + e.line(priority))
             self._add_goal(e, priority, 0)
             return
+        self._store(e, priority, is_input, revised, not composition)
+
+    def _store(self, e: Event, priority: float, is_input: bool, revised: bool, index: bool) -> None:
+        """Queue a belief event that passed the filters and store it in its concept."""
         added = False
-        if e.term.op != TEMPORAL_IMPLICATION and (is_input or e.term.op not in ("==>", "<=>")):
+        op = e.term.op
+        if op != TEMPORAL_IMPLICATION and (is_input or (op != "==>" and op != "<=>")):
             added = self._queue(e, priority)  # only input implications become events
         if added and not is_input:
             self.stats["derived"] += 1
@@ -340,13 +347,13 @@ class NAR(SensorimotorMixin, DecisionMixin):
                 self._print(("Revised: " if revised else "Derived: ") + e.line(priority))
             for cb in self._derivation_cbs:
                 cb(e)
-        self._process_new_belief(e, priority, is_input, not composition)
+        self._process_new_belief(e, priority, is_input, index)
 
     def _queue(self, e: Event, priority: float) -> bool:
         q = self.memory.belief_events
         if e.type == BELIEF:
             prio = q.prio
-            if len(prio) >= q.capacity and priority < min(prio):
+            if len(prio) >= q.capacity and priority < q.lowest():
                 return False  # the full queue would refuse it whatever the checks below say
             if q.contains(e):
                 return False
@@ -371,7 +378,7 @@ class NAR(SensorimotorMixin, DecisionMixin):
             return
         c = self.memory.conceptualize(e.term, now)
         c.use(now, eternal_input, self.config.eternal_input_usage_boost)
-        self._set_priority(c, max(self._priority(c), priority))
+        self._raise_priority(c, priority)
         if e.occurrence_time != ETERNAL:
             if index:
                 # derived compositions stay out of the occurrence-time index: they
@@ -441,19 +448,28 @@ class NAR(SensorimotorMixin, DecisionMixin):
     def _derived(
         self, term: Term, t: Truth, stamp: tuple[int, ...], occurrence: int, priority: float
     ) -> None:
+        """A derived belief: ``_add_event``'s decisions for this case, each made once and
+        the cheap ones first, then straight to :meth:`_store`."""
+        cfg = self.config
+        composition = (len(stamp) > 1 or occurrence != ETERNAL) and _needs_existing_concept(
+            term, occurrence
+        )
         if (
-            (self.config.compositions_need_concept or term.has_var)
-            and (len(stamp) > 1 or occurrence != ETERNAL)
+            composition
+            and (cfg.compositions_need_concept or term.has_var)
             and term not in self.memory.concepts
-            and _needs_existing_concept(term, occurrence)
         ):
-            return  # what ``_add_event`` would decide, before the costlier filters
+            return  # compositions are only kept where their concept already exists
         if rejected(term):
             return
-        if term.op in ("==>", "<=>") and not term.has_indep_var:
+        op = term.op
+        if (op == "==>" or op == "<=>") and not term.has_indep_var:
+            return
+        priority *= 1.0 / math.log2(1.0 + term.complexity)
+        if t.c < cfg.min_confidence or priority <= 0.0:
             return
         e = Event(term, BELIEF, t, stamp, occurrence, self.time)
-        self._add_event(e, priority)
+        self._store(e, priority, False, False, not composition or cfg.compositions_need_concept)
 
     # ------------------------------------------------------------------ cycle
     def cycles(self, n: int) -> None:
@@ -570,7 +586,7 @@ class NAR(SensorimotorMixin, DecisionMixin):
                 self._pend(question)
             return None
         if best_c is not None:
-            self._set_priority(best_c, max(self._priority(best_c), self.config.question_priming))
+            self._raise_priority(best_c, self.config.question_priming)
             best_c.use(self.time, False, 0)
         self._report_answer(best)
         return best

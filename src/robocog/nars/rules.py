@@ -517,10 +517,18 @@ def introduce_implication_variables(t: Term, extensional: bool) -> Term | None:
     left, right = t.args
     cl = _hol_counts(left, extensional)
     cr = _hol_counts(right, extensional)
-    if not any(v >= 2 or a in cr for a, v in cl.items()) and not any(v >= 2 for v in cr.values()):
-        return None  # no name to abstract
-    dep = _first_free(t, "#")
-    ind = _first_free(t, "$")
+    # no name to abstract: none occurs twice on one side or once on each (C-level
+    # tests: half of all calls end here)
+    if (
+        cl.keys().isdisjoint(cr)
+        and max(cl.values(), default=0) < 2
+        and max(cr.values(), default=0) < 2
+    ):
+        return None
+    dep = ind = 1
+    if t.has_var:  # the first free numbers are 1 unless some variable is there already
+        dep = _first_free(t, "#")
+        ind = _first_free(t, "$")
     mapping: dict[Term, Term] = {}
     for a in t.level_order_atoms():
         if a in mapping:
@@ -552,6 +560,8 @@ def introduce_conjunction_variables(t: Term, extensional: bool) -> Term | None:
     else:
         counts = {}
         _count_hol(t, counts, extensional)
+    if max(counts.values(), default=0) < 2:
+        return None  # no name occurs twice (half of all calls end here)
     dep = _first_free(t, "#")
     mapping: dict[Term, Term] = {}
     for a in t.level_order_atoms():
@@ -643,7 +653,7 @@ def hol_component_invalid(t: Term) -> bool:
                 return True
             if (s.op is None and not s.is_var) or (p.op is None and not p.is_var):
                 continue  # a plain name on either side: not variables only
-            if not any(not a.is_var for a in c.atoms()):
+            if not c.index_names():  # its distinct names, cached on the term
                 return True
     return False
 

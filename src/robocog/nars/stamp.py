@@ -28,6 +28,8 @@ def merge(a: Stamp, b: Stamp, size: int = STAMP_SIZE) -> Stamp:
 
 def overlap(a: Stamp, b: Stamp) -> bool:
     """True if the two bases share evidence."""
+    if len(a) == 1:  # an input's stamp: a tuple scan, no set
+        return a[0] in b
     return not set(a).isdisjoint(b)
 
 

@@ -183,6 +183,18 @@ _IMPS = ("==>", "<=>")
 _JUNCTIONS = ("&&", "||")
 _COMPOSED_OPS = ("-", "~", "&", "|")
 _IMAGE_OPS = ("/1", "/2", "\\1", "\\2")
+#: what ``_make_compound`` records for a connector: a counter to bump (negative codes)
+#: or the flag bit to set
+_K_IMP = -1
+_K_TEMP = -2
+_K_JUNCTION = -3
+_OP_KINDS: dict[str, int] = {
+    **dict.fromkeys(_IMPS, _K_IMP),
+    "=/>": _K_TEMP,
+    **dict.fromkeys(_JUNCTIONS, _K_JUNCTION),
+    **dict.fromkeys(_COMPOSED_OPS, F_COMPOSED),
+    **dict.fromkeys(_IMAGE_OPS, F_IMAGE),
+}
 
 _TABLE: dict[tuple[object, ...], Term] = {}
 #: the table is swept of terms nobody else holds when it grows past this size
@@ -195,19 +207,32 @@ def _sweep() -> None:
     A term's components are interned before it, so the table's insertion order puts
     them first; visiting the newest first drops a dead term (and its key) before its
     components are looked at, so a whole dead subtree goes in the same pass.
+
+    How many references "held by the table alone" amounts to depends on how this code
+    runs (interpreted, the call's argument is one more; compiled, it is not), so it is
+    measured on a probe entry that only the table holds, visited first.
     """
     table = _TABLE
+    table[_PROBE_KEY] = Term.__new__(Term)  # newest: the first one visited
     keys = list(table)
     pop = keys.pop
     refs = sys.getrefcount
     t = None
+    alone = -1
     while keys:
         k = pop()  # the previous key and term are released here and on the next line
         t = table[k]
-        if refs(t) <= 3:  # the table, ``t`` and the call's argument
+        n = refs(t)
+        if alone < 0:
+            alone = n  # the probe's count
+        if n <= alone:
             del table[k]
     t = None
     _SWEEP_AT[0] = max(200_000, 2 * len(table))
+
+
+#: the probe's key in the table during a sweep (no term has this key)
+_PROBE_KEY = ("sweep probe", ())
 
 
 def interned_count() -> int:
@@ -300,17 +325,17 @@ def _make_compound(key: tuple[object, ...], op: str, args: tuple[Term, ...]) -> 
             hi = hi or a.has_indep_var
             hd = hd or a.has_dep_var
         t.is_op = False
-    if op in _IMPS:
-        n_imp += 1
-    elif op == "=/>":
-        n_temp += 1
-    elif op in _JUNCTIONS:
-        if args[-1].op in _JUNCTIONS:
-            flags |= F_JUNCTION_RIGHT_NESTED
-    elif op in _COMPOSED_OPS:
-        flags |= F_COMPOSED
-    elif op in _IMAGE_OPS:
-        flags |= F_IMAGE
+    kind = _OP_KINDS.get(op)  # one look-up: most terms are ``-->`` or ``*``, of no kind
+    if kind is not None:
+        if kind == _K_IMP:
+            n_imp += 1
+        elif kind == _K_TEMP:
+            n_temp += 1
+        elif kind == _K_JUNCTION:
+            if args[-1].op in _JUNCTIONS:
+                flags |= F_JUNCTION_RIGHT_NESTED
+        else:
+            flags |= kind  # F_COMPOSED or F_IMAGE
     t.complexity = complexity
     t.flags = flags
     t.n_imp = n_imp  # ==> and <=> inside (conclusion filter: at most one)
@@ -401,8 +426,13 @@ def substitute(t: Term, mapping: dict[Term, Term]) -> Term:
         return t
     if len(args) == 2:
         a, b = args
-        na = substitute(a, mapping)
-        nb = substitute(b, mapping)
+        # an unmapped atom is its own result: no call for the leaves
+        na = mapping.get(a)
+        if na is None:
+            na = substitute(a, mapping) if a.args else a
+        nb = mapping.get(b)
+        if nb is None:
+            nb = substitute(b, mapping) if b.args else b
         if na is a and nb is b:
             return t
         return compound(t.op, (na, nb))  # type: ignore[arg-type]
