@@ -24,7 +24,7 @@ import statistics
 import sys
 import time
 
-from robocog.nars import NAR
+from robocog.nars import ENGINE, NAR
 
 OPERATIONS = ("^left", "^right", "^pick")
 
@@ -81,7 +81,7 @@ def main(argv: list[str] | None = None) -> int:
     )
     args = ap.parse_args(argv)
 
-    gc.set_threshold(50_000, 20, 100)  # as ``robocog nar`` does
+    gc.set_threshold(50_000, 20, 100)  # fewer cycle collections than the default
     world = SensorWorld(args.seed, fresh=args.fresh)
     nar = NAR(seed=args.seed)
     nar.output = None
@@ -125,6 +125,7 @@ def main(argv: list[str] | None = None) -> int:
                 flush=True,
             )
     rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+    print(f"robocog NARS engine: {ENGINE}")
     print(f"events {fed} ({goals} goals), wall {time.perf_counter() - t0:.0f} s")
     print(f"concepts max {biggest} (capacity {nar.memory.capacity}), peak RSS {rss:.0f} MB")
     print(

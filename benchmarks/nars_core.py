@@ -68,6 +68,16 @@ def run(cmd: list[str], text: str, timeout: float) -> tuple[float, float, float,
         return wall, cpu, usage.ru_maxrss / 1024.0, fout.read()
 
 
+def engine() -> str:
+    """Which NARS engine ``robocog nar`` runs here (compiled, or pure Python and why)."""
+    out = subprocess.run(
+        [sys.executable, "-c", "import robocog.nars as n; print(n.ENGINE)"],
+        capture_output=True,
+        text=True,
+    )
+    return out.stdout.strip() or out.stderr.strip().splitlines()[-1]
+
+
 def answers(out: str, questions: list[str]) -> int:
     """Questions for which some ``Answer:`` line gave a belief (at once or later)."""
     found = {
@@ -109,9 +119,11 @@ def stream(count: int, seed: int, capacity: int) -> int:
     import statistics
 
     sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "src"))
-    from robocog.nars import NAR, NarseseError
+    from robocog.nars import ENGINE, NAR, NarseseError
 
-    gc.set_threshold(50_000, 20, 100)  # as ``robocog nar`` does: fewer cycle collections
+    print(f"robocog NARS engine: {ENGINE}")
+
+    gc.set_threshold(1_000_000, 20, 100)  # as ``robocog nar`` does (see there)
     rng = random.Random(seed)
     nar = NAR(seed=seed, **({"concepts_max": capacity} if capacity else {}))
     window = min(10_000, max(1, count // 10))
@@ -187,6 +199,7 @@ def main(argv: list[str] | None = None) -> int:
         w, cpu, rss, out = run([ona, "shell"], text, args.timeout)
         rows.append(("ONA 0.9.2", w, cpu, rss, answers(out, questions)))
 
+    print(f"robocog NARS engine: {engine()}")
     print(
         f"taxonomy: {args.statements} links, {len(questions)} questions {args.depth} links deep"
         + (f", robocog concepts_max={args.capacity}" if args.capacity else "")

@@ -1,12 +1,13 @@
 """The NARS mind's perception-reason-action cycle on the garbage task, beside ONA's.
 
 Runs NarsMind on seed 000's garbage field through ``robocog.robot.loop.Loop`` and
-reports the p50 and p99 of the mind's share of each cycle (perceive + decide, which is
-what the reasoner costs) and of the whole cycle. In the same run the same mind drives
-the same fields with ONA 0.9.2 (PyPI ``ona``, ``NAR shell`` as a child process) as its
-reasoner, so the ratio compares the reasoners under the same encodings, goals and
-world; ONA's figures include the pipe to its process. Both minds' success rates are
-printed too, since they come out of the same runs.
+reports the p50 and p99 of the whole cycle (percepts, perceive + decide, the actions and
+the mind's handling of their outcomes, which feeds the reasoner too) and of its first
+part up to the decision ("reason"); the goal is on the whole cycle. In the same run the
+same mind drives the same fields with ONA 0.9.2 (PyPI ``ona``, ``NAR shell`` as a child
+process) as its reasoner, so the ratio compares the reasoners under the same encodings,
+goals and world; ONA's figures include the pipe to its process. Both minds' success
+rates are printed too, since they come out of the same runs.
 
 ONA is driven through ``robocog.minds.ona_shell`` (which gives it the first background
 rule with the brackets its reader needs; see there).
@@ -25,6 +26,7 @@ from pathlib import Path
 
 from robocog.minds.nars_mind import NarsMind, NarsSettings, probe
 from robocog.minds.ona_shell import OnaShell, ona_knowledge, unavailable
+from robocog.nars import ENGINE
 from robocog.robot.loop import Loop, percentile
 from robocog.worlds.garbage import GarbageConfig, GarbageField
 
@@ -91,20 +93,26 @@ def main(argv: list[str] | None = None) -> int:
         print(f"ONA: {why_not_ona}")
 
     print(f"garbage field, {args.light} light, {args.runs} missions per reasoner")
+    print(f"robocog NARS engine: {ENGINE}")
     print(
-        f"{'reasoner':<12}{'cycles':>8}{'reason p50':>12}{'reason p99':>12}{'cycle p99':>11}{'success':>9}"
+        f"{'reasoner':<12}{'cycles':>8}{'reason p50':>12}{'reason p99':>12}"
+        f"{'cycle p50':>11}{'cycle p99':>11}{'success':>9}"
     )
     for r in results:
         rate = "-" if r["success_rate"] is None else f"{100 * r['success_rate']:.0f}%"
         print(
             f"{r['reasoner']:<12}{r['cycles']:>8}{r['reason_p50_ms']:>10.2f}ms"
-            f"{r['reason_p99_ms']:>10.2f}ms{r['cycle_p99_ms']:>9.2f}ms{rate:>9}"
+            f"{r['reason_p99_ms']:>10.2f}ms{r['cycle_p50_ms']:>9.2f}ms"
+            f"{r['cycle_p99_ms']:>9.2f}ms{rate:>9}"
         )
     if len(results) == 2:
-        ratio = results[1]["reason_p99_ms"] / max(1e-9, results[0]["reason_p99_ms"])
-        print(f"p99 ratio ONA / robocog: {ratio:.2f} (above 1: robocog is faster)")
-        goal = "met" if results[0]["reason_p99_ms"] < 50 else "not met"
-        print(f"goal p99 < 50 ms: {goal}")
+        ratio = results[1]["cycle_p99_ms"] / max(1e-9, results[0]["cycle_p99_ms"])
+        print(f"cycle p99 ratio ONA / robocog: {ratio:.2f} (above 1: robocog is faster)")
+    if results and results[0]["reasoner"] == "robocog":
+        # the whole cycle: percepts, the mind's reasoning on them, the actions and the
+        # mind's reasoning on their outcomes (the world's own step costs ~0.1 ms)
+        goal = "met" if results[0]["cycle_p99_ms"] < 50 else "not met"
+        print(f"goal: whole-cycle p99 < 50 ms: {goal}")
     if args.json:
         args.json.write_text(json.dumps(results, indent=2) + "\n")
     return 0

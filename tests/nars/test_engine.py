@@ -1,0 +1,99 @@
+"""The choice between the compiled and the pure-Python engine, and their agreement."""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import random
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+import robocog.nars as nars
+from robocog.nars import _choose_engine
+
+
+def _package(tmp_path: Path, tag: str = sys.implementation.cache_tag) -> Path:
+    """A package folder with two sources and a build manifest matching them."""
+    (tmp_path / "terms.py").write_text("X = 1\n")
+    (tmp_path / "nar.py").write_text("Y = 2\n")
+    folder = tmp_path / "_compiled"
+    folder.mkdir()
+    sources = {
+        name: hashlib.sha256((tmp_path / name).read_bytes()).hexdigest()
+        for name in ("terms.py", "nar.py")
+    }
+    (folder / "manifest.json").write_text(json.dumps({"cache_tag": tag, "sources": sources}))
+    return folder
+
+
+def test_a_build_of_the_present_sources_is_used(tmp_path: Path, monkeypatch) -> None:  # noqa: ANN001
+    monkeypatch.delenv("ROBOCOG_PURE_PYTHON", raising=False)
+    folder = _package(tmp_path)
+    assert _choose_engine(tmp_path) == ("compiled", folder)
+
+
+def test_an_edited_source_falls_back_to_python(tmp_path: Path, monkeypatch) -> None:  # noqa: ANN001
+    monkeypatch.delenv("ROBOCOG_PURE_PYTHON", raising=False)
+    _package(tmp_path)
+    (tmp_path / "nar.py").write_text("Y = 3\n")
+    engine, folder = _choose_engine(tmp_path)
+    assert folder is None and engine.startswith("python") and "nar.py changed" in engine
+
+
+def test_other_interpreter_missing_or_broken_manifest_fall_back(
+    tmp_path: Path, monkeypatch
+) -> None:  # noqa: ANN001
+    monkeypatch.delenv("ROBOCOG_PURE_PYTHON", raising=False)
+    assert _choose_engine(tmp_path)[1] is None  # nothing built
+    folder = _package(tmp_path, tag="cpython-0")
+    engine, chosen = _choose_engine(tmp_path)
+    assert chosen is None and "cpython-0" in engine
+    (folder / "manifest.json").write_text("{not json")
+    assert _choose_engine(tmp_path)[1] is None
+
+
+def test_the_environment_can_ask_for_python(tmp_path: Path, monkeypatch) -> None:  # noqa: ANN001
+    _package(tmp_path)
+    monkeypatch.setenv("ROBOCOG_PURE_PYTHON", "1")
+    engine, folder = _choose_engine(tmp_path)
+    assert folder is None and "ROBOCOG_PURE_PYTHON" in engine
+
+
+def _workload() -> str:
+    """Declarative and sensorimotor input at full volume: every derivation is printed."""
+    rng = random.Random(7)
+    lines = []
+    for i in range(1, 60):
+        lines.append(f"<n{i} --> n{rng.randrange(max(0, i - 8), i)}>.")
+    lines += [f"<n{rng.randrange(30, 60)} --> n{rng.randrange(0, 10)}>?" for _ in range(10)]
+    for _ in range(12):
+        lines += ["<a --> [on]>. :|:", "^left. :|:", "<b --> [on]>. :|:", "5"]
+    lines += ["<b --> [on]>! :|:", "10", "<(<a --> [on]> &/ ^left) =/> <b --> [on]>>?"]
+    return "\n".join(lines) + "\n"
+
+
+@pytest.mark.skipif(nars.ENGINE != "compiled", reason=f"engine in use: {nars.ENGINE}")
+def test_compiled_and_python_engines_print_the_same() -> None:
+    text = _workload()
+    outs = []
+    for pure in (False, True):
+        env = dict(os.environ)
+        env.pop("ROBOCOG_PURE_PYTHON", None)
+        if pure:
+            env["ROBOCOG_PURE_PYTHON"] = "1"
+        run = subprocess.run(
+            [sys.executable, "-m", "robocog", "nar"],
+            input=text,
+            capture_output=True,
+            text=True,
+            env=env,
+            timeout=300,
+        )
+        assert run.returncode == 0, run.stderr
+        outs.append(run.stdout)
+    assert outs[0].count("Derived:") > 500 and "Answer:" in outs[0]
+    assert outs[0] == outs[1]
