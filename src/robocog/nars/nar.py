@@ -27,7 +27,7 @@ from .rules import RuleTable, rejected
 from .sensorimotor import SensorimotorMixin
 from .stamp import fmt, has_duplicate, merge, overlap
 from .terms import F_COMPOSED, TEMPORAL_IMPLICATION, Term, atom
-from .truth import Truth, expectation
+from .truth import Truth, expectation, projection
 from .unify import unify
 
 #: bumped whenever the pickled layout changes (2: tables keep their expectations, concepts
@@ -430,19 +430,18 @@ class NAR(SensorimotorMixin, DecisionMixin):
         if old is None:
             return (new if fresh else _copy(new)), False
         later = max(old.occurrence_time, new.occurrence_time)
-        po = old.projected(later)
-        pn = new.projected(later)
-        dep_conj = new.term.op in ("&&", "&/") and new.term.has_dep_var
         if (
             overlap(new.stamp, old.stamp)
-            or dep_conj
+            or (new.term.op in ("&&", "&/") and new.term.has_dep_var)
             or (old.occurrence_time != ETERNAL and old.occurrence_time != new.occurrence_time)
             or old.term is not new.term
         ):
-            if pn.truth.c > po.truth.c:
+            # a choice needs only the projected confidences (anticipation makes
+            # thousands of these per input), not the projected events
+            if _projected_c(new, later) > _projected_c(old, later):
                 return (new if fresh else _copy(new)), False
             return old, False
-        r = revise_events(po, pn, self.config.stamp_size)
+        r = revise_events(old.projected(later), new.projected(later), self.config.stamp_size)
         return r, True
 
     def _derived(
@@ -832,6 +831,14 @@ def _needs_existing_concept(t: Term, occurrence: int) -> bool:
     ):
         return True
     return bool(t.flags & F_COMPOSED)
+
+
+def _projected_c(e: Event, target_time: int) -> float:
+    """``e.projected(target_time).truth.c`` without making the projected event."""
+    occ = e.occurrence_time
+    if occ == ETERNAL or occ == target_time:
+        return e.truth.c
+    return projection(e.truth, occ, target_time).c
 
 
 def _names(t: Term) -> list[Term]:
