@@ -67,6 +67,9 @@ def test_loop_runs_cycles_and_feeds_outcomes_back() -> None:
     summary = loop.stats.summary()
     assert summary["cycles"] == 5.0
     assert summary["cycle_p99_ms"] >= summary["cycle_p50_ms"] >= 0.0
+    # the CPU time of each cycle is kept beside its wall time
+    assert len(loop.stats.cycle_cpu) == 5
+    assert summary["cycle_cpu_p99_ms"] >= summary["cycle_cpu_p50_ms"] >= 0.0
 
 
 def test_loop_stops_when_asked() -> None:
