@@ -37,6 +37,10 @@ _Source = tuple[
 ]
 
 
+#: a precondition not looked up yet in this anticipation (see ``_anticipate``)
+_UNSEEN = object()
+
+
 def split_precondition(subject: Term) -> tuple[Term, Term | None]:
     """``(pre &/ op)`` -> (pre, op); anything else -> (subject, None)."""
     if subject.op == SEQUENCE and subject.args[1].is_op:
@@ -478,9 +482,9 @@ class SensorimotorMixin:
                 source = imp.source
                 if source is None:
                     continue
-                try:
-                    entry = sources[source]
-                except KeyError:
+                # (a miss is common; compiled, raising and catching KeyError costs more)
+                entry = sources.get(source, _UNSEEN)
+                if entry is _UNSEEN:
                     if source.has_var:
                         var_sources.append(source)
                         if groups is None:
@@ -567,7 +571,9 @@ class SensorimotorMixin:
                     if len(merged) >= 4096:
                         merged.clear()
                     stamp = merged[mkey] = merge(spike.stamp, imp.stamp, stamp_size)
-                pred = Event(outcome, BELIEF, Truth(pf, pc), stamp, occ, now)  # (deduction)
+                # (deduction; the tuple is made directly: Truth's own constructor is a
+                # Python-level call, and predictions are made thousands of times per input)
+                pred = Event(outcome, BELIEF, tf.truth_of(pf, pc), stamp, occ, now)
                 if imp.dt > 0.0:
                     old = oc.predicted_belief
                     oc.predicted_belief, _ = self._revision_and_choice(old, pred, True)  # type: ignore[attr-defined]

@@ -27,6 +27,12 @@ class Truth(NamedTuple):
 #: ``Truth`` without the NamedTuple's Python-level ``__new__`` (the hot path builds millions)
 _new = tuple.__new__
 
+
+def truth_of(f: float, c: float) -> Truth:
+    """``Truth(f, c)`` without the NamedTuple's Python-level constructor."""
+    return _new(Truth, (f, c))
+
+
 DEFAULT = Truth(1.0, 0.9)
 STRUCTURAL = Truth(1.0, 0.9)
 
