@@ -404,30 +404,20 @@ def _two(rel_get, p: Atom, q: Atom) -> list[Bindings] | None:  # noqa: ANN001, C
     ):
         return None
     # the anchor: the known leaf with the fewest relations; v the leaf at its other end
-    best = None
-    if p0[0] != "VariableNode":
-        best = rel_get((p0, 0, pc, pt, pit, 2))
-        if best is None:
-            return []
-        v, anchored_p = p1, True
-    if p1[0] != "VariableNode":
-        s = rel_get((p1, 1, pc, pt, pit, 2))
-        if s is None:
-            return []
-        if best is None or len(s) < len(best):
-            best, v, anchored_p = s, p0, True
-    if q0[0] != "VariableNode":
-        s = rel_get((q0, 0, qc, qt, qit, 2))
-        if s is None:
-            return []
-        if best is None or len(s) < len(best):
-            best, v, anchored_p = s, q1, False
-    if q1[0] != "VariableNode":
-        s = rel_get((q1, 1, qc, qt, qit, 2))
-        if s is None:
-            return []
-        if best is None or len(s) < len(best):
-            best, v, anchored_p = s, q0, False
+    best = v = None
+    anchored_p = True
+    for leaf, i, c, typ, itype, other, in_p in (
+        (p0, 0, pc, pt, pit, p1, True),
+        (p1, 1, pc, pt, pit, p0, True),
+        (q0, 0, qc, qt, qit, q1, False),
+        (q1, 1, qc, qt, qit, q0, False),
+    ):
+        if leaf[0] != "VariableNode":
+            s = rel_get((leaf, i, c, typ, itype, 2))
+            if s is None:
+                return []
+            if best is None or len(s) < len(best):
+                best, v, anchored_p = s, other, in_p
     if best is None or v[0] != "VariableNode":
         return None
     if anchored_p:
