@@ -11,7 +11,7 @@ anticipation scans the whole memory.
 from __future__ import annotations
 
 from collections import deque
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, TypeVar
 
 from . import truth as tf
 from .event import BELIEF, ETERNAL, Event, Implication
@@ -37,8 +37,25 @@ _Source = tuple[
 ]
 
 
-#: a precondition not looked up yet in this anticipation (see ``_anticipate``)
-_UNSEEN = object()
+#: "not yet known": a precondition not looked up yet in this anticipation, a pattern's
+#: group before it is first chosen, a match not yet made
+_UNKNOWN = object()
+
+#: entries a remembered-results cache holds before it starts afresh
+_CACHE_SIZE = 4096
+
+_K = TypeVar("_K")
+_V = TypeVar("_V")
+
+
+def _remember(cache: dict[_K, _V], key: _K, value: _V, size: int = _CACHE_SIZE) -> _V:
+    """Store ``value`` under ``key`` in ``cache``, emptied first when it holds ``size``
+    entries (its results are pure, so starting afresh only costs recomputation), and
+    return it."""
+    if len(cache) >= size:
+        cache.clear()
+    cache[key] = value
+    return value
 
 
 def split_precondition(subject: Term) -> tuple[Term, Term | None]:
@@ -276,22 +293,13 @@ class SensorimotorMixin:
         c.timed = True
         idx.appendleft(c)
         if groups is not None and not c.term.has_var:
-            # the newest member of each of its groups: moved to (or entered at) the end
-            for k in self._keys_of(c.term):
-                d = groups.get(k)
-                if d is None:
-                    groups[k] = {c: None}
-                else:
-                    d.pop(c, None)
-                    d[c] = None
+            _group_add(groups, c, self._keys_of(c.term))
 
     def _keys_of(self, term: Term) -> list[object]:
         """``_group_keys(term)``, remembered (the same concepts come and go)."""
         keys = self._term_keys.get(term)
         if keys is None:
-            if len(self._term_keys) >= 4096:
-                self._term_keys.clear()
-            keys = self._term_keys[term] = _group_keys(term)
+            keys = _remember(self._term_keys, term, _group_keys(term))
         return keys
 
     def _process_belief_event(self, e: Event, priority: float) -> None:
@@ -417,14 +425,12 @@ class SensorimotorMixin:
         because the same links are induced again at nearly every step."""
         forms = self._var_forms.get(term)
         if forms is None:
-            if len(self._var_forms) >= 4096:
-                self._var_forms.clear()
             found = []
             for ext in (True, False):
                 v = introduce_implication_variables(term, ext)
                 if v is not None and v is not term and not hol_component_invalid(v):
                     found.append(v)
-            forms = self._var_forms[term] = tuple(found)
+            forms = _remember(self._var_forms, term, tuple(found))
         return forms
 
     # ------------------------------------------------------------ anticipation
@@ -483,8 +489,8 @@ class SensorimotorMixin:
                 if source is None:
                     continue
                 # (a miss is common; compiled, raising and catching KeyError costs more)
-                entry = sources.get(source, _UNSEEN)
-                if entry is _UNSEEN:
+                entry = sources.get(source, _UNKNOWN)
+                if entry is _UNKNOWN:
                     if source.has_var:
                         var_sources.append(source)
                         if groups is None:
@@ -500,9 +506,7 @@ class SensorimotorMixin:
                     else:
                         by_offset = failures.get(spike.truth)
                         if by_offset is None:
-                            if len(failures) >= 4096:
-                                failures.clear()
-                            by_offset = failures[spike.truth] = {}
+                            by_offset = _remember(failures, spike.truth, {})
                         pre_i = tf.intersection(
                             tf.projection(spike.truth, spike.occurrence_time, now), op_truth
                         )
@@ -550,9 +554,7 @@ class SensorimotorMixin:
                     okey = (imp.term, spike.term)
                     outcome = outcomes.get(okey)
                     if outcome is None:
-                        if len(outcomes) >= 4096:
-                            outcomes.clear()
-                        outcome = outcomes[okey] = apply(imp.term.args[1], bind)
+                        outcome = _remember(outcomes, okey, apply(imp.term.args[1], bind))
                 else:
                     outcome = imp.term.args[1]
                 if outcome.has_var or not spike_ids.isdisjoint(imp.stamp):
@@ -568,9 +570,7 @@ class SensorimotorMixin:
                 mkey = (spike.stamp, imp.stamp, stamp_size)
                 stamp = merged.get(mkey)
                 if stamp is None:
-                    if len(merged) >= 4096:
-                        merged.clear()
-                    stamp = merged[mkey] = merge(spike.stamp, imp.stamp, stamp_size)
+                    stamp = _remember(merged, mkey, merge(spike.stamp, imp.stamp, stamp_size))
                 # (deduction; the tuple is made directly: Truth's own constructor is a
                 # Python-level call, and predictions are made thousands of times per input)
                 pred = Event(outcome, BELIEF, tf.truth_of(pf, pc), stamp, occ, now)
@@ -628,16 +628,14 @@ class SensorimotorMixin:
                 groups = self._spike_groups()
             pattern = self._patterns.get(source)
             if pattern is None:
-                if len(self._patterns) >= 4096:
-                    self._patterns.clear()
-                pattern = self._patterns[source] = _Pattern(source)
+                pattern = _remember(self._patterns, source, _Pattern(source))
             # Every instance is in each of the pattern's groups, all ordered alike (by
             # their concepts' last event), so each group yields the same first match and
             # an empty one means none. The smallest is the cheapest to scan; group sizes
             # drift slowly, so it is chosen afresh only now and then.
             pattern.uses += 1
             key = pattern.key
-            if key is _UNCHOSEN or not pattern.uses & 31:
+            if key is _UNKNOWN or not pattern.uses & 31:
                 group: dict[Concept, None] | None = None
                 for k in pattern.keys:
                     g = groups.get(k)
@@ -656,8 +654,8 @@ class SensorimotorMixin:
                 b = c2.belief_spike
                 if b is None:
                     continue
-                bind = matches.get(c2.term, _UNCHOSEN)  # (pattern.match, read inline)
-                if bind is _UNCHOSEN:
+                bind = matches.get(c2.term, _UNKNOWN)  # (pattern.match, read inline)
+                if bind is _UNKNOWN:
                     bind = pattern.match(c2.term)
                 if bind is None:
                     continue
@@ -694,10 +692,6 @@ class SensorimotorMixin:
         return unify(source, term) if pattern is None else pattern.match(term)
 
 
-#: "not yet known": a pattern's group before it is first chosen, an unseen match
-_UNCHOSEN = object()
-
-
 class _Pattern:
     """What ``_source_spike`` keeps about a precondition with variables."""
 
@@ -708,18 +702,17 @@ class _Pattern:
         #: the groups every instance of the precondition is in
         self.keys = _group_keys(source, ground_only=True)
         #: the one of them scanned (the smallest when last chosen)
-        self.key: object = _UNCHOSEN
+        self.key: object = _UNKNOWN
         self.uses = 0
         #: ground term -> unify(precondition, term), a pure function of the two
         self.matches: dict[Term, dict[Term, Term] | None] = {}
 
     def match(self, term: Term) -> dict[Term, Term] | None:
         """``unify(source, term)``, remembered (nobody changes the bindings returned)."""
-        bind = self.matches.get(term, _UNCHOSEN)
-        if bind is _UNCHOSEN:
-            if len(self.matches) >= 128:  # (a few groups' worth; memory stays bounded)
-                self.matches.clear()
-            bind = self.matches[term] = unify(self.source, term)
+        bind = self.matches.get(term, _UNKNOWN)
+        if bind is _UNKNOWN:
+            # (a few groups' worth: each pattern has its own)
+            bind = _remember(self.matches, term, unify(self.source, term), 128)
         return bind
 
 
@@ -747,12 +740,14 @@ def _group_keys(t: Term, ground_only: bool = False) -> list[object]:
 
 
 def _group_add(groups: dict[object, dict[Concept, None]], c: Concept, keys: list[object]) -> None:
-    """Enter ``c`` (its term without variables) as the newest member of its groups."""
+    """Make ``c`` (its term without variables) the newest member of its groups,
+    entering it or moving it to the end."""
     for k in keys:
         d = groups.get(k)
         if d is None:
             groups[k] = {c: None}
         else:
+            d.pop(c, None)
             d[c] = None
 
 
