@@ -41,6 +41,12 @@ class Event:
             and self.occurrence_time == other.occurrence_time
         )
 
+    def confidence_at(self, target_time: int) -> float:
+        """``self.projected(target_time).truth.c``, without making the projected event."""
+        if self.occurrence_time == ETERNAL or self.occurrence_time == target_time:
+            return self.truth.c
+        return projection(self.truth, self.occurrence_time, target_time).c
+
     def projected(self, target_time: int) -> Event:
         """This event seen from ``target_time`` (confidence decays with distance); the
         event itself when nothing changes (callers only read what they get)."""

@@ -27,7 +27,7 @@ from .rules import RuleTable, rejected
 from .sensorimotor import SensorimotorMixin
 from .stamp import fmt, has_duplicate, merge, overlap
 from .terms import F_COMPOSED, TEMPORAL_IMPLICATION, Term, atom
-from .truth import Truth, expectation, projection
+from .truth import Truth, expectation
 from .unify import unify
 
 #: bumped whenever the pickled layout changes (2: tables keep their expectations, concepts
@@ -313,19 +313,9 @@ class NAR(SensorimotorMixin, DecisionMixin):
     def _add_event(
         self, e: Event, priority: float, is_input: bool = False, revised: bool = False
     ) -> None:
-        """ONA's Memory_AddEvent: queue the event and store it in its concept."""
-        derived = not revised and not is_input
-        composition = (
-            derived
-            and (len(e.stamp) > 1 or e.occurrence_time != ETERNAL)
-            and _needs_existing_concept(e.term, e.occurrence_time)
-        )
-        if composition and self.memory.find(e.term) is None:
-            if self.config.compositions_need_concept or e.term.has_var:
-                return  # compositions are only kept where their concept already exists
-        composition = composition and not self.config.compositions_need_concept
-        if derived:
-            priority *= 1.0 / math.log2(1.0 + e.term.complexity)
+        """ONA's Memory_AddEvent for input and revised events: queue the event and store
+        it in its concept. (Derived beliefs take :meth:`_derived`, which makes the
+        decisions that only concern them.)"""
         if e.truth.c < self.config.min_confidence or priority <= 0.0:
             return
         if e.type == GOAL:
@@ -333,7 +323,7 @@ class NAR(SensorimotorMixin, DecisionMixin):
                 self._print("Input: " + e.line(priority))
             self._add_goal(e, priority, 0)
             return
-        self._store(e, priority, is_input, revised, not composition)
+        self._store(e, priority, is_input, revised, True)
 
     def _store(self, e: Event, priority: float, is_input: bool, revised: bool, index: bool) -> None:
         """Queue a belief event that passed the filters and store it in its concept."""
@@ -438,7 +428,7 @@ class NAR(SensorimotorMixin, DecisionMixin):
         ):
             # a choice needs only the projected confidences (anticipation makes
             # thousands of these per input), not the projected events
-            if _projected_c(new, later) > _projected_c(old, later):
+            if new.confidence_at(later) > old.confidence_at(later):
                 return (new if fresh else _copy(new)), False
             return old, False
         r = revise_events(old.projected(later), new.projected(later), self.config.stamp_size)
@@ -447,8 +437,9 @@ class NAR(SensorimotorMixin, DecisionMixin):
     def _derived(
         self, term: Term, t: Truth, stamp: tuple[int, ...], occurrence: int, priority: float
     ) -> None:
-        """A derived belief: ``_add_event``'s decisions for this case, each made once and
-        the cheap ones first, then straight to :meth:`_store`."""
+        """A derived belief: ONA's Memory_AddEvent for derived events (compositions only
+        where their concept exists, priority scaled by complexity) after the conclusion
+        filters, each check made once and the cheap ones first, then :meth:`_store`."""
         cfg = self.config
         composition = (len(stamp) > 1 or occurrence != ETERNAL) and _needs_existing_concept(
             term, occurrence
@@ -831,14 +822,6 @@ def _needs_existing_concept(t: Term, occurrence: int) -> bool:
     ):
         return True
     return bool(t.flags & F_COMPOSED)
-
-
-def _projected_c(e: Event, target_time: int) -> float:
-    """``e.projected(target_time).truth.c`` without making the projected event."""
-    occ = e.occurrence_time
-    if occ == ETERNAL or occ == target_time:
-        return e.truth.c
-    return projection(e.truth, occ, target_time).c
 
 
 def _names(t: Term) -> list[Term]:
