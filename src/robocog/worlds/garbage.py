@@ -163,8 +163,9 @@ class GarbageField:
             )
         self.route: list[str] = list(self.checkpoints)
         self.start: tuple[float, float] = (1.5, c.size - 1.5)  # upper-left corner
+        self.start_heading = -math.pi / 4.0  # facing into the field
         self.x, self.y = self.start
-        self.theta = -math.pi / 4.0  # facing into the field
+        self.theta = self.start_heading
         self.clock = 0.0
         self.holding: Trash | None = None
         self.trash: list[Trash] = []
@@ -207,7 +208,7 @@ class GarbageField:
                     if t.on_field:
                         t.cleared = True
             self.x, self.y = self.start
-            self.theta = -math.pi / 4.0
+            self.theta = self.start_heading
             self.trajectory.append((self.x, self.y))
         self.rounds += 1
         weights = [c.hotspots.get(i, 1.0) for i in range(len(self.route))]
