@@ -76,24 +76,43 @@ def _workload() -> str:
     return "\n".join(lines) + "\n"
 
 
+def _shell(text: str, pure: bool) -> str:
+    """What ``robocog nar`` prints for ``text`` with the compiled or the pure engine."""
+    env = dict(os.environ)
+    env.pop("ROBOCOG_PURE_PYTHON", None)
+    if pure:
+        env["ROBOCOG_PURE_PYTHON"] = "1"
+    run = subprocess.run(
+        [sys.executable, "-m", "robocog", "nar"],
+        input=text,
+        capture_output=True,
+        text=True,
+        env=env,
+        timeout=300,
+    )
+    assert run.returncode == 0, run.stderr
+    return run.stdout
+
+
 @pytest.mark.skipif(nars.ENGINE != "compiled", reason=f"engine in use: {nars.ENGINE}")
 def test_compiled_and_python_engines_print_the_same() -> None:
     text = _workload()
-    outs = []
-    for pure in (False, True):
-        env = dict(os.environ)
-        env.pop("ROBOCOG_PURE_PYTHON", None)
-        if pure:
-            env["ROBOCOG_PURE_PYTHON"] = "1"
-        run = subprocess.run(
-            [sys.executable, "-m", "robocog", "nar"],
-            input=text,
-            capture_output=True,
-            text=True,
-            env=env,
-            timeout=300,
-        )
-        assert run.returncode == 0, run.stderr
-        outs.append(run.stdout)
+    outs = [_shell(text, pure) for pure in (False, True)]
     assert outs[0].count("Derived:") > 500 and "Answer:" in outs[0]
     assert outs[0] == outs[1]
+
+
+@pytest.mark.skipif(nars.ENGINE != "compiled", reason=f"engine in use: {nars.ENGINE}")
+def test_each_engine_continues_from_the_others_save(tmp_path: Path) -> None:
+    lines = _workload().splitlines()
+    first, rest = "\n".join(lines[:100]), "\n".join(lines[100:]) + "\n"
+    continued = []
+    for saver_is_pure in (False, True):
+        path = tmp_path / f"saved-{saver_is_pure}.nar"
+        _shell(f"{first}\n*save {path}\n", saver_is_pure)
+        continued.append(_shell(f"*load {path}\n{rest}", not saver_is_pure))
+    # read by either engine, the saved state goes on exactly as the run that never stopped
+    whole = _shell(_workload(), False)
+    for out in continued:
+        assert "Answer:" in out and out.count("Derived:") > 100
+        assert whole.endswith(out)

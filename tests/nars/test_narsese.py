@@ -11,6 +11,7 @@ from hypothesis import strategies as st
 
 from robocog.nars.narsese import NarseseError, parse_sentence, parse_term
 from robocog.nars.terms import atom, compound
+from robocog.nars.truth import Truth
 
 EXAMPLES = Path("/work/shared/nal/ona-examples")
 
@@ -72,9 +73,9 @@ def test_interning_makes_equal_terms_identical() -> None:
 
 def test_sentence_parts() -> None:
     s = parse_sentence("<a --> b>. :|: {0.25 0.5}")
-    assert (s.punctuation, s.tense, s.truth) == (".", ":|:", (0.25, 0.5))
+    assert (s.punctuation, s.tense, tuple(s.truth)) == (".", ":|:", (0.25, 0.5))
     s = parse_sentence("<a --> b>. %0.7%")
-    assert s.truth == (0.7, 0.9)
+    assert s.truth == Truth(0.7, 0.9)
     s = parse_sentence("dt=3 <a =/> b>.")
     assert s.dt == 3.0
 

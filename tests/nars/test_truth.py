@@ -50,18 +50,18 @@ def test_revision_of_two_inductions_gives_ona_greenplant_value() -> None:
 
 
 def test_single_premise_functions() -> None:
-    assert tf.negation(B) == pytest.approx((0.3, 0.8))
-    assert tf.conversion(B) == pytest.approx((1.0, 0.56 / 1.56))
-    assert tf.contraposition(B) == pytest.approx((0.0, 0.24 / 1.24))
-    assert tf.structural_deduction(B) == pytest.approx((0.7, 0.7 * 0.8 * 0.9))
-    assert tf.structural_deduction_negated(B) == pytest.approx((0.3, 0.7 * 0.8 * 0.9))
-    assert tf.structural_intersection(B) == pytest.approx((0.7, 0.72))
-    assert tf.eternalize(B) == pytest.approx((0.7, 0.8 / 1.8))
+    assert tuple(tf.negation(B)) == pytest.approx((0.3, 0.8))
+    assert tuple(tf.conversion(B)) == pytest.approx((1.0, 0.56 / 1.56))
+    assert tuple(tf.contraposition(B)) == pytest.approx((0.0, 0.24 / 1.24))
+    assert tuple(tf.structural_deduction(B)) == pytest.approx((0.7, 0.7 * 0.8 * 0.9))
+    assert tuple(tf.structural_deduction_negated(B)) == pytest.approx((0.3, 0.7 * 0.8 * 0.9))
+    assert tuple(tf.structural_intersection(B)) == pytest.approx((0.7, 0.72))
+    assert tuple(tf.eternalize(B)) == pytest.approx((0.7, 0.8 / 1.8))
     assert tf.expectation(B) == pytest.approx(0.8 * 0.2 + 0.5)
 
 
 def test_projection_decays_by_point_eight_per_cycle() -> None:
-    assert tf.projection(A, 10, 13) == pytest.approx((1.0, 0.9 * 0.8**3))
+    assert tuple(tf.projection(A, 10, 13)) == pytest.approx((1.0, 0.9 * 0.8**3))
     assert tf.projection(A, -1, 13) == A
 
 
@@ -69,13 +69,13 @@ def test_goal_deduction_takes_the_more_confident_reading() -> None:
     g = Truth(0.0, 0.9)  # a goal to avoid
     got = tf.goal_deduction(g, A)
     # deduction gives c = 0; the negated reading gives f = 1 - 0 = 1 ... negated back: 0
-    assert got == pytest.approx((0.0, 0.81))
+    assert tuple(got) == pytest.approx((0.0, 0.81))
 
 
 def test_frequency_comparisons() -> None:
-    assert tf.frequency_greater(A, B) == pytest.approx((1.0, 0.72))
-    assert tf.frequency_greater(B, A) == (0.0, 0.0)
-    assert tf.frequency_equal(A, A) == pytest.approx((1.0, 0.81))
+    assert tuple(tf.frequency_greater(A, B)) == pytest.approx((1.0, 0.72))
+    assert tuple(tf.frequency_greater(B, A)) == (0.0, 0.0)
+    assert tuple(tf.frequency_equal(A, A)) == pytest.approx((1.0, 0.81))
 
 
 unit = st.floats(0.0, 1.0)

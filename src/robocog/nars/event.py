@@ -2,34 +2,82 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 from .stamp import Stamp, fmt, merge
 from .terms import Term
-from .truth import Truth, projection, revision
+from .truth import Cycle, Truth, projection, revision
 
 ETERNAL = -1
 BELIEF = "."
 GOAL = "!"
 
 
-@dataclass(slots=True)
 class Event:
     """A belief or goal with its truth, evidence and time.
 
     ``occurrence_time`` is -1 for eternal sentences; ``dt`` is the time offset of a
-    temporal implication; ``creation_time`` is when the reasoner made it.
+    temporal implication; ``creation_time`` is when the reasoner made it. Written out
+    rather than a dataclass so that, compiled, it is an extension type (``event.pxd``).
     """
 
-    term: Term
-    type: str
-    truth: Truth
-    stamp: Stamp
-    occurrence_time: int = ETERNAL
-    creation_time: int = 0
-    dt: float = 0.0
-    processed: bool = False
-    is_input: bool = False
+    __slots__ = (
+        "term",
+        "type",
+        "truth",
+        "stamp",
+        "occurrence_time",
+        "creation_time",
+        "dt",
+        "processed",
+        "is_input",
+    )
+
+    def __init__(
+        self,
+        term: Term,
+        type: str,  # noqa: A002 - ONA's name for the punctuation
+        truth: Truth,
+        stamp: Stamp,
+        occurrence_time: int = ETERNAL,
+        creation_time: int = 0,
+        dt: float = 0.0,
+        processed: bool = False,
+        is_input: bool = False,
+    ) -> None:
+        self.term = term
+        self.type = type
+        self.truth = truth
+        self.stamp = stamp
+        self.occurrence_time = occurrence_time
+        self.creation_time = creation_time
+        self.dt = dt
+        self.processed = processed
+        self.is_input = is_input
+
+    def _fields(self) -> tuple[object, ...]:
+        return (
+            self.term,
+            self.type,
+            self.truth,
+            self.stamp,
+            self.occurrence_time,
+            self.creation_time,
+            self.dt,
+            self.processed,
+            self.is_input,
+        )
+
+    def __eq__(self, other: object) -> bool:
+        if other.__class__ is not self.__class__:
+            return NotImplemented
+        return self._fields() == other._fields()  # type: ignore[attr-defined]
+
+    __hash__ = None  # type: ignore[assignment]  # mutable, like the dataclass it was
+
+    def __reduce__(self) -> tuple[type, tuple[object, ...]]:
+        return (Event, self._fields())
+
+    def __repr__(self) -> str:
+        return _repr(self, Event.__slots__)
 
     def same(self, other: Event) -> bool:
         """ONA's Event_Equal: term, type, truth, stamp and time agree."""
@@ -41,13 +89,13 @@ class Event:
             and self.occurrence_time == other.occurrence_time
         )
 
-    def confidence_at(self, target_time: int) -> float:
+    def confidence_at(self, target_time: Cycle) -> float:
         """``self.projected(target_time).truth.c``, without making the projected event."""
         if self.occurrence_time == ETERNAL or self.occurrence_time == target_time:
             return self.truth.c
         return projection(self.truth, self.occurrence_time, target_time).c
 
-    def projected(self, target_time: int) -> Event:
+    def projected(self, target_time: Cycle) -> Event:
         """This event seen from ``target_time`` (confidence decays with distance); the
         event itself when nothing changes (callers only read what they get)."""
         if self.occurrence_time == ETERNAL or self.occurrence_time == target_time:
@@ -93,13 +141,45 @@ def revise_events(a: Event, b: Event, stamp_size: int) -> Event:
     )
 
 
-@dataclass(slots=True)
 class Implication:
     """A temporal or declarative implication stored in its predicate's table."""
 
-    term: Term
-    truth: Truth
-    stamp: Stamp
-    dt: float = 0.0
-    creation_time: int = 0
-    source: Term | None = None
+    __slots__ = ("term", "truth", "stamp", "dt", "creation_time", "source")
+
+    def __init__(
+        self,
+        term: Term,
+        truth: Truth,
+        stamp: Stamp,
+        dt: float = 0.0,
+        creation_time: int = 0,
+        source: Term | None = None,
+    ) -> None:
+        self.term = term
+        self.truth = truth
+        self.stamp = stamp
+        self.dt = dt
+        self.creation_time = creation_time
+        self.source = source
+
+    def _fields(self) -> tuple[object, ...]:
+        return (self.term, self.truth, self.stamp, self.dt, self.creation_time, self.source)
+
+    def __eq__(self, other: object) -> bool:
+        if other.__class__ is not self.__class__:
+            return NotImplemented
+        return self._fields() == other._fields()  # type: ignore[attr-defined]
+
+    __hash__ = None  # type: ignore[assignment]
+
+    def __reduce__(self) -> tuple[type, tuple[object, ...]]:
+        return (Implication, self._fields())
+
+    def __repr__(self) -> str:
+        return _repr(self, Implication.__slots__)
+
+
+def _repr(item: Event | Implication, names: tuple[str, ...]) -> str:
+    """``Name(field=value, ...)``, as the dataclasses these were printed."""
+    pairs = zip(names, item._fields(), strict=True)
+    return f"{type(item).__name__}(" + ", ".join(f"{n}={v!r}" for n, v in pairs) + ")"

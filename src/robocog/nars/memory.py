@@ -64,6 +64,10 @@ class Concept:
         self.filed: tuple[int, int] | None = None
         self.book: list[Concept] | None = None
 
+    def __reduce__(self) -> tuple[object, ...]:
+        # an empty concept given the state, the same for the compiled and the pure engine
+        return (_blank_concept, (), self.__getstate__())
+
     def __getstate__(self) -> tuple[None, dict[str, object]]:
         state = {k: getattr(self, k) for k in self.__slots__}
         state["filed"] = state["book"] = None  # the loading memory files it anew
@@ -93,6 +97,11 @@ class Concept:
         """u/(u+1) with u = uses per cycle since the last use."""
         u = self.use_count / (now - self.last_used + 1)
         return u / (u + 1.0)
+
+
+def _blank_concept() -> Concept:
+    """A concept without fields, for ``__setstate__`` to fill."""
+    return Concept.__new__(Concept)
 
 
 def _key(e: Event) -> tuple[object, ...]:

@@ -31,8 +31,9 @@ from .truth import Truth, expectation
 from .unify import unify
 
 #: bumped whenever the pickled layout changes (2: tables keep their expectations, concepts
-#: whether they were ever in the time index)
-SAVE_FORMAT = "robocog-nar-2"
+#: whether they were ever in the time index; 3: truths, events, implications, tables and
+#: concepts are saved by their fields, alike from the compiled and the pure engine)
+SAVE_FORMAT = "robocog-nar-3"
 PENDING_QUESTIONS = 32
 DEFAULT_OPERATIONS = (
     "^left",

@@ -23,6 +23,7 @@ from .unify import apply, unify
 
 if TYPE_CHECKING:
     from .memory import Concept
+    from .table import Table
 
 
 #: what anticipation keeps per precondition term (see ``_anticipate``)
@@ -226,6 +227,11 @@ class SensorimotorMixin:
         if not self.links_by_subject and not self.general_links:
             return
         tolerance = cfg.belief_last_used_tolerance
+        c: Concept
+        lc: Concept | None
+        tcon: Concept
+        spike: Event
+        old: Event | None
         fresh = [
             c
             for c in self.time_index
@@ -319,6 +325,13 @@ class SensorimotorMixin:
         window = cfg.precondition_consequence_distance
         occ = e.occurrence_time
         e_is_op = e.term.is_op
+        # (declared for the compiled engine: concepts and events read as structs)
+        opc: Concept
+        pc: Concept
+        c: Concept
+        op_ev: Event | None
+        pre: Event | None
+        b: Event | None
         if not e_is_op:
             # procedural: <(pre &/ op) =/> e> for an op between pre and e
             snapshot = list(self.time_index)
@@ -476,6 +489,12 @@ class SensorimotorMixin:
         boost = cfg.eternal_input_usage_boost
         showing = self._shows(1.0)  # type: ignore[attr-defined]  # printing is rare: test once
         evictions = mem.evictions
+        post: Concept
+        oc: Concept
+        imp: Implication
+        it: Truth
+        table: Table
+        spike: Event
         for post in list(targets):
             if mem.find(post.term) is not post:
                 targets.pop(post, None)
@@ -650,6 +669,8 @@ class SensorimotorMixin:
                 if not group:
                     return best
             matches = pattern.matches
+            c2: Concept
+            b: Event | None
             for c2 in reversed(group):  # newest first
                 b = c2.belief_spike
                 if b is None:

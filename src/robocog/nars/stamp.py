@@ -10,9 +10,11 @@ from __future__ import annotations
 STAMP_SIZE = 10
 
 Stamp = tuple[int, ...]
+#: a stamp's length (the compiled engine declares it a C long)
+Size = int
 
 
-def merge(a: Stamp, b: Stamp, size: int = STAMP_SIZE) -> Stamp:
+def merge(a: Stamp, b: Stamp, size: Size = STAMP_SIZE) -> Stamp:
     """Interleave a0, b0, a1, b1, ... and keep the first ``size`` ids (ONA's zip)."""
     if not b:  # negative evidence has an empty stamp
         return a if len(a) <= size else a[:size]

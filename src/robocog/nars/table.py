@@ -9,7 +9,7 @@ from __future__ import annotations
 from bisect import bisect_left, bisect_right
 
 from .event import Implication
-from .stamp import Stamp, merge, overlap
+from .stamp import Size, Stamp, merge, overlap
 from .terms import Term
 from .truth import Truth, c2w, expectation, pooled
 
@@ -28,6 +28,10 @@ class Table:
         #: (term, whether dt is 0) -> the one entry of that term and kind; anticipation
         #: revises hundreds of entries per input, so finding one must not be a scan
         self._entry: dict[tuple[Term, bool], Implication] = {}
+
+    def __reduce__(self) -> tuple[object, ...]:
+        # by its fields, so that the compiled and the pure engine read each other's saves
+        return (_restored, (self.size, self.items, self._neg, self._entry))
 
     def __len__(self) -> int:
         return len(self.items)
@@ -84,7 +88,7 @@ class Table:
             del entry[old.term, old.dt == 0.0]
         entry[new.term, zero] = new
 
-    def add_and_revise(self, imp: Implication, stamp_size: int = 10) -> Implication | None:
+    def add_and_revise(self, imp: Implication, stamp_size: Size = 10) -> Implication | None:
         """Revise with the entry of the same term (or insert); returns the stored entry."""
         # a concurrent (dt 0) and a predictive (dt > 0) link of one term stay apart
         old = self._entry.get((imp.term, imp.dt == 0.0))
@@ -96,7 +100,7 @@ class Table:
             return keep
         return self._revise(old, imp, imp.truth, c2w(imp.truth.c), imp.stamp, stamp_size)
 
-    def add_failure(self, imp: Implication, truth: Truth, weight: float, stamp_size: int) -> None:
+    def add_failure(self, imp: Implication, truth: Truth, weight: float, stamp_size: Size) -> None:
         """``add_and_revise(Implication(imp.term, truth, (), imp.dt, imp.creation_time,
         imp.source))`` without making that implication: anticipation counts one failure
         (evidence without a stamp) against hundreds of links per input. ``weight`` is
@@ -115,7 +119,7 @@ class Table:
         truth: Truth,
         weight: float,
         stamp: Stamp,
-        stamp_size: int,
+        stamp_size: Size,
     ) -> Implication:
         """Replace ``old`` by its revision with ``imp`` carrying ``truth`` (of evidence
         weight ``weight``) and ``stamp``; the offset is the weights' mean of both."""
@@ -130,3 +134,17 @@ class Table:
         )
         self._replace(old, revised)
         return revised
+
+
+def _restored(
+    size: int,
+    items: list[Implication],
+    neg: list[float],
+    entry: dict[tuple[Term, bool], Implication],
+) -> Table:
+    """A table as :meth:`Table.__reduce__` saved it."""
+    table = Table(size)
+    table.items = items
+    table._neg = neg
+    table._entry = entry
+    return table

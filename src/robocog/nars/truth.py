@@ -7,30 +7,57 @@ for the rule of the same name, so derived values agree with ONA to the printed d
 
 from __future__ import annotations
 
-from typing import NamedTuple
+from collections.abc import Iterator
 
 HORIZON = 1.0
 MAX_CONFIDENCE = 0.99
 PROJECTION_DECAY = 0.8
 
+#: a time, counted in reasoning cycles (the compiled engine declares it a C long)
+Cycle = int
 
-class Truth(NamedTuple):
-    """Frequency ``f`` and confidence ``c``, both in [0, 1]."""
 
-    f: float
-    c: float
+class Truth:
+    """Frequency ``f`` and confidence ``c``, both in [0, 1]; never changed once made.
+
+    A plain class with two slots rather than a tuple: compiled, it is an extension type
+    whose fields are C doubles (``truth.pxd``), read without an attribute lookup.
+    """
+
+    __slots__ = ("f", "c")
+
+    def __init__(self, f: float, c: float) -> None:
+        self.f = f
+        self.c = c
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, Truth):
+            return NotImplemented
+        return self.f == other.f and self.c == other.c
+
+    def __hash__(self) -> int:
+        return hash((self.f, self.c))
+
+    def __iter__(self) -> Iterator[float]:
+        """``f, c = truth``."""
+        return iter((self.f, self.c))
+
+    def __reduce__(self) -> tuple[type, tuple[float, float]]:
+        return (Truth, (self.f, self.c))
+
+    def __repr__(self) -> str:
+        return f"Truth(f={self.f!r}, c={self.c!r})"
 
     def __str__(self) -> str:
         return f"Truth: frequency={self.f:f}, confidence={self.c:f}"
 
 
-#: ``Truth`` without the NamedTuple's Python-level ``__new__`` (the hot path builds millions)
-_new = tuple.__new__
-
-
 def truth_of(f: float, c: float) -> Truth:
-    """``Truth(f, c)`` without the NamedTuple's Python-level constructor."""
-    return _new(Truth, (f, c))
+    """``Truth(f, c)`` without the keyword-capable constructor call (millions are made)."""
+    t: Truth = Truth.__new__(Truth)
+    t.f = f
+    t.c = c
+    return t
 
 
 DEFAULT = Truth(1.0, 0.9)
@@ -82,18 +109,18 @@ def pooled(a: Truth, b: Truth, w1: float, w2: float) -> Truth:
         c = b.c
     if not c < MAX_CONFIDENCE:
         c = MAX_CONFIDENCE
-    return _new(Truth, (f, c))
+    return truth_of(f, c)
 
 
 def deduction(a: Truth, b: Truth) -> Truth:
     """M-->P, S-->M |- S-->P."""
     f = a.f * b.f
-    return _new(Truth, (f, a.c * b.c * f))
+    return truth_of(f, a.c * b.c * f)
 
 
 def abduction(a: Truth, b: Truth) -> Truth:
     """P-->M, S-->M |- S-->P."""
-    return _new(Truth, (b.f, w2c(a.f * a.c * b.c)))
+    return truth_of(b.f, w2c(a.f * a.c * b.c))
 
 
 def induction(a: Truth, b: Truth) -> Truth:
@@ -103,56 +130,56 @@ def induction(a: Truth, b: Truth) -> Truth:
 
 def exemplification(a: Truth, b: Truth) -> Truth:
     """P-->M, M-->S |- S-->P."""
-    return _new(Truth, (1.0, w2c(a.f * b.f * a.c * b.c)))
+    return truth_of(1.0, w2c(a.f * b.f * a.c * b.c))
 
 
 def comparison(a: Truth, b: Truth) -> Truth:
     """M-->P, M-->S |- S<->P."""
     f0 = _or(a.f, b.f)
     f = 0.0 if f0 == 0.0 else a.f * b.f / f0
-    return _new(Truth, (f, w2c(f0 * a.c * b.c)))
+    return truth_of(f, w2c(f0 * a.c * b.c))
 
 
 def analogy(a: Truth, b: Truth) -> Truth:
     """M-->P, S<->M |- S-->P."""
     f = a.f * b.f
-    return _new(Truth, (f, a.c * b.c * b.f))
+    return truth_of(f, a.c * b.c * b.f)
 
 
 def resemblance(a: Truth, b: Truth) -> Truth:
     """M<->P, S<->M |- S<->P."""
     f = a.f * b.f
-    return _new(Truth, (f, a.c * b.c * _or(a.f, b.f)))
+    return truth_of(f, a.c * b.c * _or(a.f, b.f))
 
 
 def intersection(a: Truth, b: Truth) -> Truth:
     """Extensional intersection / conjunction of both premises."""
-    return _new(Truth, (a.f * b.f, a.c * b.c))
+    return truth_of(a.f * b.f, a.c * b.c)
 
 
 def union(a: Truth, b: Truth) -> Truth:
     """Union / disjunction of both premises."""
-    return _new(Truth, (_or(a.f, b.f), a.c * b.c))
+    return truth_of(_or(a.f, b.f), a.c * b.c)
 
 
 def difference(a: Truth, b: Truth) -> Truth:
     """What holds of the first and not of the second."""
-    return _new(Truth, (a.f * (1.0 - b.f), a.c * b.c))
+    return truth_of(a.f * (1.0 - b.f), a.c * b.c)
 
 
 def negation(a: Truth, _b: Truth | None = None) -> Truth:
     """(! A)."""
-    return _new(Truth, (1.0 - a.f, a.c))
+    return truth_of(1.0 - a.f, a.c)
 
 
 def conversion(a: Truth, _b: Truth | None = None) -> Truth:
     """S-->P |- P-->S."""
-    return _new(Truth, (1.0, w2c(a.f * a.c)))
+    return truth_of(1.0, w2c(a.f * a.c))
 
 
 def contraposition(a: Truth, _b: Truth | None = None) -> Truth:
     """(S ==> P) |- ((! P) ==> (! S))."""
-    return _new(Truth, (0.0, w2c((1.0 - a.f) * a.c)))
+    return truth_of(0.0, w2c((1.0 - a.f) * a.c))
 
 
 def structural_deduction(a: Truth, _b: Truth | None = None) -> Truth:
@@ -178,19 +205,19 @@ def structural_abduction(a: Truth, _b: Truth | None = None) -> Truth:
 def decompose_pnn(a: Truth, b: Truth) -> Truth:
     """S, (S && A) |- A and its relatives (positive, negative, negative)."""
     fn = a.f * (1.0 - b.f)
-    return _new(Truth, (1.0 - fn, fn * a.c * b.c))
+    return truth_of(1.0 - fn, fn * a.c * b.c)
 
 
 def decompose_npp(a: Truth, b: Truth) -> Truth:
     """S, (S || A) |- A and its relatives."""
     f = (1.0 - a.f) * b.f
-    return _new(Truth, (f, f * a.c * b.c))
+    return truth_of(f, f * a.c * b.c)
 
 
 def decompose_pnp(a: Truth, b: Truth) -> Truth:
     """S, (S ~ A) |- A and its relatives."""
     f = a.f * (1.0 - b.f)
-    return _new(Truth, (f, f * a.c * b.c))
+    return truth_of(f, f * a.c * b.c)
 
 
 def decompose_ppp(a: Truth, b: Truth) -> Truth:
@@ -201,29 +228,29 @@ def decompose_ppp(a: Truth, b: Truth) -> Truth:
 def decompose_nnn(a: Truth, b: Truth) -> Truth:
     """Both premises negative."""
     fn = (1.0 - a.f) * (1.0 - b.f)
-    return _new(Truth, (1.0 - fn, fn * a.c * b.c))
+    return truth_of(1.0 - fn, fn * a.c * b.c)
 
 
 def eternalize(a: Truth) -> Truth:
     """An event's evidence as a timeless belief."""
-    return _new(Truth, (a.f, w2c(a.c)))
+    return truth_of(a.f, w2c(a.c))
 
 
 #: ``PROJECTION_DECAY ** d`` for the distances that occur (the same floats, looked up)
 _DECAY_POWERS = [PROJECTION_DECAY**d for d in range(1024)]
 
 
-def projection(a: Truth, source_time: int, target_time: int) -> Truth:
+def projection(a: Truth, source_time: Cycle, target_time: Cycle) -> Truth:
     """Confidence decays by 0.8 per cycle of distance; eternal (-1) is unchanged."""
     if source_time == -1:
         return a
     d = abs(target_time - source_time)
-    return _new(Truth, (a.f, a.c * (_DECAY_POWERS[d] if d < 1024 else PROJECTION_DECAY**d)))
+    return truth_of(a.f, a.c * (_DECAY_POWERS[d] if d < 1024 else PROJECTION_DECAY**d))
 
 
 def anonymous_analogy(a: Truth, b: Truth) -> Truth:
     """Analogy with the second premise turned into an anonymous similarity."""
-    return analogy(a, _new(Truth, (1.0, w2c(b.f * b.c))))
+    return analogy(a, truth_of(1.0, w2c(b.f * b.c)))
 
 
 def goal_deduction(goal: Truth, belief: Truth) -> Truth:
@@ -235,9 +262,9 @@ def goal_deduction(goal: Truth, belief: Truth) -> Truth:
 
 def frequency_greater(a: Truth, b: Truth) -> Truth:
     """Comparative relation: more of the property."""
-    return _new(Truth, (1.0, a.c * b.c)) if a.f > b.f else _new(Truth, (0.0, 0.0))
+    return truth_of(1.0, a.c * b.c) if a.f > b.f else truth_of(0.0, 0.0)
 
 
 def frequency_equal(a: Truth, b: Truth) -> Truth:
     """Comparative relation: as much of the property."""
-    return _new(Truth, (1.0, a.c * b.c)) if a.f == b.f else _new(Truth, (0.0, 0.0))
+    return truth_of(1.0, a.c * b.c) if a.f == b.f else truth_of(0.0, 0.0)

@@ -1,0 +1,28 @@
+# For the compiled engine: the C layout of events and implications defined in event.py.
+# event.py stays the only source of behaviour; see setup.py.
+
+from robocog.nars.terms cimport Term
+from robocog.nars.truth cimport Truth, projection, revision
+from robocog.nars.stamp cimport merge
+
+cdef class Event:
+    cdef public Term term
+    cdef public object type
+    cdef public Truth truth
+    cdef public tuple stamp
+    cdef public long occurrence_time
+    cdef public long creation_time
+    cdef public double dt
+    cdef public bint processed
+    cdef public bint is_input
+
+    cpdef double confidence_at(self, long target_time)
+    cpdef Event projected(self, long target_time)
+
+cdef class Implication:
+    cdef public Term term
+    cdef public Truth truth
+    cdef public tuple stamp
+    cdef public double dt
+    cdef public long creation_time
+    cdef public Term source

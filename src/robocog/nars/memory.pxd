@@ -1,0 +1,25 @@
+# For the compiled engine: the C layout of a concept defined in memory.py.
+# memory.py stays the only source of behaviour; see setup.py.
+
+from robocog.nars.terms cimport Term
+from robocog.nars.event cimport Event
+from robocog.nars.table cimport Table
+
+cdef class Concept:
+    cdef public long id
+    cdef public Term term
+    cdef public long use_count
+    cdef public long last_used
+    cdef public Event belief
+    cdef public Event belief_spike
+    cdef public Event predicted_belief
+    cdef public Event goal_spike
+    cdef public list precondition_beliefs
+    cdef public object implication_links
+    cdef public double priority
+    cdef public long priority_time
+    cdef public long selected_time
+    cdef public long process_id
+    cdef public bint timed
+    cdef public object filed
+    cdef public list book
