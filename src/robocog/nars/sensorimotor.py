@@ -465,7 +465,7 @@ class SensorimotorMixin:
             return
         mem = self.memory  # type: ignore[attr-defined]
         op_truth = Truth(1.0, 0.9)
-        threshold = cfg.anticipation_threshold
+        threshold: float = cfg.anticipation_threshold
         # A precondition whose projected truth is this weak cannot lift a prediction
         # above the threshold (expectation - 1/2 <= c / 2) nor to confidence 0.05, so
         # only an exactly-zero predicted frequency still counts; this skips the many
@@ -495,6 +495,10 @@ class SensorimotorMixin:
         it: Truth
         table: Table
         spike: Event
+        pre_f: float
+        pre_c: float
+        by_offset: dict[int, tuple[Truth, float]]
+        failure: tuple[Truth, float]
         for post in list(targets):
             if mem.find(post.term) is not post:
                 targets.pop(post, None)
