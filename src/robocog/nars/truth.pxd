@@ -6,6 +6,9 @@ cdef class Truth:
     cdef readonly double f
     cdef readonly double c
 
+cdef double _K, _MAX_C, _DECAY
+cdef list _DECAY_POWERS
+
 cpdef Truth truth_of(double f, double c)
 cpdef double w2c(double w)
 cpdef double c2w(double c)

@@ -12,6 +12,11 @@ from collections.abc import Iterator
 HORIZON = 1.0
 MAX_CONFIDENCE = 0.99
 PROJECTION_DECAY = 0.8
+#: the constants as the functions below read them: compiled, these are C doubles
+#: (``truth.pxd``), while the public names above stay readable from Python
+_K = HORIZON
+_MAX_C = MAX_CONFIDENCE
+_DECAY = PROJECTION_DECAY
 
 #: a time, counted in reasoning cycles (the compiled engine declares it a C long)
 Cycle = int
@@ -66,12 +71,12 @@ STRUCTURAL = Truth(1.0, 0.9)
 
 def w2c(w: float) -> float:
     """Confidence of evidence weight ``w``."""
-    return w / (w + HORIZON)
+    return w / (w + _K)
 
 
 def c2w(c: float) -> float:
     """Evidence weight of confidence ``c``."""
-    return HORIZON * c / (1.0 - c)
+    return _K * c / (1.0 - c)
 
 
 def _or(a: float, b: float) -> float:
@@ -107,8 +112,8 @@ def pooled(a: Truth, b: Truth, w1: float, w2: float) -> Truth:
         c = a.c
     if b.c > c:
         c = b.c
-    if not c < MAX_CONFIDENCE:
-        c = MAX_CONFIDENCE
+    if not c < _MAX_C:
+        c = _MAX_C
     return truth_of(f, c)
 
 
@@ -245,7 +250,7 @@ def projection(a: Truth, source_time: Cycle, target_time: Cycle) -> Truth:
     if source_time == -1:
         return a
     d = abs(target_time - source_time)
-    return truth_of(a.f, a.c * (_DECAY_POWERS[d] if d < 1024 else PROJECTION_DECAY**d))
+    return truth_of(a.f, a.c * (_DECAY_POWERS[d] if d < 1024 else _DECAY**d))
 
 
 def anonymous_analogy(a: Truth, b: Truth) -> Truth:
