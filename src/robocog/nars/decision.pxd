@@ -2,10 +2,11 @@
 # so that its annotated variables are read as structs and its calls made in C.
 # decision.py stays the only source of behaviour; see setup.py.
 
-from robocog.nars.terms cimport Term
+from robocog.nars.terms cimport Term, compound
 from robocog.nars.truth cimport Truth, expectation
 from robocog.nars cimport truth as tf
 from robocog.nars.stamp cimport merge
 from robocog.nars.event cimport Event, Implication
 from robocog.nars.memory cimport Concept
 from robocog.nars.table cimport Table
+from robocog.nars.unify cimport apply, unify

@@ -2,6 +2,7 @@
 # so that its annotated variables are read as structs and its calls made in C.
 # inference.py stays the only source of behaviour; see setup.py.
 
-from robocog.nars.terms cimport Term
+from robocog.nars.terms cimport Term, compound
 from robocog.nars.truth cimport Truth
 from robocog.nars cimport truth as tf
+from robocog.nars.unify cimport apply, unify

@@ -9,3 +9,4 @@ from robocog.nars.stamp cimport merge, overlap
 from robocog.nars.event cimport Event, Implication
 from robocog.nars.memory cimport Concept
 from robocog.nars.table cimport Table
+from robocog.nars.unify cimport unify

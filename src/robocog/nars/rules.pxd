@@ -2,6 +2,6 @@
 # so that its annotated variables are read as structs and its calls made in C.
 # rules.py stays the only source of behaviour; see setup.py.
 
-from robocog.nars.terms cimport Term
+from robocog.nars.terms cimport Term, compound, substitute
 from robocog.nars.truth cimport Truth
 from robocog.nars cimport truth as tf

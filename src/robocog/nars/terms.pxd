@@ -19,3 +19,6 @@ cdef class Term:
     cdef public long n_temp
     cdef public object _names
     cdef public object hol
+
+cpdef Term compound(str op, tuple args)
+cpdef Term substitute(Term t, dict mapping)

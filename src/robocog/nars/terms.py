@@ -196,6 +196,11 @@ _OP_KINDS: dict[str, int] = {
     **dict.fromkeys(_IMAGE_OPS, F_IMAGE),
 }
 
+#: a compound's components, and variable bindings (aliases, so that the compiled engine
+#: can declare them plain tuples and dicts in ``terms.pxd``)
+Components = tuple[Term, ...]
+Bindings = dict[Term, Term]
+
 _TABLE: dict[tuple[object, ...], Term] = {}
 #: the table is swept of terms nobody else holds when it grows past this size
 _SWEEP_AT = [200_000]
@@ -271,7 +276,7 @@ def atom(name: str) -> Term:
     return t
 
 
-def compound(op: str, args: tuple[Term, ...]) -> Term:
+def compound(op: str, args: Components) -> Term:
     """The interned compound with connector ``op`` over ``args``."""
     key = (op, args)
     t = _TABLE.get(key)
@@ -416,7 +421,7 @@ def _render(t: Term) -> str:
     return "(" + f" {op} ".join(str(a) for a in args) + ")"
 
 
-def substitute(t: Term, mapping: dict[Term, Term]) -> Term:
+def substitute(t: Term, mapping: Bindings) -> Term:
     """``t`` with every subterm found in ``mapping`` replaced (no recursion into replacements)."""
     r = mapping.get(t)
     if r is not None:

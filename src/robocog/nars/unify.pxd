@@ -1,5 +1,8 @@
-# For the compiled engine: the extension types and C functions that unify.py names,
-# so that its annotated variables are read as structs and its calls made in C.
+# For the compiled engine: the C signatures of the unification functions in unify.py.
 # unify.py stays the only source of behaviour; see setup.py.
 
-from robocog.nars.terms cimport Term
+from robocog.nars.terms cimport Term, substitute
+
+cpdef dict unify(Term general, Term specific, bint query_only=*)
+cpdef bint _unify(Term g, Term s, dict b, bint query_only)
+cpdef Term apply(Term term, dict bindings)

@@ -6,18 +6,18 @@ names, as in ONA. A query variable may not stand for a variable.
 
 from __future__ import annotations
 
-from .terms import Term, substitute
+from .terms import Bindings, Term, substitute
 
 
-def unify(general: Term, specific: Term, query_only: bool = False) -> dict[Term, Term] | None:
+def unify(general: Term, specific: Term, query_only: bool = False) -> Bindings | None:
     """Bindings making ``general`` equal to ``specific``, or None."""
     if not general.has_var:
         return {} if general is specific else None
-    b: dict[Term, Term] = {}
+    b: Bindings = {}
     return b if _unify(general, specific, b, query_only) else None
 
 
-def _unify(g: Term, s: Term, b: dict[Term, Term], query_only: bool) -> bool:
+def _unify(g: Term, s: Term, b: Bindings, query_only: bool) -> bool:
     if g is s and not g.has_var:
         return True
     if g.op is None:
@@ -44,7 +44,7 @@ def _unify(g: Term, s: Term, b: dict[Term, Term], query_only: bool) -> bool:
     return True
 
 
-def apply(term: Term, bindings: dict[Term, Term]) -> Term:
+def apply(term: Term, bindings: Bindings) -> Term:
     """``term`` with its bound variables replaced."""
     if not bindings or not term.has_var:
         return term
