@@ -1,8 +1,16 @@
 # For the compiled engine: the extension types and C functions that inference.py names,
-# so that its annotated variables are read as structs and its calls made in C.
+# so that its annotated variables are read as structs and its calls made in C, and the
+# layout of its own Derivation.
 # inference.py stays the only source of behaviour; see setup.py.
 
 from robocog.nars.terms cimport Term, compound
 from robocog.nars.truth cimport Truth
 from robocog.nars cimport truth as tf
 from robocog.nars.unify cimport apply, unify
+
+cdef class Derivation:
+    cdef public object nar
+    cdef public long occurrence
+    cdef public tuple stamp
+    cdef public double parent_priority
+    cdef public double concept_priority

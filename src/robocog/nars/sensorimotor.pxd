@@ -1,5 +1,6 @@
 # For the compiled engine: the extension types and C functions that sensorimotor.py names,
-# so that its annotated variables are read as structs and its calls made in C.
+# so that its annotated variables are read as structs and its calls made in C, and the
+# layout of its own _Pattern.
 # sensorimotor.py stays the only source of behaviour; see setup.py.
 
 from robocog.nars.terms cimport Term, compound
@@ -10,3 +11,12 @@ from robocog.nars.event cimport Event, Implication
 from robocog.nars.memory cimport Concept
 from robocog.nars.table cimport Table
 from robocog.nars.unify cimport apply, unify
+
+cdef class _Pattern:
+    cdef public Term source
+    cdef public list keys
+    cdef public object key
+    cdef public long uses
+    cdef public dict matches
+
+    cpdef dict match(self, Term term)

@@ -232,13 +232,22 @@ class SensorimotorMixin:
         tcon: Concept
         spike: Event
         old: Event | None
-        fresh = [
-            c
-            for c in self.time_index
-            if (b := c.belief_spike) is not None
-            and now - b.creation_time <= tolerance
-            and not c.term.has_var
-        ]
+        link: Term
+        a: Term
+        b: Term
+        cond: Term
+        concl: Term
+        # (a loop rather than a comprehension, so that the compiled engine reads ``c``
+        # and ``last`` as declared; and the age test against a float, a C double when
+        # compiled, exact for any cycle count below 2**53, so the index's 512 entries
+        # are tested without making an integer each)
+        oldest: float = now - tolerance
+        last: Event | None
+        fresh: list[Concept] = []
+        for c in self.time_index:
+            last = c.belief_spike
+            if last is not None and last.creation_time >= oldest and not c.term.has_var:
+                fresh.append(c)
         for c in fresh:
             spike = c.belief_spike
             links = list(self.links_by_subject.get(c.term, ()))
@@ -325,7 +334,11 @@ class SensorimotorMixin:
         window = cfg.precondition_consequence_distance
         occ = e.occurrence_time
         e_is_op = e.term.is_op
-        # (declared for the compiled engine: concepts and events read as structs)
+        # (declared for the compiled engine: concepts and events read as structs, and
+        # the time and its windows as floats, C doubles when compiled, exact below
+        # 2**53 cycles: the first test of every index entry makes no integer)
+        at: float = occ
+        span: float = window
         opc: Concept
         pc: Concept
         c: Concept
@@ -352,7 +365,7 @@ class SensorimotorMixin:
                     pre = pc.belief_spike
                     if (
                         pre is None
-                        or abs(pre.occurrence_time - occ) >= window
+                        or abs(pre.occurrence_time - at) >= span
                         or pc.term.is_op
                         or pre.creation_time >= now
                         or pre.occurrence_time >= op_ev.occurrence_time
@@ -365,11 +378,12 @@ class SensorimotorMixin:
                     self._induce(pre, op_ev, e, priority)
         # temporal: <c =/> e> for recent non-op events, and the sequence (c &/ e)
         tdiff = cfg.max_sequence_timediff
+        reach: float = tdiff
         for c in () if e_is_op else list(self.time_index):  # an operation pairs with none
             b = c.belief_spike
             if (
                 b is None
-                or abs(b.occurrence_time - occ) > tdiff  # most of the index: first
+                or abs(b.occurrence_time - at) > reach  # most of the index: first
                 or b.creation_time > now
                 or abs(c.selected_time - occ) > tdiff
                 or b.occurrence_time > occ
@@ -649,7 +663,7 @@ class SensorimotorMixin:
         if source.has_var:
             if groups is None:
                 groups = self._spike_groups()
-            pattern = self._patterns.get(source)
+            pattern: _Pattern | None = self._patterns.get(source)
             if pattern is None:
                 pattern = _remember(self._patterns, source, _Pattern(source))
             # Every instance is in each of the pattern's groups, all ordered alike (by
