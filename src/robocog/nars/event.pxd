@@ -5,7 +5,10 @@ from robocog.nars.terms cimport Term
 from robocog.nars.truth cimport Truth, projection, revision
 from robocog.nars.stamp cimport merge
 
-cdef class Event:
+cdef class _Record:
+    pass
+
+cdef class Event(_Record):
     cdef public Term term
     cdef public object type
     cdef public Truth truth
@@ -19,7 +22,7 @@ cdef class Event:
     cpdef double confidence_at(self, long target_time)
     cpdef Event projected(self, long target_time)
 
-cdef class Implication:
+cdef class Implication(_Record):
     cdef public Term term
     cdef public Truth truth
     cdef public tuple stamp

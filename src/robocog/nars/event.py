@@ -11,12 +11,37 @@ BELIEF = "."
 GOAL = "!"
 
 
-class Event:
+class _Record:
+    """Equality, pickling and printing by the fields named in ``__slots__``, for
+    :class:`Event` and :class:`Implication` (written out rather than dataclasses so
+    that, compiled, they are extension types: see ``event.pxd``)."""
+
+    __slots__ = ()
+
+    def _fields(self) -> tuple[object, ...]:
+        return tuple([getattr(self, name) for name in type(self).__slots__])
+
+    def __eq__(self, other: object) -> bool:
+        if other.__class__ is not self.__class__:
+            return NotImplemented
+        return self._fields() == other._fields()  # type: ignore[attr-defined]
+
+    __hash__ = None  # type: ignore[assignment]  # mutable, like the dataclasses they were
+
+    def __reduce__(self) -> tuple[type, tuple[object, ...]]:
+        # by the fields, so that the compiled and the pure engine read each other's saves
+        return (type(self), self._fields())
+
+    def __repr__(self) -> str:
+        pairs = zip(type(self).__slots__, self._fields(), strict=True)
+        return f"{type(self).__name__}(" + ", ".join(f"{n}={v!r}" for n, v in pairs) + ")"
+
+
+class Event(_Record):
     """A belief or goal with its truth, evidence and time.
 
     ``occurrence_time`` is -1 for eternal sentences; ``dt`` is the time offset of a
-    temporal implication; ``creation_time`` is when the reasoner made it. Written out
-    rather than a dataclass so that, compiled, it is an extension type (``event.pxd``).
+    temporal implication; ``creation_time`` is when the reasoner made it.
     """
 
     __slots__ = (
@@ -52,32 +77,6 @@ class Event:
         self.dt = dt
         self.processed = processed
         self.is_input = is_input
-
-    def _fields(self) -> tuple[object, ...]:
-        return (
-            self.term,
-            self.type,
-            self.truth,
-            self.stamp,
-            self.occurrence_time,
-            self.creation_time,
-            self.dt,
-            self.processed,
-            self.is_input,
-        )
-
-    def __eq__(self, other: object) -> bool:
-        if other.__class__ is not self.__class__:
-            return NotImplemented
-        return self._fields() == other._fields()  # type: ignore[attr-defined]
-
-    __hash__ = None  # type: ignore[assignment]  # mutable, like the dataclass it was
-
-    def __reduce__(self) -> tuple[type, tuple[object, ...]]:
-        return (Event, self._fields())
-
-    def __repr__(self) -> str:
-        return _repr(self, Event.__slots__)
 
     def same(self, other: Event) -> bool:
         """ONA's Event_Equal: term, type, truth, stamp and time agree."""
@@ -141,7 +140,7 @@ def revise_events(a: Event, b: Event, stamp_size: int) -> Event:
     )
 
 
-class Implication:
+class Implication(_Record):
     """A temporal or declarative implication stored in its predicate's table."""
 
     __slots__ = ("term", "truth", "stamp", "dt", "creation_time", "source")
@@ -161,25 +160,3 @@ class Implication:
         self.dt = dt
         self.creation_time = creation_time
         self.source = source
-
-    def _fields(self) -> tuple[object, ...]:
-        return (self.term, self.truth, self.stamp, self.dt, self.creation_time, self.source)
-
-    def __eq__(self, other: object) -> bool:
-        if other.__class__ is not self.__class__:
-            return NotImplemented
-        return self._fields() == other._fields()  # type: ignore[attr-defined]
-
-    __hash__ = None  # type: ignore[assignment]
-
-    def __reduce__(self) -> tuple[type, tuple[object, ...]]:
-        return (Implication, self._fields())
-
-    def __repr__(self) -> str:
-        return _repr(self, Implication.__slots__)
-
-
-def _repr(item: Event | Implication, names: tuple[str, ...]) -> str:
-    """``Name(field=value, ...)``, as the dataclasses these were printed."""
-    pairs = zip(names, item._fields(), strict=True)
-    return f"{type(item).__name__}(" + ", ".join(f"{n}={v!r}" for n, v in pairs) + ")"
