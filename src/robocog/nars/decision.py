@@ -15,7 +15,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from . import truth as tf
-from .event import BELIEF, GOAL, Event, Implication
+from .event import BELIEF, GOAL, Event, Implication, revised_or_chosen
 from .memory import EventQueue
 from .sensorimotor import executable, split_precondition
 from .stamp import fmt, merge
@@ -350,7 +350,7 @@ class DecisionMixin:
                     spike.stamp, merge(gs.stamp, imp.stamp, cfg.stamp_size), cfg.stamp_size
                 )
                 ev = Event(pre, GOAL, local, stamp, now, now)
-                acc, _ = self._revision_and_choice(acc, ev)  # type: ignore[attr-defined]
+                acc, _ = revised_or_chosen(acc, ev, cfg.stamp_size)
         return acc is None or expectation(acc.truth) >= 0.5
 
     def _subgoals(self, g: Event, c: Concept, priority: float, layer: int) -> None:
@@ -365,7 +365,7 @@ class DecisionMixin:
             ge = g
             if bind:
                 ge = Event(apply(g.term, bind), GOAL, g.truth, g.stamp, g.occurrence_time, now)
-            gs, _ = self._revision_and_choice(post.goal_spike, ge)  # type: ignore[attr-defined]
+            gs, _ = revised_or_chosen(post.goal_spike, ge, cfg.stamp_size)
             post.goal_spike = gs
             tables = post.precondition_beliefs
             if tables is None:

@@ -19,6 +19,7 @@ cdef class Event(_Record):
     cdef public bint processed
     cdef public bint is_input
 
+    cpdef Event copy(self)
     cpdef double confidence_at(self, long target_time)
     cpdef Event projected(self, long target_time)
 
@@ -29,3 +30,5 @@ cdef class Implication(_Record):
     cdef public double dt
     cdef public long creation_time
     cdef public Term source
+
+cpdef tuple revised_or_chosen(Event old, Event new, long stamp_size, bint fresh=*)

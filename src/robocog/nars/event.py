@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from .stamp import Stamp, fmt, merge
+from .stamp import Size, Stamp, fmt, merge, overlap
 from .terms import Term
 from .truth import Cycle, Truth, projection, revision
 
@@ -78,6 +78,20 @@ class Event(_Record):
         self.processed = processed
         self.is_input = is_input
 
+    def copy(self) -> Event:
+        """A copy of this event, to keep where the original may change."""
+        return Event(
+            self.term,
+            self.type,
+            self.truth,
+            self.stamp,
+            self.occurrence_time,
+            self.creation_time,
+            self.dt,
+            self.processed,
+            self.is_input,
+        )
+
     def same(self, other: Event) -> bool:
         """ONA's Event_Equal: term, type, truth, stamp and time agree."""
         return (
@@ -138,6 +152,29 @@ def revise_events(a: Event, b: Event, stamp_size: int) -> Event:
         max(a.creation_time, b.creation_time),
         a.dt,
     )
+
+
+def revised_or_chosen(
+    old: Event | None, new: Event, stamp_size: Size, fresh: bool = False
+) -> tuple[Event, bool]:
+    """ONA's revision-and-choice for the event slot of a concept holding ``old``: the
+    revised event and True, or the stronger of the two and False. ``new`` is copied
+    before it is kept unless the caller made it for this call (``fresh``)."""
+    if old is None:
+        return (new if fresh else new.copy()), False
+    later = max(old.occurrence_time, new.occurrence_time)
+    if (
+        overlap(new.stamp, old.stamp)
+        or (new.term.op in ("&&", "&/") and new.term.has_dep_var)
+        or (old.occurrence_time != ETERNAL and old.occurrence_time != new.occurrence_time)
+        or old.term is not new.term
+    ):
+        # a choice needs only the projected confidences (anticipation makes thousands
+        # of these per input), not the projected events
+        if new.confidence_at(later) > old.confidence_at(later):
+            return (new if fresh else new.copy()), False
+        return old, False
+    return revise_events(old.projected(later), new.projected(later), stamp_size), True
 
 
 class Implication(_Record):

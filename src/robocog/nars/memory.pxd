@@ -23,3 +23,6 @@ cdef class Concept:
     cdef public bint timed
     cdef public object filed
     cdef public list book
+
+    cpdef use(self, long now, bint eternal_input, long boost)
+    cpdef double priority_at(self, long now, double durability)

@@ -15,6 +15,10 @@ from operator import itemgetter
 from .event import ETERNAL, Event
 from .table import Table
 from .terms import Term
+from .truth import Cycle
+
+#: a number of uses (an alias, so that the compiled engine can declare it a C long)
+Count = int
 
 
 class Concept:
@@ -78,7 +82,7 @@ class Concept:
         for k, v in state[1].items():
             setattr(self, k, v)
 
-    def use(self, now: int, eternal_input: bool, boost: int) -> None:
+    def use(self, now: Cycle, eternal_input: bool, boost: Count) -> None:
         """Record a use (input eternal beliefs count as very many uses)."""
         self.use_count += boost if eternal_input else 1
         self.last_used = now
@@ -86,6 +90,14 @@ class Concept:
         if book is not None:  # changed since its memory filed it: to be filed again
             self.book = None
             book.append(self)
+
+    def priority_at(self, now: Cycle, durability: float) -> float:
+        """The priority as of ``now``: decayed by ``durability`` per cycle since it was
+        set, which is applied only when it is read."""
+        dt = now - self.priority_time
+        if dt <= 0:
+            return self.priority
+        return self.priority * durability**dt
 
     def tables(self, operations: int, size: int) -> list[Table]:
         """The precondition tables, made on first use."""

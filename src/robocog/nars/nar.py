@@ -19,7 +19,7 @@ from pathlib import Path
 from . import truth as tf
 from .config import Config
 from .decision import DecisionMixin
-from .event import BELIEF, ETERNAL, GOAL, Event, Implication, revise_events
+from .event import BELIEF, ETERNAL, GOAL, Event, Implication, revised_or_chosen
 from .inference import Derivation, apply_double, apply_single, special
 from .memory import Concept, Memory
 from .narsese import NarseseError, Sentence, parse_sentence
@@ -299,10 +299,7 @@ class NAR(SensorimotorMixin, DecisionMixin):
     # ------------------------------------------------------------- priorities
     def _priority(self, c: Concept) -> float:
         """Concept priority with the per-cycle decay applied lazily."""
-        dt = self.time - c.priority_time
-        if dt <= 0:
-            return c.priority
-        return c.priority * self.config.concept_durability**dt
+        return c.priority_at(self.time, self.config.concept_durability)
 
     def _raise_priority(self, c: Concept, p: float) -> None:
         """Lift the (decayed) priority of ``c`` to at least ``p``, as of now."""
@@ -367,7 +364,7 @@ class NAR(SensorimotorMixin, DecisionMixin):
                 self._print("Input: " + e.line(priority))
             self._add_implication(e.term, e.truth, e.stamp, e.dt, is_input, priority)
             return
-        c = self.memory.conceptualize(e.term, now)
+        c: Concept = self.memory.conceptualize(e.term, now)
         c.use(now, eternal_input, self.config.eternal_input_usage_boost)
         self._raise_priority(c, priority)
         if e.occurrence_time != ETERNAL:
@@ -376,17 +373,18 @@ class NAR(SensorimotorMixin, DecisionMixin):
                 # serve semantic inference and answers, while temporal induction and
                 # anticipation see what they saw when compositions needed a concept
                 self._note_event(c)
+            stamp_size = self.config.stamp_size
             if e.occurrence_time <= now:
-                c.belief_spike = self._revision_and_choice(c.belief_spike, e)[0]
+                c.belief_spike = revised_or_chosen(c.belief_spike, e, stamp_size)[0]
             else:
-                c.predicted_belief = self._revision_and_choice(c.predicted_belief, e)[0]
+                c.predicted_belief = revised_or_chosen(c.predicted_belief, e, stamp_size)[0]
             if not self.config.eternalize_events:
                 if is_input:
                     self._print("Input: " + e.line(priority))
                 return
             # ONA 0.9.2 also keeps the event's evidence as a (weaker) eternal belief
             eternal = Event(e.term, BELIEF, tf.eternalize(e.truth), e.stamp, ETERNAL, now, e.dt)
-            belief, revised = self._revision_and_choice(c.belief, eternal)
+            belief, revised = revised_or_chosen(c.belief, eternal, stamp_size)
             belief.creation_time = now
             c.belief = belief
             if is_input:
@@ -399,7 +397,7 @@ class NAR(SensorimotorMixin, DecisionMixin):
             # ever changes, and it is ``now`` already
             belief, revised = e, False
         else:
-            belief, revised = self._revision_and_choice(c.belief, e)
+            belief, revised = revised_or_chosen(c.belief, e, self.config.stamp_size)
         belief.creation_time = now
         c.belief = belief
         if e.term.op in ("==>", "<=>"):
@@ -412,28 +410,6 @@ class NAR(SensorimotorMixin, DecisionMixin):
             if self._shows(priority):
                 self._print("Revised: " + belief.line(priority))
             self._add_event(belief, priority, revised=True)
-
-    def _revision_and_choice(
-        self, old: Event | None, new: Event, fresh: bool = False
-    ) -> tuple[Event, bool]:
-        """The revised event and True, or the stronger of the two and False; ``new`` is
-        copied before it is kept unless the caller made it for this call (``fresh``)."""
-        if old is None:
-            return (new if fresh else _copy(new)), False
-        later = max(old.occurrence_time, new.occurrence_time)
-        if (
-            overlap(new.stamp, old.stamp)
-            or (new.term.op in ("&&", "&/") and new.term.has_dep_var)
-            or (old.occurrence_time != ETERNAL and old.occurrence_time != new.occurrence_time)
-            or old.term is not new.term
-        ):
-            # a choice needs only the projected confidences (anticipation makes
-            # thousands of these per input), not the projected events
-            if new.confidence_at(later) > old.confidence_at(later):
-                return (new if fresh else _copy(new)), False
-            return old, False
-        r = revise_events(old.projected(later), new.projected(later), self.config.stamp_size)
-        return r, True
 
     def _derived(
         self, term: Term, t: Truth, stamp: tuple[int, ...], occurrence: int, priority: float
@@ -514,8 +490,10 @@ class NAR(SensorimotorMixin, DecisionMixin):
         threshold = self.concept_threshold
         chosen: list[tuple[Concept, float]] = []
         limit = cfg.belief_concept_match_target
+        durability = cfg.concept_durability
+        c: Concept
         for c in self.memory.related(e.term):
-            cp = self._priority(c)
+            cp = c.priority_at(now, durability)
             if cp < threshold:
                 continue
             chosen.append((c, cp))
@@ -648,7 +626,7 @@ class NAR(SensorimotorMixin, DecisionMixin):
             q = self.memory.belief_events
             for c in strongest:
                 if not q.contains(c.belief):  # type: ignore[arg-type]
-                    q.push(_copy(c.belief), 1.0)  # type: ignore[arg-type]
+                    q.push(c.belief.copy(), 1.0)  # type: ignore[arg-type]
 
     def _bridge(self, question: Term) -> None:
         """Question-guided premise choice: pair beliefs about the question's subject
@@ -827,20 +805,6 @@ def _needs_existing_concept(t: Term, occurrence: int) -> bool:
 
 def _names(t: Term) -> list[Term]:
     return [a for a in dict.fromkeys(t.atoms()) if not a.is_var]
-
-
-def _copy(e: Event) -> Event:
-    return Event(
-        e.term,
-        e.type,
-        e.truth,
-        e.stamp,
-        e.occurrence_time,
-        e.creation_time,
-        e.dt,
-        e.processed,
-        e.is_input,
-    )
 
 
 __all__ = ["NAR", "NarseseError", "atom"]

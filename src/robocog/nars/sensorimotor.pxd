@@ -7,7 +7,7 @@ from robocog.nars.terms cimport Term, compound
 from robocog.nars.truth cimport Truth, expectation
 from robocog.nars cimport truth as tf
 from robocog.nars.stamp cimport merge, overlap
-from robocog.nars.event cimport Event, Implication
+from robocog.nars.event cimport Event, Implication, revised_or_chosen
 from robocog.nars.memory cimport Concept
 from robocog.nars.table cimport Table
 from robocog.nars.unify cimport apply, unify

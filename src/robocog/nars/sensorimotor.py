@@ -14,7 +14,7 @@ from collections import deque
 from typing import TYPE_CHECKING, TypeVar
 
 from . import truth as tf
-from .event import BELIEF, ETERNAL, Event, Implication
+from .event import BELIEF, ETERNAL, Event, Implication, revised_or_chosen
 from .rules import hol_component_invalid, introduce_implication_variables
 from .stamp import fmt, merge, overlap
 from .terms import SEQUENCE, TEMPORAL_IMPLICATION, Term, compound
@@ -159,9 +159,9 @@ class SensorimotorMixin:
         mem = self.memory  # type: ignore[attr-defined]
         cfg = self.config  # type: ignore[attr-defined]
         # the source first: making the target last means nothing evicts it before it is indexed
-        source = mem.conceptualize(pre, now)
+        source: Concept = mem.conceptualize(pre, now)
         source.use(now, is_input, cfg.eternal_input_usage_boost)
-        target = mem.conceptualize(predicate, now)
+        target: Concept = mem.conceptualize(predicate, now)
         target.use(now, is_input, cfg.eternal_input_usage_boost)
         imp = Implication(term, t, stamp, dt, now if creation_time is None else creation_time, pre)
         table = target.tables(cfg.operations_max, cfg.table_size)[opi]
@@ -613,12 +613,12 @@ class SensorimotorMixin:
                 pred = Event(outcome, BELIEF, tf.truth_of(pf, pc), stamp, occ, now)
                 if imp.dt > 0.0:
                     old = oc.predicted_belief
-                    oc.predicted_belief, _ = self._revision_and_choice(old, pred, True)  # type: ignore[attr-defined]
+                    oc.predicted_belief, _ = revised_or_chosen(old, pred, stamp_size, True)
                     if showing:
                         self._show_prediction(old, oc.predicted_belief)
                 elif oc.belief_spike is None or occ > oc.belief_spike.occurrence_time:
                     old = oc.belief_spike
-                    oc.belief_spike, _ = self._revision_and_choice(old, pred, True)  # type: ignore[attr-defined]
+                    oc.belief_spike, _ = revised_or_chosen(old, pred, stamp_size, True)
                     if showing:
                         self._show_prediction(old, oc.belief_spike)
                     # only this term's entry changes, and the entries of preconditions
