@@ -3,7 +3,7 @@
 
 from robocog.nars.terms cimport Term
 from robocog.nars.truth cimport Truth, projection, revision
-from robocog.nars.stamp cimport merge
+from robocog.nars.stamp cimport merge, overlap
 
 cdef class _Record:
     pass
