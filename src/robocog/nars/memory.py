@@ -78,7 +78,6 @@ class Concept:
         return None, state
 
     def __setstate__(self, state: tuple[object, dict[str, object]]) -> None:
-        self.filed = self.book = None  # absent from older saves
         for k, v in state[1].items():
             setattr(self, k, v)
 
@@ -137,11 +136,6 @@ class EventQueue:
         #: ``min(prio)`` while the queue is unchanged, else None: a full queue is asked
         #: for its weakest item by every derived event, and changes only now and then
         self._low: float | None = None
-
-    def __setstate__(self, state: tuple[object, dict[str, object]]) -> None:
-        for k, v in state[1].items():
-            setattr(self, k, v)
-        self._low = None  # not kept by older saves
 
     def lowest(self) -> float:
         """The weakest priority queued (the queue must not be empty)."""

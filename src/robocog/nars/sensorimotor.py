@@ -11,6 +11,7 @@ anticipation scans the whole memory.
 from __future__ import annotations
 
 from collections import deque
+from collections.abc import Sequence
 from typing import TYPE_CHECKING, TypeVar
 
 from . import truth as tf
@@ -186,7 +187,7 @@ class SensorimotorMixin:
             except ValueError:
                 pass  # it fell off the end of the full index
             else:
-                if self._groups is not None and not c.term.has_var:
+                if self._groups is not None:
                     _group_remove(self._groups, c, self._keys_of(c.term))
         tables = c.precondition_beliefs
         if tables is not None:
@@ -303,15 +304,18 @@ class SensorimotorMixin:
                 pass  # it fell off the end of the full index
         if not present and groups is not None and len(idx) == idx.maxlen:
             gone = idx[-1]  # about to fall off the full index
-            if not gone.term.has_var:
-                _group_remove(groups, gone, self._keys_of(gone.term))
+            _group_remove(groups, gone, self._keys_of(gone.term))
         c.timed = True
         idx.appendleft(c)
-        if groups is not None and not c.term.has_var:
+        if groups is not None:
             _group_add(groups, c, self._keys_of(c.term))
 
-    def _keys_of(self, term: Term) -> list[object]:
-        """``_group_keys(term)``, remembered (the same concepts come and go)."""
+    def _keys_of(self, term: Term) -> Sequence[object]:
+        """The groups a concept of ``term`` belongs in: ``_group_keys(term)``,
+        remembered (the same concepts come and go), and none for a term with variables,
+        which stays out of the groups."""
+        if term.has_var:
+            return ()
         keys = self._term_keys.get(term)
         if keys is None:
             keys = _remember(self._term_keys, term, _group_keys(term))
@@ -533,7 +537,8 @@ class SensorimotorMixin:
                         if groups is None:
                             groups = self._spike_groups()
                         spike = self._source_spike(source, groups)
-                        bind = None if spike is None else self._match(source, spike.term)
+                        # (_source_spike has made the precondition's pattern)
+                        bind = None if spike is None else self._patterns[source].match(spike.term)
                     else:  # what _source_spike and unify give for a ground precondition
                         sc = mem.find(source)
                         spike = sc.belief_spike if sc is not None else None
@@ -608,8 +613,8 @@ class SensorimotorMixin:
                 stamp = merged.get(mkey)
                 if stamp is None:
                     stamp = _remember(merged, mkey, merge(spike.stamp, imp.stamp, stamp_size))
-                # (deduction; the tuple is made directly: Truth's own constructor is a
-                # Python-level call, and predictions are made thousands of times per input)
+                # (deduction; ``truth_of`` rather than Truth's keyword-capable constructor:
+                # predictions are made thousands of times per input)
                 pred = Event(outcome, BELIEF, tf.truth_of(pf, pc), stamp, occ, now)
                 if imp.dt > 0.0:
                     old = oc.predicted_belief
@@ -649,8 +654,7 @@ class SensorimotorMixin:
         if groups is None:
             groups = self._groups = {None: {}}
             for c in reversed(self.time_index):  # oldest first: the newest ends last
-                if not c.term.has_var:
-                    _group_add(groups, c, self._keys_of(c.term))
+                _group_add(groups, c, self._keys_of(c.term))
         return groups
 
     def _source_spike(
@@ -724,12 +728,6 @@ class SensorimotorMixin:
         )
         return t, tf.c2w(t.c)
 
-    def _match(self, source: Term, term: Term) -> dict[Term, Term] | None:
-        """``unify(source, term)`` for a precondition with variables, remembered with
-        the precondition's pattern when it has one."""
-        pattern = self._patterns.get(source)
-        return unify(source, term) if pattern is None else pattern.match(term)
-
 
 class _Pattern:
     """What ``_source_spike`` keeps about a precondition with variables."""
@@ -778,7 +776,9 @@ def _group_keys(t: Term, ground_only: bool = False) -> list[object]:
     return keys
 
 
-def _group_add(groups: dict[object, dict[Concept, None]], c: Concept, keys: list[object]) -> None:
+def _group_add(
+    groups: dict[object, dict[Concept, None]], c: Concept, keys: Sequence[object]
+) -> None:
     """Make ``c`` (its term without variables) the newest member of its groups,
     entering it or moving it to the end."""
     for k in keys:
@@ -791,7 +791,7 @@ def _group_add(groups: dict[object, dict[Concept, None]], c: Concept, keys: list
 
 
 def _group_remove(
-    groups: dict[object, dict[Concept, None]], c: Concept, keys: list[object]
+    groups: dict[object, dict[Concept, None]], c: Concept, keys: Sequence[object]
 ) -> None:
     """Take ``c`` (its term without variables) out of its groups, dropping groups left
     empty."""
