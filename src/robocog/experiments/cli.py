@@ -115,7 +115,7 @@ def run_garbage(
     rounds: int,
     json_path: Path | None,
     out: Path | None,
-    budget: float | None = None,
+    config_overrides: dict[str, float] | None = None,
 ) -> ExperimentResult:
     """Shared by ``experiment garbage`` and ``demo``: run, print the table, write files."""
     from rich.console import Console
@@ -127,7 +127,7 @@ def run_garbage(
     from robocog.worlds.garbage import GarbageConfig
 
     console = Console()
-    config = GarbageConfig(light=light)  # type: ignore[arg-type]
+    config = GarbageConfig(light=light, **(config_overrides or {}))  # type: ignore[arg-type]
     with Progress(
         "[progress.description]{task.description}",
         BarColumn(),
@@ -144,13 +144,10 @@ def run_garbage(
             config=config,
             rounds=rounds,
             advance=lambda: progress.advance(task),
-            budget=budget,
         )
     console.print(summary_table(result))
     for m in result.minds.values():
         console.print(escape(mind_status(m)))
-        if m.cut_short:
-            console.print(f"{m.name}: {m.cut_short} runs left out to keep within the time budget")
     acc = result.accumulation
     if acc is not None and acc.unavailable is None:
         places = ", ".join(p for p, *_ in acc.ranking) or "no place hypothesis formed yet"

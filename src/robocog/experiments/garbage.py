@@ -25,6 +25,8 @@ from robocog.worlds.garbage import GarbageConfig, GarbageField
 #: Table II of seed 000: success rate over 30 runs each, sunny light
 PAPER: dict[str, float] = {"NARS": 0.68, "BDI": 0.56}
 CAUSES: tuple[str, ...] = ("detection", "grasp", "decision", "time")
+#: the JSON keys whose values depend on the machine rather than on seeds and settings
+TIMING_KEYS: frozenset[str] = frozenset({"wall_seconds", "reason_p50_ms", "reason_p99_ms"})
 
 
 @dataclass(frozen=True)
@@ -73,7 +75,6 @@ class MindResult:
     runs: list[RunResult] = field(default_factory=list)
     unavailable: str | None = None
     error: str | None = None
-    cut_short: int = 0  # runs not started because the time budget was spent
 
     @property
     def ok(self) -> bool:
@@ -132,8 +133,6 @@ class MindResult:
             entry["reason"] = self.unavailable
         if self.error:
             entry["reason"] = self.error
-        if self.cut_short:
-            entry["runs_skipped_for_time"] = self.cut_short
         notes = self.notes()
         if notes:
             entry["notes"] = notes
@@ -206,10 +205,13 @@ class ExperimentResult:
 
     def to_json(self) -> dict[str, Any]:
         """The JSON document of ``--json``: one entry per mind under ``minds``."""
+        from robocog import __version__
+
         config = asdict(self.config)
         config["hotspots"] = {str(k): v for k, v in self.config.hotspots.items()}
         doc: dict[str, Any] = {
             "experiment": "garbage",
+            "robocog_version": __version__,
             "light": self.config.light,
             "seed": self.seed,
             "runs": self.runs,
@@ -313,15 +315,11 @@ def run_mind(
     config: GarbageConfig,
     seeds: Sequence[int],
     advance: Callable[[], None] | None = None,
-    deadline: float | None = None,
 ) -> MindResult:
     """Every run of one mind; a mind that cannot run is reported, not raised.
 
-    With a ``deadline`` (a ``time.perf_counter()`` value) no run starts after it, so a
-    slow engine ends with fewer runs rather than overrunning; ``cut_short`` says so.
+    Every seed is run: what a result holds never depends on how fast the machine was.
     """
-    import time
-
     result = MindResult(spec.name)
     try:
         why = spec.probe()
@@ -331,9 +329,6 @@ def run_mind(
         result.unavailable = why
         return result
     for i, seed in enumerate(seeds):
-        if deadline is not None and i > 0 and time.perf_counter() > deadline:
-            result.cut_short = len(seeds) - i
-            break
         try:
             result.runs.append(run_once(spec, config, seed, keep_path=i == 0))
         except Exception as exc:
@@ -349,7 +344,6 @@ def learn_accumulation(
     config: GarbageConfig,
     seed: int,
     rounds: int,
-    deadline: float | None = None,
 ) -> Accumulation:
     """Let a NARS mind collect for several rounds of one field, then ask where trash is
     seen (the mind must offer ``ask``, ``trash_places`` and ``new_round``).
@@ -360,8 +354,6 @@ def learn_accumulation(
     ``<<({SELF} * {p}) --> at> =/> <trash --> [see]>>`` per checkpoint, by expectation;
     the field's own count of arrivals with trash in view is returned beside it.
     """
-    import time
-
     from robocog.minds.nars_mind import TRASH_QUESTION
 
     hotspots_idx = sorted(config.hotspots, key=lambda i: -config.hotspots[i])
@@ -377,8 +369,6 @@ def learn_accumulation(
     seen: dict[str, int] = dict.fromkeys(world.route, 0)
     try:
         for r in range(rounds):
-            if r and deadline is not None and time.perf_counter() > deadline:
-                break
             if r:
                 world.new_round()
                 mind.new_round()
@@ -475,35 +465,32 @@ def run_experiment(
     config: GarbageConfig | None = None,
     rounds: int = 0,
     advance: Callable[[], None] | None = None,
-    budget: float | None = None,
 ) -> ExperimentResult:
     """Every mind on the same ``runs`` seeds; then, if ``rounds``, NARS's learning phase.
 
-    ``budget`` (seconds of wall time) is shared out: each mind may start runs until its
-    share (counted from its first run) ends, and the learning phase gets the last share.
-    A run that has started is finished, so a slow engine can overrun its share.
+    The result depends on the seeds and the configuration alone; only ``wall_seconds``
+    and the cycle-time figures tell how long it took.
     """
     import time
 
     start = time.perf_counter()
     config = config or GarbageConfig()
-    seeds = [seed * 1000 + i for i in range(runs)]
-    shares = len(specs) + (1 if rounds > 0 else 0)
-
-    def deadline() -> float | None:
-        """An equal share of the budget, counted from now (a phase that overran its
-        share does not eat the next one's)."""
-        return None if budget is None else time.perf_counter() + budget / max(1, shares)
-
-    minds = {s.name: run_mind(s, config, seeds, advance, deadline()) for s in specs}
+    seeds = mission_seeds(seed, runs)
+    minds = {s.name: run_mind(s, config, seeds, advance) for s in specs}
     accumulation = None
     learners = [s for s in specs if s.name in ("NARS", "ONA")]
     ready = [s for s in learners if minds[s.name].ok] or learners
     if rounds > 0 and ready:
         try:
-            accumulation = learn_accumulation(ready[0], config, seed, rounds, deadline())
+            accumulation = learn_accumulation(ready[0], config, seed, rounds)
         except Exception as exc:
             accumulation = Accumulation(
                 rounds, None, [], {}, [], unavailable=f"{type(exc).__name__}: {exc}"
             )
     return ExperimentResult(config, seed, runs, minds, accumulation, time.perf_counter() - start)
+
+
+def mission_seeds(seed: int, runs: int) -> list[int]:
+    """The field seeds of ``runs`` missions from experiment seed ``seed`` (shared by every
+    mind, so the minds meet the same fields; a sweep uses the same numbering)."""
+    return [seed * 1000 + i for i in range(runs)]

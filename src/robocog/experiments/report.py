@@ -14,9 +14,13 @@ import json
 from pathlib import Path
 from typing import Any
 
+from robocog import __version__
 from robocog.atomic import write_text
 from robocog.experiments.garbage import CAUSES, PAPER, ExperimentResult, MindResult
 from robocog.worlds.garbage import GarbageField
+
+#: the last section of the page, the only one that depends on the machine
+TIMINGS_HEADING = "## Timings (these depend on the machine, not on the seeds)"
 
 CAUSE_TEXT = {
     "detection": "at its checkpoint, but never detected by the camera",
@@ -128,8 +132,8 @@ def markdown(result: ExperimentResult, images: dict[str, str]) -> str:
         f"(detection rate {_pct(cfg.detection_rate)}, grasp success "
         f"{_pct(cfg.pick_success)} on a well-detected object), {cfg.objects} objects on a "
         f"{cfg.size:g} x {cfg.size:g} m field with {cfg.checkpoints} checkpoints, "
-        f"{cfg.mission_time:.0f} s of battery per mission. Wall time "
-        f"{result.wall_seconds:.1f} s.",
+        f"{cfg.mission_time:.0f} s of battery per mission; robocog {__version__}. The full "
+        "configuration is at the end of the page.",
         "",
         "## Success rate (Table II)",
         "",
@@ -212,9 +216,16 @@ def markdown(result: ExperimentResult, images: dict[str, str]) -> str:
             "Hotspots ranked first: "
             + ("yes" if verdict else "no" if verdict is False else "not decided"),
         ]
+    lines += ["", "## Configuration", "", "| setting | value |", "|---|---|"]
+    settings = result.to_json()["config"]
+    lines += [f"| {k} | {v} |" for k, v in settings.items()]
+    # Timings come last, under their own heading: they are the only part of the page that
+    # depends on the machine rather than on the seeds and the settings.
     lines += [
         "",
-        "## Cycle time",
+        TIMINGS_HEADING,
+        "",
+        f"Wall time {result.wall_seconds:.1f} s.",
         "",
         "| mind | reason p50 (ms) | reason p99 (ms) |",
         "|---|---|---|",

@@ -86,22 +86,34 @@ class GarbageConfig:
     #: a new round starts from a cleared field (the test procedure places the objects
     #: anew); False leaves what the last round left, tipped bottles included
     clear_between_rounds: bool = True
+    #: the detector's recognition rate, in place of the light's (Table I) when given:
+    #: lets a sweep ask how the minds fare as detection worsens, which the paper's three
+    #: lights sample at only three points
+    detection: float | None = None
+    #: grasp success on a well-detected upright object, in place of the light's
+    grasp: float | None = None
 
     def __post_init__(self) -> None:
         if self.light not in DETECTION_RATE:
             raise ValueError(f"light must be one of {', '.join(LIGHTS)}, not {self.light!r}")
         if self.checkpoints < 2 or self.objects < 0:
             raise ValueError("need at least two checkpoints and a non-negative object count")
+        for name in ("detection", "grasp"):
+            value = getattr(self, name)
+            if value is not None and not 0.0 <= value <= 1.0:
+                raise ValueError(f"{name} must be a probability in [0, 1], not {value!r}")
 
     @property
     def detection_rate(self) -> float:
-        """Share of objects the detector recognises in this light (Table I)."""
-        return DETECTION_RATE[self.light]
+        """Share of objects the detector recognises (Table I's rate for the light unless
+        ``detection`` overrides it)."""
+        return DETECTION_RATE[self.light] if self.detection is None else self.detection
 
     @property
     def pick_success(self) -> float:
-        """Grasp success on a well-detected upright object in this light."""
-        return PICK_SUCCESS[self.light]
+        """Grasp success on a well-detected upright object (the light's unless ``grasp``
+        overrides it)."""
+        return PICK_SUCCESS[self.light] if self.grasp is None else self.grasp
 
 
 @dataclass
