@@ -17,6 +17,7 @@ from collections.abc import Sequence
 COMMANDS: dict[str, tuple[str, str]] = {
     "demo": ("robocog.experiments.demo", "run the garbage-collection demo with both minds"),
     "experiment": ("robocog.experiments.cli", "run one of the papers' case studies"),
+    "sweep": ("robocog.experiments.sweep_cli", "run an experiment over a grid of settings"),
     "nar": ("robocog.nars.shell", "NARS shell speaking ONA's protocol on stdin/stdout"),
     "agent": ("robocog.bdi.cli", "run an AgentSpeak (Jason) program until it is idle"),
     "atomese": ("robocog.atomspace.cli", "load Atomese files and evaluate queries"),

@@ -1,0 +1,159 @@
+"""``robocog sweep EXPERIMENT --vary NAME=START:STOP:STEP ...``: many seeded missions over
+a grid of settings, locally or on a Ray cluster, resumable, with a report.
+
+Examples::
+
+    robocog sweep garbage --vary detection=0.5:0.95:0.05 --minds nars,bdi --runs 30
+    robocog sweep garbage --vary grasp=0.6:0.95:0.05 --vary detection=0.6,0.8 --seeds 5
+    robocog sweep room-exit --vary detector_noise=0.05:0.3:0.05 --minds bdi,reference
+    robocog sweep assembly --vary failure_rate=0:0.5:0.1 --minds astar,quick
+    robocog sweep garbage --vary detection=0.5:0.95:0.05 --ray auto   # a running cluster
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from rich.console import Console
+
+    from robocog.experiments.sweep import Executor, SweepSpec
+
+DEFAULT_MINDS = {"garbage": "nars,bdi", "room-exit": "bdi,reference", "assembly": "astar"}
+
+
+def configure(parser: argparse.ArgumentParser) -> None:
+    """Declare the sweep's arguments."""
+    parser.add_argument("experiment", choices=tuple(DEFAULT_MINDS), help="what to sweep")
+    parser.add_argument(
+        "--vary",
+        action="append",
+        default=[],
+        metavar="NAME=START:STOP:STEP",
+        help="a setting and its values (START:STOP:STEP, both ends included, or V1,V2,...); "
+        "repeat for a grid",
+    )
+    parser.add_argument("--minds", help="comma-separated minds (garbage: nars, bdi, ona; "
+                        "room-exit: bdi, reference; assembly: the search modes astar, first, quick)")  # fmt: skip
+    parser.add_argument("--runs", type=int, default=30, help="missions per seed block (default 30)")
+    parser.add_argument("--seeds", type=int, default=1, help="seed blocks per point (default 1)")
+    parser.add_argument("--seed", type=int, default=0, help="the first seed block (default 0)")
+    parser.add_argument("--light", default="sunny", help="garbage: the light (default sunny)")
+    parser.add_argument("--sequence", default="tables", help="assembly: tables or whole")
+    parser.add_argument("--compare", metavar="A,B", help="the two minds to difference "
+                        "(default: the first two)")  # fmt: skip
+    parser.add_argument("--out", type=Path, metavar="DIR", help="table and report folder "
+                        "(default reports/sweep-EXPERIMENT)")  # fmt: skip
+    parser.add_argument(
+        "--jobs", type=int, default=os.cpu_count() or 1, help="local worker processes"
+    )
+    parser.add_argument(
+        "--ray",
+        nargs="?",
+        const="",
+        metavar="ADDRESS",
+        help="run on Ray: a cluster's address (auto: the one `ray start` runs here), or none "
+        "for a local Ray of --jobs CPUs",
+    )
+    parser.add_argument("--fresh", action="store_true", help="start the table over")
+    parser.add_argument(
+        "--report-only", action="store_true", help="write the report from the table as it is"
+    )
+
+
+def run(args: argparse.Namespace) -> int:
+    """Run (or resume) the sweep and write its report; 2 on a bad request."""
+    from rich.console import Console
+    from rich.markup import escape
+
+    from robocog.experiments.sweep import (
+        SweepError,
+        SweepSpec,
+        check,
+        in_process,
+        parse_axis,
+        process_pool,
+        ray_cluster,
+        read_table,
+        sorted_rows,
+    )
+    from robocog.experiments.sweep_report import summarise, write_report
+
+    console = Console(stderr=True)
+    out: Path = args.out or Path("reports") / f"sweep-{args.experiment}"
+    table = out / "results.jsonl"
+    try:
+        fixed = {"garbage": {"light": args.light}, "assembly": {"sequence": args.sequence}}
+        spec = SweepSpec(
+            experiment=args.experiment,
+            axes=tuple(parse_axis(v) for v in args.vary),
+            minds=tuple(m.strip() for m in (args.minds or DEFAULT_MINDS[args.experiment]).split(",") if m.strip()),
+            runs=args.runs,
+            seeds=args.seeds,
+            first_seed=args.seed,
+            fixed=tuple(sorted(fixed.get(args.experiment, {}).items())),
+        )  # fmt: skip
+        check(spec)
+        compare = None
+        if args.compare:
+            pair = tuple(m.strip() for m in args.compare.split(","))
+            if len(pair) != 2 or not set(pair) <= set(spec.minds):
+                raise SweepError("--compare names two of the sweep's minds, A,B")
+            compare = (pair[0], pair[1])
+        if args.jobs < 1:
+            raise SweepError("--jobs must be at least 1")
+        if args.report_only:
+            spec, rows = read_table(table, spec)
+            rows = sorted_rows(spec, rows)
+        else:
+            if args.ray is not None:
+                execute = ray_cluster(args.ray or None, args.jobs)
+                where = f"Ray ({args.ray or f'local, {args.jobs} CPUs'})"
+            elif args.jobs > 1:
+                execute, where = process_pool(args.jobs), f"{args.jobs} local processes"
+            else:
+                execute, where = in_process, "this process"
+            rows = _run_with_progress(spec, table, execute, args.fresh, where, console)
+    except SweepError as exc:
+        console.print(escape(f"robocog sweep: {exc}"))
+        return 2
+    except FileNotFoundError as exc:
+        console.print(escape(f"robocog sweep: no table to report on: {exc.filename}"))
+        return 2
+    page = write_report(summarise(spec, rows, compare), out)
+    print(f"table: {table}")
+    print(f"report: {page}")
+    return 0
+
+
+def _run_with_progress(
+    spec: SweepSpec, table: Path, execute: Executor, fresh: bool, where: str, console: Console
+) -> list[dict[str, Any]]:
+    """The sweep with a progress bar on the terminal (none when stderr is not one)."""
+    from rich.progress import (
+        BarColumn,
+        MofNCompleteColumn,
+        Progress,
+        TimeElapsedColumn,
+        TimeRemainingColumn,
+    )
+
+    from robocog.experiments.sweep import run_sweep
+
+    console.print(f"robocog sweep {spec.experiment}: {spec.missions} missions on {where}; "
+                  f"table {table}")  # fmt: skip
+    with Progress(
+        "[progress.description]{task.description}",
+        BarColumn(),
+        MofNCompleteColumn(),
+        TimeElapsedColumn(),
+        TimeRemainingColumn(),
+        console=console,
+        disable=not sys.stderr.isatty(),
+    ) as progress:
+        task = progress.add_task("missions", total=spec.missions)
+        return run_sweep(spec, table, execute, fresh, lambda n: progress.advance(task, n))
