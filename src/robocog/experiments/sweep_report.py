@@ -100,8 +100,10 @@ class Summary:
                     point = _point(self.spec, {**held, axis.name: v})
                     if point in self.difference:
                         line.append((v, self.difference[point].mean))
-                for (v0, d0), (v1, d1) in zip(line, line[1:], strict=False):
-                    if d0 * d1 < 0:  # a strict change of sign
+                # a mean of exactly zero is no side: the sign changes across it
+                signed = [(v, d) for v, d in line if d != 0]
+                for (v0, d0), (v1, d1) in zip(signed, signed[1:], strict=False):
+                    if d0 * d1 < 0:
                         at = v0 + (v1 - v0) * d0 / (d0 - d1)
                         out.append(
                             {"axis": axis.name, "held": held, "between": (v0, v1), "at": at,

@@ -1,0 +1,159 @@
+"""Sweeps: the grid, the table that resumes, executors that agree, and the report."""
+
+from __future__ import annotations
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+from robocog import cli
+from robocog.experiments.sweep import (
+    SweepError,
+    SweepSpec,
+    Task,
+    in_process,
+    parse_axis,
+    process_pool,
+    ray_cluster,
+    read_table,
+    run_sweep,
+)
+from robocog.experiments.sweep_report import Estimate, summarise, write_report
+
+
+def _spec(minds: tuple[str, ...] = ("bdi",), runs: int = 2, **kw: object) -> SweepSpec:
+    axes = (parse_axis("detection=0.5,0.9"), parse_axis("grasp=0.6:0.9:0.3"))
+    return SweepSpec("garbage", axes, minds, runs, 1, fixed=(("light", "sunny"),), **kw)  # type: ignore[arg-type]
+
+
+def test_axes_are_parsed_with_both_ends_and_no_float_drift() -> None:
+    axis = parse_axis("detection=0.5:0.95:0.05")
+    assert axis.values[0] == 0.5 and axis.values[-1] == 0.95 and len(axis.values) == 10
+    assert 0.55 in axis.values
+    assert parse_axis("objects=4,8").values == (4.0, 8.0)
+    for bad in ("detection", "x=1:0:0.1", "x=0:1:0", "x=nan", "x=1,1", "x=0:1e9:1e-6", "x=a"):
+        with pytest.raises(SweepError):
+            parse_axis(bad)
+
+
+def test_a_sweep_is_every_combination_and_refuses_what_the_study_lacks() -> None:
+    spec = _spec(("nars", "bdi"), runs=3)
+    assert spec.missions == 2 * 2 * 2 * 3 == len(spec.tasks())
+    assert len({t.key for t in spec.tasks()}) == spec.missions
+    from robocog.experiments.sweep import check
+
+    with pytest.raises(SweepError, match="no setting 'colour'"):
+        check(SweepSpec("garbage", (parse_axis("colour=1,2"),), ("bdi",), 1, 1))
+    with pytest.raises(SweepError, match="no mind"):
+        check(SweepSpec("garbage", (), ("cortex",), 1, 1))
+
+
+def test_local_pool_and_this_process_give_the_same_table(tmp_path: Path) -> None:
+    spec = _spec(("bdi", "nars"), runs=1)
+    here = run_sweep(spec, tmp_path / "a.jsonl", in_process)
+    pool = run_sweep(spec, tmp_path / "b.jsonl", process_pool(2))
+    assert len(here) == spec.missions and here == pool
+    # the rows come from the world: detection and grasp change what is collected
+    assert {r["mind"] for r in here} == {"bdi", "nars"}
+    assert all(0 <= r["collected"] <= r["objects"] for r in here)
+
+
+def test_a_local_ray_cluster_gives_the_same_table(tmp_path: Path) -> None:
+    pytest.importorskip("ray")
+    spec = _spec(("bdi",), runs=2)
+    here = run_sweep(spec, tmp_path / "a.jsonl", in_process)
+    on_ray = run_sweep(spec, tmp_path / "b.jsonl", ray_cluster(None, cpus=2))
+    assert here == on_ray
+
+
+def test_a_killed_sweep_resumes_to_the_table_of_an_uninterrupted_one(tmp_path: Path) -> None:
+    whole = tmp_path / "whole"
+    cut = tmp_path / "cut"
+    argv = ["sweep", "garbage", "--vary", "detection=0.5:0.9:0.1", "--minds", "bdi"]
+    argv += ["--runs", "4", "--jobs", "1"]
+    assert cli.main([*argv, "--out", str(whole)]) == 0
+    env = dict(os.environ)
+    env["PYTHONPATH"] = os.pathsep.join(
+        [str(Path(cli.__file__).parents[1]), env.get("PYTHONPATH", "")]
+    )
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "robocog.cli", *argv, "--out", str(cut)],
+        env=env,
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.DEVNULL,
+    )
+    table = cut / "results.jsonl"
+    deadline = time.monotonic() + 120
+    while time.monotonic() < deadline:
+        if table.exists() and table.read_text().count("\n") >= 4:  # header and 3 rows
+            break
+        time.sleep(0.02)
+    proc.send_signal(signal.SIGKILL)
+    proc.wait()
+    lines = table.read_text().count("\n") - 1
+    assert 3 <= lines < 20, "the sweep was to be killed half-way"
+    with table.open("a") as f:  # as if the kill cut a row in half
+        f.write('{"key": "bdi|detection=0.9|0|')
+    assert cli.main([*argv, "--out", str(cut)]) == 0
+    spec, rows_cut = read_table(table)
+    _, rows_whole = read_table(whole / "results.jsonl")
+    key = [t.key for t in spec.tasks()]
+    assert sorted(r["key"] for r in rows_cut) == sorted(key)
+    by_key = {r["key"]: r for r in rows_whole}
+    assert all(by_key[r["key"]] == r for r in rows_cut)
+    assert (cut / "report.md").read_text() == (whole / "report.md").read_text()
+
+
+def test_a_table_of_another_sweep_or_a_bad_line_is_refused(tmp_path: Path) -> None:
+    table = tmp_path / "t.jsonl"
+    run_sweep(_spec(runs=1), table)
+    with pytest.raises(SweepError, match="another sweep"):
+        run_sweep(_spec(runs=2), table)
+    lines = table.read_text().splitlines()
+    table.write_text("\n".join([lines[0], lines[1], "{oops", *lines[2:]]) + "\n")
+    with pytest.raises(SweepError, match=r"t\.jsonl:3:2"):
+        read_table(table)
+    table.write_text(lines[0] + "\n" + json.dumps({"key": "nars|x|0|0"}) + "\n")
+    with pytest.raises(SweepError, match="not a mission of this sweep"):
+        read_table(table)
+    assert cli.main(["sweep", "garbage", "--vary", "detection=2:1:1", "--out", str(tmp_path)]) == 2
+
+
+def test_the_report_has_intervals_a_paired_difference_and_its_sign_changes(
+    tmp_path: Path,
+) -> None:
+    spec = SweepSpec("garbage", (parse_axis("detection=0.5,0.7,0.9"),), ("nars", "bdi"), 2, 1)
+    rows = []
+    # made-up rows: NARS leads at low detection, BDI at high, the lead changing sign once
+    for det, (ra, rb) in zip(
+        spec.axes[0].values, ((0.6, 0.4), (0.55, 0.5), (0.3, 0.6)), strict=True
+    ):
+        for run in range(2):
+            for mind, rate in (("nars", ra + 0.1 * run), ("bdi", rb + 0.1 * run)):
+                task = Task(mind, (("detection", det),), 0, run)
+                rows.append({"key": task.key, "mind": mind, "detection": det, "seed": 0,
+                             "run": run, "rate": rate, "missed_grasp": 1})  # fmt: skip
+    summary = summarise(spec, rows)
+    d = summary.difference
+    assert d[(("detection", 0.5),)].mean == pytest.approx(0.2)
+    assert d[(("detection", 0.9),)].mean == pytest.approx(-0.3)
+    (crossing,) = summary.crossings()
+    assert crossing["between"] == (0.7, 0.9)
+    assert crossing["at"] == pytest.approx(0.7 + 0.2 * 0.05 / 0.35)
+    page = write_report(summary, tmp_path).read_text()
+    assert "nars - bdi" in page and "crossing zero near 0.729" in page
+    assert summary.curves[("nars", (("detection", 0.5),))].text() == "65.0% [1.5, 100.0]"
+
+
+def test_an_estimate_is_a_mean_with_a_t_interval() -> None:
+    est = Estimate.of([0.2, 0.4, 0.6])
+    assert est.mean == pytest.approx(0.4)
+    assert est.high - est.mean == pytest.approx(4.303 * 0.2 / 3**0.5)
+    assert Estimate.of([1.0, 1.0]).low == 1.0
+    assert not Estimate.of([-0.1, 0.1]).excludes_zero
