@@ -61,7 +61,9 @@ def test_the_command_writes_json_and_a_report(tmp_path: Path) -> None:
         assert data["minds"][key]["success_rate"] == 1.0
         assert data["minds"][key]["runs"] >= 2
     assert data["minds"]["planner_grasp_failures"]["runs"] == 4
+    assert data["arguments"]["failure_rate"] == 0.25 and "robocog_version" in data
     report = (tmp_path / "r" / "assembly.md").read_text()
+    assert "| failure_rate | 0.25 |" in report
     assert "5.8" in report and "5853" in report and "BlockC" in report
 
 

@@ -8,7 +8,9 @@ from pathlib import Path
 
 import pytest
 
+import robocog
 from robocog.experiments import room_exit
+from robocog.worlds.room import RoomConfig
 
 
 @pytest.fixture(scope="module")
@@ -84,7 +86,11 @@ def test_the_command_writes_json_with_one_entry_per_mind(tmp_path: Path) -> None
     assert set(data["minds"]) | set(data["unavailable"]) == {"bdi", "reference"}
     assert data["convergence"]["A"]["failing_steps"] == []
     assert data["convergence"]["constant-step"]["failing_steps"]
-    assert (tmp_path / "rep" / "room_exit.md").exists()
+    assert data["robocog_version"] == robocog.__version__
+    assert data["arguments"]["runs"] == 4 and data["arguments"]["particles"] == 200
+    assert data["config"]["doorway_width"] == RoomConfig().doorway_width
+    page = (tmp_path / "rep" / "room_exit.md").read_text()
+    assert "## Configuration" in page and "| particles | 200 |" in page
 
 
 def test_the_agentspeak_run_of_the_plans_matches_their_python_transcription() -> None:

@@ -22,7 +22,7 @@ from pathlib import Path
 from typing import Any
 
 from robocog.atomic import write_json, write_text
-from robocog.experiments.report import add_run_arguments
+from robocog.experiments.report import add_run_arguments, provenance, provenance_lines
 from robocog.minds.planner_mind import PlannerMind, RequestRecord
 from robocog.planning.thesis import EXPERIMENTS, WHOLE_ASSEMBLIES, experiment
 from robocog.robot.loop import Loop
@@ -281,6 +281,7 @@ def run(args: argparse.Namespace) -> int:
     if args.json:
         payload = {
             "experiment": "assembly",
+            **provenance(args),
             "seed": args.seed,
             "runs": args.runs,
             "failure_rate": args.failure_rate,
@@ -378,7 +379,8 @@ def write_report(
         )
     if plot:
         lines += ["", f"![search time per request]({plot})", ""]
-    write_text(path, "\n".join(lines))
+    lines += ["", *provenance_lines(provenance(args))]
+    write_text(path, "\n".join(lines) + "\n")
 
 
 __all__ = ["EXPERIMENTS", "WHOLE_ASSEMBLIES", "configure", "run", "run_sequence"]

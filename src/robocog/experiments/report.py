@@ -10,6 +10,7 @@ the page is written alone.
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import json
 from pathlib import Path
 from typing import Any
@@ -45,6 +46,32 @@ def add_run_arguments(
         default=report_dir,
         help="folder of the markdown report and plots",
     )
+
+
+def provenance(args: argparse.Namespace, config: object | None = None) -> dict[str, Any]:
+    """What a result was made with: the robocog version, the command's arguments and the
+    world's whole configuration, so that a report can be run again from itself."""
+    plain = (str, int, float, bool, type(None))
+    arguments = {
+        k: str(v) if isinstance(v, Path) else v
+        for k, v in sorted(vars(args).items())
+        if isinstance(v, (*plain, Path))
+    }
+    doc: dict[str, Any] = {"robocog_version": __version__, "arguments": arguments}
+    if config is not None and dataclasses.is_dataclass(config) and not isinstance(config, type):
+        doc["config"] = dataclasses.asdict(config)
+    return doc
+
+
+def provenance_lines(doc: dict[str, Any]) -> list[str]:
+    """The markdown section of :func:`provenance`."""
+    lines = ["## Configuration", "", f"robocog {doc['robocog_version']}.", ""]
+    lines += ["| argument | value |", "|---|---|"]
+    lines += [f"| {k} | {v} |" for k, v in doc["arguments"].items()]
+    if "config" in doc:
+        lines += ["", "| world setting | value |", "|---|---|"]
+        lines += [f"| {k} | {v} |" for k, v in doc["config"].items()]
+    return lines
 
 
 def write_json(path: Path, result: ExperimentResult) -> None:

@@ -31,7 +31,7 @@ from typing import Any
 
 from robocog.atomic import write_json, write_text
 from robocog.experiments import convergence
-from robocog.experiments.report import add_run_arguments
+from robocog.experiments.report import add_run_arguments, provenance, provenance_lines
 from robocog.minds.qbo import QboPerception, ReachExitReference
 from robocog.robot.loop import Loop
 from robocog.robot.protocols import Mind
@@ -326,11 +326,14 @@ def run(args: argparse.Namespace) -> int:
     plots: dict[str, str] = {}
     if not args.no_plots:
         plots = write_plots(results, conv, report_dir, room_steps)
-    write_report(report_dir / "room_exit.md", args, summaries, unavailable, conv, plots, room_steps)
+    write_report(
+        report_dir / "room_exit.md", args, summaries, unavailable, conv, plots, room_steps, config
+    )
     console.print(f"report: {report_dir / 'room_exit.md'}")
     if args.json:
         payload = {
             "experiment": "room-exit",
+            **provenance(args, config),
             "seed": args.seed,
             "runs": args.runs,
             "minds": summaries,
@@ -471,6 +474,7 @@ def write_report(
     conv: dict[str, list[convergence.StepRecord]],
     plots: dict[str, str],
     room_steps: dict[str, list[RoomStep]] | None = None,
+    config: RoomConfig | None = None,
 ) -> None:
     """The markdown report."""
     lines = [
@@ -552,4 +556,5 @@ def write_report(
                 f"{'yes' if st.holds else 'no'} |"
             )
         lines.append("")
-    write_text(path, "\n".join(lines))
+    lines += ["", *provenance_lines(provenance(args, config or RoomConfig()))]
+    write_text(path, "\n".join(lines) + "\n")
