@@ -149,11 +149,16 @@ def test_the_report_has_intervals_a_paired_difference_and_its_sign_changes(
     page = write_report(summary, tmp_path).read_text()
     assert "nars - bdi" in page and "crossing zero near 0.729" in page
     assert summary.curves[("nars", (("detection", 0.5),))].text() == "65.0% [1.5, 100.0]"
+    assert "Student-t" in page
 
 
 def test_an_estimate_is_a_mean_with_a_t_interval() -> None:
     est = Estimate.of([0.2, 0.4, 0.6])
     assert est.mean == pytest.approx(0.4)
     assert est.high - est.mean == pytest.approx(4.303 * 0.2 / 3**0.5)
-    assert Estimate.of([1.0, 1.0]).low == 1.0
+    all_or_nothing = Estimate.of([1.0, 1.0, 0.0, 1.0])  # Wilson: 3 of 4
+    assert all_or_nothing.mean == 0.75
+    assert all_or_nothing.low == pytest.approx(0.3006, abs=1e-3)
+    assert all_or_nothing.high == pytest.approx(0.9544, abs=1e-3)
+    assert Estimate.of([1.0] * 30).high == 1.0 and Estimate.of([1.0] * 30).low < 1.0
     assert not Estimate.of([-0.1, 0.1]).excludes_zero

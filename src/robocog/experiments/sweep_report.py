@@ -4,7 +4,8 @@ were, as a markdown page with PNG plots (matplotlib, the ``viz`` extra) beside i
 
 The intervals are over missions: each mission is one observation (its share of objects
 collected, or 1/0 where a mission succeeds or not), so a point's interval is the mean's
-Student-t interval over its missions. The difference of two minds is paired: both minds
+Student-t interval over its missions, or the Wilson score interval where every mission
+either succeeded or failed. The difference of two minds is paired: both minds
 meet the same seeded fields, so it is the mean of the per-mission differences, whose
 interval is much narrower than the two separate ones would suggest.
 """
@@ -50,10 +51,22 @@ class Estimate:
         clipped to ``bounds``, the range the measure can take."""
         n = len(values)
         mean = statistics.fmean(values)
+        if bounds == (0.0, 1.0) and all(v in (0.0, 1.0) for v in values):
+            return cls.wilson(mean, n)
         if n < 2:
             return cls(mean, mean, mean, n)
         half = t95(n - 1) * statistics.stdev(values) / math.sqrt(n)
         return cls(mean, max(bounds[0], mean - half), min(bounds[1], mean + half), n)
+
+    @classmethod
+    def wilson(cls, share: float, n: int) -> Estimate:
+        """A share of successes among ``n`` missions that each succeed or fail, with its
+        Wilson score interval (which, unlike the t interval, stays sensible at 0/n and
+        n/n)."""
+        z = 1.96
+        centre = (share + z * z / (2 * n)) / (1 + z * z / n)
+        half = z * math.sqrt(share * (1 - share) / n + z * z / (4 * n * n)) / (1 + z * z / n)
+        return cls(share, max(0.0, centre - half), min(1.0, centre + half), n)
 
     @property
     def excludes_zero(self) -> bool:
@@ -184,7 +197,8 @@ def markdown(summary: Summary, images: dict[str, str]) -> str:
         f"Minds {', '.join(spec.minds)}; {axes or 'no varied setting'}; "
         f"{spec.runs} runs x {spec.seeds} seeds per mind and point "
         f"({spec.missions} missions). Success is the {measure} per mission; "
-        "intervals are 95% Student-t intervals over the missions.",
+        "intervals are 95% intervals over the missions (Student-t; Wilson where each "
+        "mission either succeeds or fails).",
     ]
     if spec.fixed:
         lines += ["", "Fixed: " + ", ".join(f"{k}={v}" for k, v in spec.fixed) + "."]
