@@ -41,8 +41,8 @@ def measure(spec: SweepSpec, execute: Executor, folder: Path, name: str) -> tupl
 def main() -> None:
     """Run the executors one after another and print a table of their figures."""
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--minds", default="bdi")
-    parser.add_argument("--runs", type=int, default=20, help="missions per detection level")
+    parser.add_argument("--minds", default="nars,bdi")
+    parser.add_argument("--runs", type=int, default=10, help="missions per mind and level")
     parser.add_argument("--no-ray", action="store_true")
     args = parser.parse_args()
     spec = SweepSpec(
@@ -58,25 +58,43 @@ def main() -> None:
         ("process pool, 1 worker", 1, process_pool(1)),
         ("process pool, 2 workers", 2, process_pool(2)),
     ]
+    ray = None
     if not args.no_ray:
-        executors += [
-            ("Ray (local), 1 worker", 1, ray_cluster(None, cpus=1)),
-            ("Ray (local), 2 workers", 2, ray_cluster(None, cpus=2)),
-        ]
+        try:
+            import ray
+        except ImportError:
+            print("Ray is not installed: pip install 'robocog[cluster]'")
     print(f"{spec.missions} missions ({args.minds}) per executor, {os.cpu_count()} CPUs")
     print(f"{'executor':26} {'wall s':>8} {'missions/s':>11} {'overhead ms/task':>17}")
     with tempfile.TemporaryDirectory() as tmp:
         folder = Path(tmp)
+        run_sweep(spec, folder / "warm.jsonl", in_process)  # imports and first-use costs
         reference: list | None = None
         per_mission = 0.0
-        for i, (name, workers, execute) in enumerate(executors):
-            wall, rows = measure(spec, execute, folder, f"t{i}")
+
+        def report(name: str, workers: int, execute: Executor, index: int) -> None:
+            nonlocal reference, per_mission
+            wall, rows = measure(spec, execute, folder, f"t{index}")
             if reference is None:
                 reference, per_mission = rows, wall / spec.missions
             elif rows != reference:
                 raise SystemExit(f"{name}: the table differs from the in-process one")
             overhead = (wall * workers / spec.missions - per_mission) * 1000
             print(f"{name:26} {wall:8.2f} {spec.missions / wall:11.2f} {overhead:17.1f}")
+
+        for i, (name, workers, execute) in enumerate(executors):
+            report(name, workers, execute, i)
+        if ray is not None:
+            for workers in (1, 2):
+                start = time.perf_counter()
+                ray.init(num_cpus=workers, include_dashboard=False, log_to_driver=False)
+                ray.get(ray.remote(lambda: None).remote())  # a first task starts a worker
+                started = time.perf_counter() - start
+                report(
+                    f"Ray (local), {workers} worker(s)", workers, ray_cluster(None), 10 + workers
+                )
+                ray.shutdown()
+                print(f"{'':26} (Ray's start-up, not counted above: {started:.1f} s)")
 
 
 if __name__ == "__main__":
