@@ -148,6 +148,10 @@ def test_the_report_has_intervals_a_paired_difference_and_its_sign_changes(
     assert crossing["at"] == pytest.approx(0.7 + 0.2 * 0.05 / 0.35)
     page = write_report(summary, tmp_path).read_text()
     assert "nars - bdi" in page and "crossing zero near 0.729" in page
+    assert (
+        "| mission_time | 420.0 |" in page
+        and "| detection |" not in page.split("## Configuration")[1]
+    )
     assert summary.curves[("nars", (("detection", 0.5),))].text() == "65.0% [1.5, 100.0]"
     assert "Student-t" in page
 

@@ -210,6 +210,8 @@ class Study:
     seeds: Callable[[int, int], list[int]] = lambda seed, runs: [
         seed * 1000 + i for i in range(runs)
     ]
+    #: the fixed settings -> every setting of the world in effect where no axis varies it
+    base: Callable[[dict[str, Any]], dict[str, Any]] = lambda fixed: dict(fixed)
 
 
 def _numeric_fields(config_type: type) -> dict[str, type]:
@@ -273,6 +275,11 @@ def _assembly_mission(mode: str, settings: dict[str, Any], seed: int) -> dict[st
     }
 
 
+def _plain(config: Any) -> dict[str, Any]:
+    """A world's config as JSON-ready settings."""
+    return json.loads(json.dumps(dataclasses.asdict(config), default=str))
+
+
 def studies() -> dict[str, Study]:
     """The experiments a sweep can run, by name."""
     from robocog.worlds.garbage import GarbageConfig
@@ -286,6 +293,7 @@ def studies() -> dict[str, Study]:
             "rate",
             _garbage_mission,
             fixed={"light": "sunny"},
+            base=lambda fixed: _plain(GarbageConfig(**fixed)),
         ),
         "room-exit": Study(
             "room-exit",
@@ -293,7 +301,7 @@ def studies() -> dict[str, Study]:
             _numeric_fields(RoomConfig),
             "left_room",
             _room_mission,
-            seeds=lambda seed, runs: [seed * 1000 + i for i in range(runs)],
+            base=lambda fixed: _plain(RoomConfig(**fixed)),
         ),
         "assembly": Study(
             "assembly",

@@ -20,6 +20,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from robocog import __version__
 from robocog.atomic import write_text
 from robocog.experiments.sweep import SweepSpec, check
 
@@ -97,6 +98,8 @@ class Summary:
     means: dict[tuple[str, Point], dict[str, float]]
     compared: tuple[str, str] | None
     missing: int
+    #: every setting of the world where no axis varies it
+    base: dict[str, Any]
 
     def crossings(self) -> list[dict[str, Any]]:
         """Where the difference changes sign along each axis, the others held fixed:
@@ -176,7 +179,8 @@ def summarise(
             if diffs:
                 difference[point] = Estimate.of(diffs, (-1.0, 1.0))
     missing = spec.missions - len(rows)
-    return Summary(spec, study.success, curves, difference, means, compare, missing)
+    base = study.base(dict(spec.fixed))
+    return Summary(spec, study.success, curves, difference, means, compare, missing, base)
 
 
 # -- the page -----------------------------------------------------------------------
@@ -269,6 +273,10 @@ def markdown(summary: Summary, images: dict[str, str]) -> str:
                 cells = [mind, *(_fmt(v) for _n, v in point)]
                 cells += [f"{m.get(c, math.nan):.2f}" for c in columns]
                 lines.append("| " + " | ".join(cells) + " |")
+    lines += ["", "## Configuration", "", f"robocog {__version__}; the swept axes above, and:"]
+    lines += ["", "| setting | value |", "|---|---|"]
+    varied = {a.name for a in spec.axes}
+    lines += [f"| {k} | {v} |" for k, v in summary.base.items() if k not in varied]
     return "\n".join(lines) + "\n"
 
 
