@@ -5,7 +5,13 @@ Names are ONA's in lower case, so a reader of ONA's documentation finds them.
 
 from __future__ import annotations
 
+import math
 from dataclasses import asdict, dataclass, fields
+
+#: the largest time (cycle, occurrence time, stamp id) the reasoner accepts: far beyond
+#: any run (a million cycles a second for thirty years), and small enough that sums of
+#: two such times stay exact in a double and within a 64-bit C long (compiled engine)
+MAX_TIME = 10**15
 
 
 @dataclass(slots=True)
@@ -73,13 +79,82 @@ class Config:
     volume_threshold: float = 0.0
 
     def update(self, **overrides: object) -> None:
-        """Set parameters by name; unknown names are an error, not a silent typo."""
-        names = {f.name for f in fields(self)}
-        for k, v in overrides.items():
-            if k not in names:
-                raise KeyError(f"unknown NAR parameter {k!r}")
-            setattr(self, k, type(getattr(self, k))(v))
+        """Set parameters by name; unknown names are an error, not a silent typo, and
+        every value is checked before any is set, so a refused call changes nothing."""
+        checked = {k: checked_value(k, v) for k, v in overrides.items()}
+        for k, v in checked.items():
+            setattr(self, k, v)
 
     def as_dict(self) -> dict[str, object]:
         """All parameters by name."""
         return asdict(self)
+
+
+_UNIT = (0.0, 1.0)
+#: the accepted range of each numeric parameter (inclusive). Values outside would make a
+#: reasoner divide by zero, loop without end, or allocate without bound, so they are
+#: refused where they enter (``--set``, shell commands, memory files), never clipped.
+RANGES: dict[str, tuple[float, float]] = {
+    "anticipation_threshold": _UNIT,
+    "anticipation_confidence": _UNIT,
+    "condition_threshold": _UNIT,
+    "decision_threshold": _UNIT,
+    "motor_babbling_chance": _UNIT,
+    "motor_babbling_suppression_threshold": _UNIT,
+    "babbling_ops": (1, 10_000),
+    "neg_goal_age_max": (0, MAX_TIME),
+    "event_durability": _UNIT,
+    "concept_durability": _UNIT,
+    "belief_concept_match_target": (1, 1_000_000),
+    "concept_threshold_adaptation": _UNIT,
+    "eternal_input_usage_boost": (0, MAX_TIME),
+    "question_priming": _UNIT,
+    "event_belief_distance": (0, MAX_TIME),
+    "similarity_distance": (0.0, 1e6),
+    "max_sequence_len": (1, 16),
+    "precondition_consequence_distance": (0, MAX_TIME),
+    "max_sequence_timediff": (0, MAX_TIME),
+    "concepts_max": (1, 100_000_000),
+    "cycling_belief_events_max": (1, 1_000_000),
+    "cycling_goal_events_max": (1, 1_000_000),
+    "cycling_goal_events_layers": (1, 1_000),
+    "operations_max": (1, 10_000),
+    "stamp_size": (1, 1_000),
+    "table_size": (1, 100_000),
+    "occurrence_time_index_size": (1, 10_000_000),
+    "truth_projection_decay": _UNIT,
+    "min_confidence": _UNIT,
+    "semantic_inference_nal_level": (1, 9),
+    "top_k_declarative_implications": (0, 1_000_000),
+    "belief_last_used_tolerance": (0, MAX_TIME),
+    "volume_threshold": _UNIT,
+}
+
+_TYPES: dict[str, type] = {f.name: type(f.default) for f in fields(Config)}
+
+
+def checked_value(name: str, value: object) -> object:
+    """``value`` as parameter ``name`` holds it, or ValueError/KeyError saying why not.
+
+    Booleans stay booleans (an integer is not taken for one, nor one for an integer);
+    numbers must be finite and within :data:`RANGES`; a float for an integer parameter
+    must be whole."""
+    kind = _TYPES.get(name)
+    if kind is None:
+        raise KeyError(f"unknown NAR parameter {name!r}")
+    if kind is bool:
+        if not isinstance(value, bool):
+            raise ValueError(f"{name} is true or false, not {value!r}")
+        return value
+    if isinstance(value, bool) or not isinstance(value, int | float):
+        raise ValueError(f"{name} is a number, not {value!r}")
+    if not math.isfinite(value):
+        raise ValueError(f"{name} must be a finite number, not {value!r}")
+    lo, hi = RANGES[name]
+    if not lo <= value <= hi:
+        raise ValueError(f"{name}={value!r} is out of range [{lo:g}, {hi:g}]")
+    if kind is int:
+        if value != int(value):
+            raise ValueError(f"{name} is a whole number, not {value!r}")
+        return int(value)
+    return float(value)
