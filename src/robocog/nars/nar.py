@@ -249,7 +249,7 @@ class NAR(SensorimotorMixin, DecisionMixin):
             f"concept capacity:\t\t{self.memory.capacity}",
             f"evicted concepts:\t\t{self.memory.evictions}",
             f"current average concept priority:\t{self._avg_priority():f}",
-            f"curring belief events cnt:\t\t{len(self.memory.belief_events)}",
+            f"current belief events cnt:\t\t{len(self.memory.belief_events)}",
             f"total input events:\t\t{self.stats['inputs']}",
             f"total derived events:\t\t{self.stats['derived']}",
             f"total selected events:\t\t{self.stats['selected']}",
