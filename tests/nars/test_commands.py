@@ -210,3 +210,14 @@ def test_random_lines_never_break_the_next_valid_inputs(junk: list[str]) -> None
 
 def test_the_engine_in_use_is_named() -> None:
     assert nars.ENGINE == "compiled" or nars.ENGINE.startswith("python")
+
+
+def test_sizes_read_as_binary_units() -> None:
+    from robocog.nars.config import concepts_for_memory, parse_size
+
+    assert parse_size("500MB") == 500 << 20 and parse_size("1.5g") == 3 << 29
+    assert parse_size("2048") == 2048 and parse_size("64 kb") == 64 << 10
+    for bad in ["", "MB", "5XB", "-1MB", "0", "nan", "inf", "1" * 30]:
+        with pytest.raises(ValueError):
+            parse_size(bad)
+    assert concepts_for_memory(parse_size("1TB")) == 100_000_000  # the config's bound

@@ -142,3 +142,27 @@ def test_a_signal_saves_the_memory_then_ends(tmp_path: Path, sig: signal.Signals
     assert save.exists() and not list(tmp_path.glob(".*.tmp"))
     again = NAR.load(save)
     assert again.ask("<a --> c>?") is not None
+
+
+def _capacity(args: list[str]) -> int:
+    r = _nar(args, b"*stats\n")
+    assert r.returncode == 0, r.stderr
+    line = next(x for x in r.stdout.decode().splitlines() if x.startswith("concept capacity"))
+    return int(line.split()[-1])
+
+
+def test_the_concept_capacity_follows_the_memory_budget() -> None:
+    from robocog.nars.config import BYTES_PER_CONCEPT, ENGINE_BYTES
+
+    assert _capacity([]) == ((256 << 20) - ENGINE_BYTES) // BYTES_PER_CONCEPT  # 256 MB
+    assert _capacity(["--memory", "500MB"]) == ((500 << 20) - ENGINE_BYTES) // BYTES_PER_CONCEPT
+    assert _capacity(["--memory", "ona"]) == 4096  # ONA 0.9.2's
+    assert _capacity(["--memory", "2GB", "--set", "concepts_max=300"]) == 300
+    # the default leaves room for the 10,000-link taxonomy (about 12,000 concepts)
+    assert _capacity([]) >= 12_000
+
+
+@pytest.mark.parametrize("size", ["10MB", "lots", "-5GB", "nanMB", "1e400GB"])
+def test_a_memory_budget_that_is_no_size_or_too_small_is_refused(size: str) -> None:
+    r = _nar(["--memory", size], b"")
+    assert r.returncode == 2 and b"--memory" in r.stderr and b"Traceback" not in r.stderr

@@ -158,3 +158,52 @@ def checked_value(name: str, value: object) -> object:
             raise ValueError(f"{name} is a whole number, not {value!r}")
         return int(value)
     return float(value)
+
+
+#: what the shell's memory budget is spent on (``robocog nar --memory``), measured with
+#: the pure-Python engine on the 10,000-link taxonomy of ``benchmarks/nars_core.py``
+#: (peak resident memory at capacities 12,000 / 50,000 / 200,000 concepts: 216 / 254 /
+#: 509 MB): each concept with its term, index entries, beliefs and events adds about
+#: 1.6-1.8 KiB, rounded up to 2 KiB; the interpreter, the engine, the rule tables and
+#: the caches the input fills take about 128 MiB besides. The compiled engine's objects
+#: are smaller, so the same budget leaves it room to spare.
+BYTES_PER_CONCEPT = 2048
+ENGINE_BYTES = 128 << 20
+#: the shell's budget when none is given: room for 65,536 concepts, enough for the
+#: taxonomy's 10,000 links (which need about 12,000)
+DEFAULT_MEMORY_BYTES = 256 << 20
+#: ONA 0.9.2's concept capacity (``--memory ona``)
+ONA_CONCEPTS_MAX = 4096
+_UNITS = {"": 1, "b": 1, "k": 1 << 10, "kb": 1 << 10, "m": 1 << 20, "mb": 1 << 20}
+_UNITS |= {"g": 1 << 30, "gb": 1 << 30, "t": 1 << 40, "tb": 1 << 40}
+
+
+def parse_size(text: str) -> int:
+    """Bytes of a size such as ``500MB``, ``1.5GB``, ``800M`` or ``1048576`` (binary
+    units: 1 MB = 2^20 bytes); ValueError for anything else."""
+    s = text.strip().lower().replace(" ", "")
+    digits = s.rstrip("kmgtb")
+    unit = s[len(digits) :]
+    if unit not in _UNITS or not digits or len(digits) > 20:
+        raise ValueError(f"{text!r} is not a size such as 500MB or 2GB")
+    try:
+        value = float(digits)
+    except ValueError:
+        raise ValueError(f"{text!r} is not a size such as 500MB or 2GB") from None
+    if not math.isfinite(value) or value <= 0:
+        raise ValueError(f"{text!r} is not a positive size")
+    return int(value * _UNITS[unit])
+
+
+def concepts_for_memory(budget: int) -> int:
+    """The concept capacity a memory budget of ``budget`` bytes pays for."""
+    least = ENGINE_BYTES + ONA_CONCEPTS_MAX * BYTES_PER_CONCEPT
+    if budget < least:
+        raise ValueError(
+            f"a memory of {budget >> 20} MB is too small: the engine takes about "
+            f"{ENGINE_BYTES >> 20} MB and ONA's {ONA_CONCEPTS_MAX} concepts "
+            f"{ONA_CONCEPTS_MAX * BYTES_PER_CONCEPT >> 20} MB more (use --memory ona "
+            "or --set concepts_max=N for less)"
+        )
+    hi = int(RANGES["concepts_max"][1])
+    return min(hi, (budget - ENGINE_BYTES) // BYTES_PER_CONCEPT)

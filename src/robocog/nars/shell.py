@@ -18,6 +18,7 @@ from pathlib import Path
 from types import FrameType
 
 from . import memfile
+from .config import DEFAULT_MEMORY_BYTES, ONA_CONCEPTS_MAX, concepts_for_memory, parse_size
 from .nar import NAR
 from .narsese import NarseseError
 
@@ -35,6 +36,13 @@ def configure(parser: argparse.ArgumentParser) -> None:
         metavar="DIR",
         help="the folder where '*save NAME' and '*load NAME' lines may write and read "
         "(without it those lines are refused)",
+    )
+    parser.add_argument(
+        "--memory",
+        metavar="SIZE",
+        help="memory budget from which the concept capacity follows, e.g. 500MB or 2GB "
+        f"(default {DEFAULT_MEMORY_BYTES >> 20}MB), or 'ona' for ONA's {ONA_CONCEPTS_MAX} "
+        "concepts; --set concepts_max=N overrides it",
     )
     parser.add_argument("--seed", type=int, default=666, help="random seed (ONA's is 666)")
     parser.add_argument(
@@ -64,6 +72,15 @@ def _value(text: str) -> object:
         return float(text)
     except ValueError:
         raise ValueError(f"--set: {text!r} is not a number or true/false") from None
+
+
+def capacity(memory: str | None) -> int:
+    """The concept capacity of ``--memory`` (None: the default budget; ``ona``: ONA's)."""
+    if memory is None:
+        return concepts_for_memory(DEFAULT_MEMORY_BYTES)
+    if memory.strip().lower() == "ona":
+        return ONA_CONCEPTS_MAX
+    return concepts_for_memory(parse_size(memory))
 
 
 def check_save_path(path: str) -> str | None:
@@ -144,6 +161,13 @@ def run(args: argparse.Namespace) -> int:
     except ValueError as exc:
         print(f"robocog nar: {exc}", file=sys.stderr)
         return 2
+    memory = getattr(args, "memory", None)
+    if "concepts_max" not in overrides and (memory is not None or not args.load):
+        try:
+            overrides["concepts_max"] = capacity(memory)
+        except ValueError as exc:
+            print(f"robocog nar: --memory: {exc}", file=sys.stderr)
+            return 2
     memory_dir = getattr(args, "memory_dir", None)
     if memory_dir is not None and not Path(memory_dir).is_dir():
         print(f"robocog nar: --memory-dir {memory_dir}: not a directory", file=sys.stderr)
