@@ -312,3 +312,13 @@ def test_a_save_killed_midway_leaves_its_temporary_file_to_the_next_save(tmp_pat
     fresh.write_bytes(b"")
     NAR().save(tmp_path / "m.nar")
     assert not stale.exists() and fresh.exists()
+
+
+@pytest.mark.parametrize("seed", [-5, 0, 666, (1 << 63) - 1])
+def test_any_seed_the_shell_accepts_survives_a_save(tmp_path: Path, seed: int) -> None:
+    nar = NAR(seed=seed)
+    nar.add_input("<a --> b>.")
+    nar.save(tmp_path / "m.nar")
+    again = NAR.load(tmp_path / "m.nar")
+    assert (again.seed, again.random_state()) == (seed, nar.random_state())
+    assert [again.rand() for _ in range(3)] == [nar.rand() for _ in range(3)]

@@ -586,7 +586,7 @@ class _Reader:
         return Snapshot(
             config=config,
             seed=_int(r["seed"], "reasoner.seed", -(1 << 63), (1 << 64) - 1),
-            rand=_int(r["rand"], "reasoner.rand", 0, (1 << 64) - 1),
+            rand=_int(r["rand"], "reasoner.rand", -(1 << 63), (1 << 64) - 1),
             time=now,
             stamp_base=_int(r["stamp_base"], "reasoner.stamp_base", 1, MAX_TIME),
             concept_threshold=_float(r["concept_threshold"], "reasoner.concept_threshold", 0, 1),

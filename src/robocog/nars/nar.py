@@ -101,8 +101,8 @@ class NAR(SensorimotorMixin, DecisionMixin):
 
     def set_random_state(self, state: int) -> None:
         """Continue the random sequence from ``state`` (a value of :meth:`random_state`)."""
-        if not 0 <= state < 1 << 64:
-            raise ValueError(f"a random state is in [0, 2**64), not {state}")
+        if not -(1 << 63) <= state < 1 << 64:
+            raise ValueError(f"a random state is in [-2**63, 2**64), not {state}")
         self._rand_state = state
 
     def rand(self) -> int:

@@ -161,6 +161,9 @@ def run(args: argparse.Namespace) -> int:
     except ValueError as exc:
         print(f"robocog nar: {exc}", file=sys.stderr)
         return 2
+    if not -(1 << 63) <= args.seed < 1 << 63:
+        print(f"robocog nar: --seed {args.seed}: out of range [-2**63, 2**63)", file=sys.stderr)
+        return 2
     memory = getattr(args, "memory", None)
     if "concepts_max" not in overrides and (memory is not None or not args.load):
         try:
