@@ -162,14 +162,15 @@ def checked_value(name: str, value: object) -> object:
 
 #: what the shell's memory budget is spent on (``robocog nar --memory``), measured with
 #: the pure-Python engine on the 10,000-link taxonomy of ``benchmarks/nars_core.py``:
-#: peak resident memory 509 MiB holding 189,128 concepts, 264 MiB holding the default
-#: capacity's ~58,000, i.e. about 2.1 KiB per concept (its term, index entries, beliefs
-#: and events) over about 128 MiB that the interpreter, the engine, the rule tables and
-#: the caches the input fills take; 2.25 KiB per concept leaves a margin. The compiled
-#: engine's objects are smaller, so the same budget leaves it room to spare.
-BYTES_PER_CONCEPT = 2304
-ENGINE_BYTES = 128 << 20
-#: the shell's budget when none is given: room for 58,254 concepts, enough for the
+#: peak resident memory 254 / 509 MiB holding 48,525 / 189,128 concepts (capacities
+#: 50,000 / 200,000), i.e. about 1.9 KiB per concept (its term, index entries, beliefs
+#: and events), rounded up to 2 KiB, over about 160 MiB that the interpreter, the
+#: engine, the rule tables, the caches the input fills and the garbage awaiting the
+#: cycle collector take. The compiled engine's objects are smaller, so the same budget
+#: leaves it room to spare.
+BYTES_PER_CONCEPT = 2048
+ENGINE_BYTES = 160 << 20
+#: the shell's budget when none is given: room for 49,152 concepts, enough for the
 #: taxonomy's 10,000 links (which need about 12,000)
 DEFAULT_MEMORY_BYTES = 256 << 20
 #: ONA 0.9.2's concept capacity (``--memory ona``)
