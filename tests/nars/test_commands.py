@@ -221,3 +221,48 @@ def test_sizes_read_as_binary_units() -> None:
         with pytest.raises(ValueError):
             parse_size(bad)
     assert concepts_for_memory(parse_size("1TB")) == 100_000_000  # the config's bound
+
+
+def _shell_run(lines: list[str], pure: bool) -> list[str]:
+    import os
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    env = dict(os.environ, PYTHONPATH=str(Path(__file__).resolve().parents[2] / "src"))
+    env.pop("ROBOCOG_PURE_PYTHON", None)
+    if pure:
+        env["ROBOCOG_PURE_PYTHON"] = "1"
+    r = subprocess.run(
+        [sys.executable, "-m", "robocog", "nar", "--quiet"],
+        input="\n".join(lines) + "\n",
+        capture_output=True,
+        text=True,
+        timeout=120,
+        env=env,
+    )
+    assert r.returncode == 0, r.stderr
+    return r.stdout.splitlines()
+
+
+_ENGINES = ["pure"] + (["compiled"] if nars.ENGINE == "compiled" else [])
+
+
+@pytest.mark.parametrize("engine", _ENGINES)
+@settings(max_examples=8, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(junk=_junk)
+def test_random_lines_never_break_the_shell_on_each_engine(engine: str, junk: list[str]) -> None:
+    """The same property through ``robocog nar``, once per engine this install has:
+    the script after the junk prints what it prints after the junk's accepted lines
+    alone (the refused ones leave only their error lines)."""
+    junk = [
+        j for j in junk if j.strip() and "\n" not in j and "\r" not in j and j.rstrip() != "quit"
+    ]
+    pure = engine == "pure"
+    marker = "//the script"
+    out = _shell_run([*junk, marker, *SCRIPT], pure)
+    refused = {int(x.split()[2].rstrip(",")) for x in out if x.startswith("Error: line ")}
+    kept = [j for i, j in enumerate(junk, start=1) if i not in refused]
+    ref = _shell_run([*kept, marker, *SCRIPT], pure)
+    start = "Comment: the script"
+    assert out[out.index(start) :] == ref[ref.index(start) :]
