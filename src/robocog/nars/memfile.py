@@ -44,7 +44,7 @@ HEADER_BYTES = 256
 #: bounds on what a file may make the reader hold: its size on disk, its size once
 #: decompressed (a small file can inflate a thousandfold), one term's text
 MAX_FILE_BYTES = 1 << 30
-MAX_JSON_BYTES = 4 << 30
+MAX_JSON_BYTES = 2 << 30
 MAX_TERM_CHARS = 65_536
 MAX_NAME_CHARS = 1_024
 #: a temporary file of an interrupted save older than this is removed by the next save
