@@ -76,14 +76,15 @@ def _workload() -> str:
     return "\n".join(lines) + "\n"
 
 
-def _shell(text: str, pure: bool) -> str:
+def _shell(text: str, pure: bool, memory_dir: Path | None = None) -> str:
     """What ``robocog nar`` prints for ``text`` with the compiled or the pure engine."""
     env = dict(os.environ)
     env.pop("ROBOCOG_PURE_PYTHON", None)
     if pure:
         env["ROBOCOG_PURE_PYTHON"] = "1"
     run = subprocess.run(
-        [sys.executable, "-m", "robocog", "nar"],
+        [sys.executable, "-m", "robocog", "nar"]
+        + ([] if memory_dir is None else ["--memory-dir", str(memory_dir)]),
         input=text,
         capture_output=True,
         text=True,
@@ -108,9 +109,9 @@ def test_each_engine_continues_from_the_others_save(tmp_path: Path) -> None:
     first, rest = "\n".join(lines[:100]), "\n".join(lines[100:]) + "\n"
     continued = []
     for saver_is_pure in (False, True):
-        path = tmp_path / f"saved-{saver_is_pure}.nar"
-        _shell(f"{first}\n*save {path}\n", saver_is_pure)
-        continued.append(_shell(f"*load {path}\n{rest}", not saver_is_pure))
+        name = f"saved-{saver_is_pure}.nar"
+        _shell(f"{first}\n*save {name}\n", saver_is_pure, tmp_path)
+        continued.append(_shell(f"*load {name}\n{rest}", not saver_is_pure, tmp_path))
     # read by either engine, the saved state goes on exactly as the run that never stopped
     whole = _shell(_workload(), False)
     for out in continued:

@@ -296,18 +296,3 @@ def test_shell_settings_accept_boolean_words_and_refuse_nonsense() -> None:
     assert bad.returncode == 2
     assert "not a number or true/false" in bad.stderr
     assert "Traceback" not in bad.stderr
-
-
-def test_a_memory_saved_in_another_layout_is_refused_with_its_format(tmp_path) -> None:  # noqa: ANN001
-    import pickle
-
-    import pytest
-
-    old = tmp_path / "old.nar"
-    old.write_bytes(pickle.dumps({"format": "robocog-nar-1"}))
-    with pytest.raises(ValueError, match="robocog-nar-1"):
-        NAR.load(old)
-    junk = tmp_path / "junk.nar"
-    junk.write_bytes(pickle.dumps([1, 2, 3]))
-    with pytest.raises(ValueError, match="not a saved reasoner"):
-        NAR.load(junk)

@@ -5,7 +5,13 @@ Names are ONA's in lower case, so a reader of ONA's documentation finds them.
 
 from __future__ import annotations
 
+import math
 from dataclasses import asdict, dataclass, fields
+
+#: the largest time (cycle, occurrence time, stamp id) the reasoner accepts: far beyond
+#: any run (a million cycles a second for thirty years), and small enough that sums of
+#: two such times stay exact in a double and within a 64-bit C long (compiled engine)
+MAX_TIME = 10**15
 
 
 @dataclass(slots=True)
@@ -73,13 +79,132 @@ class Config:
     volume_threshold: float = 0.0
 
     def update(self, **overrides: object) -> None:
-        """Set parameters by name; unknown names are an error, not a silent typo."""
-        names = {f.name for f in fields(self)}
-        for k, v in overrides.items():
-            if k not in names:
-                raise KeyError(f"unknown NAR parameter {k!r}")
-            setattr(self, k, type(getattr(self, k))(v))
+        """Set parameters by name; unknown names are an error, not a silent typo, and
+        every value is checked before any is set, so a refused call changes nothing."""
+        checked = {k: checked_value(k, v) for k, v in overrides.items()}
+        for k, v in checked.items():
+            setattr(self, k, v)
 
     def as_dict(self) -> dict[str, object]:
         """All parameters by name."""
         return asdict(self)
+
+
+_UNIT = (0.0, 1.0)
+#: the accepted range of each numeric parameter (inclusive). Values outside would make a
+#: reasoner divide by zero, loop without end, or allocate without bound, so they are
+#: refused where they enter (``--set``, shell commands, memory files), never clipped.
+RANGES: dict[str, tuple[float, float]] = {
+    "anticipation_threshold": _UNIT,
+    "anticipation_confidence": _UNIT,
+    "condition_threshold": _UNIT,
+    "decision_threshold": _UNIT,
+    "motor_babbling_chance": _UNIT,
+    "motor_babbling_suppression_threshold": _UNIT,
+    "babbling_ops": (1, 10_000),
+    "neg_goal_age_max": (0, MAX_TIME),
+    "event_durability": _UNIT,
+    "concept_durability": _UNIT,
+    "belief_concept_match_target": (1, 1_000_000),
+    "concept_threshold_adaptation": _UNIT,
+    "eternal_input_usage_boost": (0, MAX_TIME),
+    "question_priming": _UNIT,
+    "event_belief_distance": (0, MAX_TIME),
+    "similarity_distance": (0.0, 1e6),
+    "max_sequence_len": (1, 16),
+    "precondition_consequence_distance": (0, MAX_TIME),
+    "max_sequence_timediff": (0, MAX_TIME),
+    "concepts_max": (1, 100_000_000),
+    "cycling_belief_events_max": (1, 1_000_000),
+    "cycling_goal_events_max": (1, 1_000_000),
+    "cycling_goal_events_layers": (1, 1_000),
+    "operations_max": (1, 10_000),
+    "stamp_size": (1, 1_000),
+    "table_size": (1, 100_000),
+    "occurrence_time_index_size": (1, 10_000_000),
+    "truth_projection_decay": _UNIT,
+    "min_confidence": _UNIT,
+    "semantic_inference_nal_level": (1, 9),
+    "top_k_declarative_implications": (0, 1_000_000),
+    "belief_last_used_tolerance": (0, MAX_TIME),
+    "volume_threshold": _UNIT,
+}
+
+_TYPES: dict[str, type] = {f.name: type(f.default) for f in fields(Config)}
+
+
+def checked_value(name: str, value: object) -> object:
+    """``value`` as parameter ``name`` holds it, or ValueError/KeyError saying why not.
+
+    Booleans stay booleans (an integer is not taken for one, nor one for an integer);
+    numbers must be finite and within :data:`RANGES`; a float for an integer parameter
+    must be whole."""
+    kind = _TYPES.get(name)
+    if kind is None:
+        raise KeyError(f"unknown NAR parameter {name!r}")
+    if kind is bool:
+        if not isinstance(value, bool):
+            raise ValueError(f"{name} is true or false, not {value!r}")
+        return value
+    if isinstance(value, bool) or not isinstance(value, int | float):
+        raise ValueError(f"{name} is a number, not {value!r}")
+    if not math.isfinite(value):
+        raise ValueError(f"{name} must be a finite number, not {value!r}")
+    lo, hi = RANGES[name]
+    if not lo <= value <= hi:
+        raise ValueError(f"{name}={value!r} is out of range [{lo:g}, {hi:g}]")
+    if kind is int:
+        if value != int(value):
+            raise ValueError(f"{name} is a whole number, not {value!r}")
+        return int(value)
+    return float(value)
+
+
+#: what the shell's memory budget is spent on (``robocog nar --memory``), measured with
+#: the pure-Python engine on the 10,000-link taxonomy of ``benchmarks/nars_core.py``:
+#: peak resident memory 254 / 509 MiB holding 48,525 / 189,128 concepts (capacities
+#: 50,000 / 200,000), i.e. about 1.9 KiB per concept (its term, index entries, beliefs
+#: and events), rounded up to 2 KiB, over about 160 MiB that the interpreter, the
+#: engine, the rule tables, the caches the input fills and the garbage awaiting the
+#: cycle collector take. The compiled engine's objects are smaller, so the same budget
+#: leaves it room to spare.
+BYTES_PER_CONCEPT = 2048
+ENGINE_BYTES = 160 << 20
+#: the shell's budget when none is given: room for 49,152 concepts, enough for the
+#: taxonomy's 10,000 links (which need about 12,000)
+DEFAULT_MEMORY_BYTES = 256 << 20
+#: ONA 0.9.2's concept capacity (``--memory ona``)
+ONA_CONCEPTS_MAX = 4096
+_UNITS = {"": 1, "b": 1, "k": 1 << 10, "kb": 1 << 10, "m": 1 << 20, "mb": 1 << 20}
+_UNITS |= {"g": 1 << 30, "gb": 1 << 30, "t": 1 << 40, "tb": 1 << 40}
+
+
+def parse_size(text: str) -> int:
+    """Bytes of a size such as ``500MB``, ``1.5GB``, ``800M`` or ``1048576`` (binary
+    units: 1 MB = 2^20 bytes); ValueError for anything else."""
+    s = text.strip().lower().replace(" ", "")
+    digits = s.rstrip("kmgtb")
+    unit = s[len(digits) :]
+    if unit not in _UNITS or not digits or len(digits) > 20:
+        raise ValueError(f"{text!r} is not a size such as 500MB or 2GB")
+    try:
+        value = float(digits)
+    except ValueError:
+        raise ValueError(f"{text!r} is not a size such as 500MB or 2GB") from None
+    if not math.isfinite(value) or value <= 0:
+        raise ValueError(f"{text!r} is not a positive size")
+    return int(value * _UNITS[unit])
+
+
+def concepts_for_memory(budget: int) -> int:
+    """The concept capacity a memory budget of ``budget`` bytes pays for."""
+    least = ENGINE_BYTES + ONA_CONCEPTS_MAX * BYTES_PER_CONCEPT
+    if budget < least:
+        raise ValueError(
+            f"a memory of {budget >> 20} MB is too small: the engine takes about "
+            f"{ENGINE_BYTES >> 20} MB and ONA's {ONA_CONCEPTS_MAX} concepts "
+            f"{ONA_CONCEPTS_MAX * BYTES_PER_CONCEPT >> 20} MB more (use --memory ona "
+            "or --set concepts_max=N for less)"
+        )
+    hi = int(RANGES["concepts_max"][1])
+    return min(hi, (budget - ENGINE_BYTES) // BYTES_PER_CONCEPT)

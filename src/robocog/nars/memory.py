@@ -245,6 +245,26 @@ class Memory:
         self._groups = {}
         self._unfiled = list(self.concepts.values())
 
+    def restore(self, concepts: list[Concept], next_concept_id: int, evictions: int) -> None:
+        """Hold ``concepts`` (in the order they were made), as a saved memory lists them:
+        the atom index is rebuilt in that order, which is the order it had."""
+        self.concepts.clear()
+        self.atom_index.clear()
+        self._groups.clear()
+        self._unfiled = list(concepts)
+        for c in concepts:
+            c.filed = None
+            c.book = None
+            self.concepts[c.term] = c
+            for a in c.term.index_names():
+                d = self.atom_index.get(a)
+                if d is None:
+                    self.atom_index[a] = {c: None}
+                else:
+                    d[c] = None
+        self.next_concept_id = next_concept_id
+        self.evictions = evictions
+
     def __len__(self) -> int:
         return len(self.concepts)
 

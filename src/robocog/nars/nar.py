@@ -11,18 +11,17 @@ import heapq
 import itertools
 import math
 import os
-import pickle
-import tempfile
 from collections.abc import Callable
 from pathlib import Path
 
+from . import commands, memfile
 from . import truth as tf
-from .config import Config
+from .config import MAX_TIME, Config
 from .decision import DecisionMixin
 from .event import BELIEF, ETERNAL, GOAL, Event, Implication, revised_or_chosen
 from .inference import Derivation, apply_double, apply_single, special
 from .memory import Concept, Memory
-from .narsese import NarseseError, Sentence, parse_sentence
+from .narsese import MAX_LINE, NarseseError, Sentence, parse_sentence
 from .rules import RuleTable, rejected
 from .sensorimotor import SensorimotorMixin
 from .stamp import fmt, has_duplicate, merge, overlap
@@ -30,11 +29,10 @@ from .terms import F_COMPOSED, TEMPORAL_IMPLICATION, Term, atom
 from .truth import Truth, expectation
 from .unify import unify
 
-#: bumped whenever the pickled layout changes (2: tables keep their expectations, concepts
-#: whether they were ever in the time index; 3: truths, events, implications, tables and
-#: concepts are saved by their fields, alike from the compiled and the pure engine)
-SAVE_FORMAT = "robocog-nar-3"
 PENDING_QUESTIONS = 32
+#: the most cycles one input line may ask for (a bare number): ONA's examples ask for
+#: a thousand at most; a hundred million is hours of work, so more is a typo
+MAX_CYCLES_PER_LINE = 100_000_000
 DEFAULT_OPERATIONS = (
     "^left",
     "^right",
@@ -71,6 +69,8 @@ class NAR(SensorimotorMixin, DecisionMixin):
         self._execution_cbs: list[Callable[[str, Term | None], None]] = []
         self.output: Callable[[str], None] | None = None
         self.operations: dict[str, Callable[[Term | None], object] | None] = {}
+        #: where ``*save``/``*load`` lines may write and read (None: they are refused)
+        self.memory_dir: Path | None = None
         self.reset()
 
     # ------------------------------------------------------------------ state
@@ -94,6 +94,16 @@ class NAR(SensorimotorMixin, DecisionMixin):
         self._init_sensorimotor()
         self._init_goals()
         self.memory.on_remove = self._forget_concept
+
+    def random_state(self) -> int:
+        """The random generator's state, as a saved memory keeps it."""
+        return self._rand_state
+
+    def set_random_state(self, state: int) -> None:
+        """Continue the random sequence from ``state`` (a value of :meth:`random_state`)."""
+        if not -(1 << 63) <= state < 1 << 64:
+            raise ValueError(f"a random state is in [-2**63, 2**64), not {state}")
+        self._rand_state = state
 
     def rand(self) -> int:
         """ONA's ``myrand``: the POSIX example LCG, 0..32767."""
@@ -136,12 +146,31 @@ class NAR(SensorimotorMixin, DecisionMixin):
         if self.output is not None:
             self.output(line)
 
+    def emit(self, line: str) -> None:
+        """Write one output line (to ``output``, if set), as the reasoner's own are."""
+        self._print(line)
+
+    def name_operation(self, k: int, name: str) -> None:
+        """ONA's ``*setopname k name``: operation ``k`` (1-based) is called ``name``."""
+        if not 1 <= k <= self.config.operations_max:
+            raise ValueError(
+                f"operation number {k} is out of range [1, {self.config.operations_max}]"
+            )
+        if not name.startswith("^"):
+            raise ValueError("operation names start with '^'")
+        names = list(self.op_names)
+        while len(names) < k:
+            names.append(f"^op{len(names) + 1}")
+        names[k - 1] = name
+        self.op_names = [n for i, n in enumerate(names) if i < k or n != name]
+
     def _shows(self, priority: float) -> bool:
         return self.config.print_derivations and priority > self.config.volume_threshold
 
     # ------------------------------------------------------------------ input
     def add_input(self, text: str) -> None:
-        """One Narsese line or shell command; bad input raises :class:`NarseseError`."""
+        """One Narsese line or shell command; bad input raises :class:`NarseseError`
+        and leaves the reasoner as it was."""
         line = text.strip()
         if not line:
             self.cycles(1)
@@ -149,8 +178,14 @@ class NAR(SensorimotorMixin, DecisionMixin):
         if line.startswith("//"):
             self._print("Comment: " + line[2:])
             return
+        if len(line) > MAX_LINE:
+            raise NarseseError(1, MAX_LINE + 1, f"line longer than {MAX_LINE} characters")
         if line.isdigit():
+            if not (line.isascii() and len(line) <= 12):
+                raise NarseseError(1, 1, "a number of cycles is written in digits 0-9")
             n = int(line)
+            if n > MAX_CYCLES_PER_LINE:
+                raise NarseseError(1, 1, f"at most {MAX_CYCLES_PER_LINE} cycles per line")
             self._print(f"performing {n} inference steps:")
             self.cycles(n)
             self._print(f"done with {n} additional inference steps.")
@@ -159,6 +194,8 @@ class NAR(SensorimotorMixin, DecisionMixin):
             self._command(line)
             return
         s = parse_sentence(line)
+        if self.time >= MAX_TIME:
+            raise NarseseError(1, 1, f"the reasoner's time has reached {MAX_TIME}; *reset")
         self.add_sentence(s)
 
     def add_sentence(self, s: Sentence) -> None:
@@ -189,83 +226,11 @@ class NAR(SensorimotorMixin, DecisionMixin):
 
     # ---------------------------------------------------------------- commands
     def _command(self, line: str) -> None:
-        c = self.config
-        cmd, _, value = line[1:].partition("=")
-        cmd = cmd.strip()
-        value = value.strip()
-        try:
-            if cmd == "reset":
-                self.reset()
-            elif cmd == "volume":
-                c.print_derivations = True
-                c.volume_threshold = 1.0 - float(value) / 100.0
-            elif cmd == "motorbabbling":
-                if value == "false":
-                    c.motor_babbling_chance = 0.0
-                elif value == "true":
-                    c.motor_babbling_chance = 0.2
-                else:
-                    c.motor_babbling_chance = float(value)
-            elif cmd == "babblingops":
-                c.babbling_ops = int(value)
-            elif cmd == "decisionthreshold":
-                c.decision_threshold = float(value)
-            elif cmd == "anticipationconfidence":
-                c.anticipation_confidence = float(value)
-            elif cmd == "questionpriming":
-                c.question_priming = float(value)
-            elif cmd == "similaritydistance":
-                c.similarity_distance = float(value)
-            elif cmd == "currenttime":
-                self.time = int(value)
-            elif cmd == "stampid":
-                self.stamp_base = int(value)
-            elif cmd.startswith("setopname"):
-                parts = line.split()
-                k, name = int(parts[1]), parts[2]
-                if not name.startswith("^"):
-                    raise ValueError("operation names start with '^'")
-                while len(self.op_names) < k:
-                    self.op_names.append(f"^op{len(self.op_names) + 1}")
-                self.op_names[k - 1] = name
-                self.op_names = [n for i, n in enumerate(self.op_names) if i < k or n != name]
-            elif cmd == "concepts":
-                for con in self.memory:
-                    self._print(self._concept_line(con))
-            elif cmd == "stats":
-                for line_ in self.statistics():
-                    self._print(line_)
-            elif cmd.startswith("save") or cmd.startswith("load"):
-                parts = line.split(maxsplit=1)
-                if len(parts) < 2:
-                    raise ValueError("a file name is needed")
-                if cmd.startswith("save"):
-                    self.save(parts[1])
-                else:
-                    self._adopt(NAR.load(parts[1]))
-            elif cmd in ("concurrent",):
-                self.time = max(1, self.time - 1)
-            elif cmd in (
-                "setoparg",
-                "restrictedconceptcreation",
-                "setvalue",
-                "space",
-                "query",
-                "setopstdin",
-                "stampimport",
-                "cycling_belief_events",
-                "cycling_goal_events",
-                "opconfig",
-                "inverted_atom_index",
-                "occurrence_time_index",
-            ) or cmd.split()[0] in ("setoparg", "space", "setvalue", "query", "setopstdin"):
-                pass  # accepted for compatibility; no effect on this reasoner
-            else:
-                raise ValueError(f"unknown command *{cmd}")
-        except (ValueError, IndexError, OSError) as exc:
-            raise NarseseError(1, 1, str(exc)) from None
+        """A ``*`` line: see :mod:`robocog.nars.commands` for the table of commands."""
+        commands.execute(self, line)
 
-    def _concept_line(self, con: Concept) -> str:
+    def concept_line(self, con: Concept) -> str:
+        """ONA's ``*concepts`` line for ``con``."""
         b = con.belief
         tv = f" {b.truth}" if b is not None else ""
         return (
@@ -284,7 +249,7 @@ class NAR(SensorimotorMixin, DecisionMixin):
             f"concept capacity:\t\t{self.memory.capacity}",
             f"evicted concepts:\t\t{self.memory.evictions}",
             f"current average concept priority:\t{self._avg_priority():f}",
-            f"curring belief events cnt:\t\t{len(self.memory.belief_events)}",
+            f"current belief events cnt:\t\t{len(self.memory.belief_events)}",
             f"total input events:\t\t{self.stats['inputs']}",
             f"total derived events:\t\t{self.stats['derived']}",
             f"total selected events:\t\t{self.stats['selected']}",
@@ -704,83 +669,48 @@ class NAR(SensorimotorMixin, DecisionMixin):
 
     # ------------------------------------------------------------ persistence
     def save(self, path: str | os.PathLike[str]) -> None:
-        """Write the whole memory to ``path`` atomically (temp file, then rename)."""
-        path = Path(path)
-        state = {
-            "format": SAVE_FORMAT,
-            "config": self.config.as_dict(),
-            "seed": self.seed,
-            "rand": self._rand_state,
-            "memory": self.memory,
-            "time": self.time,
-            "stamp_base": self.stamp_base,
-            "concept_threshold": self.concept_threshold,
-            "matched_total": self.matched_total,
-            "op_names": self.op_names,
-            "stats": self.stats,
-            "pending": self.pending_questions,
-            "time_index": self.time_index,
-            "table_index": self.table_index,
-            "links_by_subject": self.links_by_subject,
-            "general_links": self.general_links,
-            "goal_layers": self.goal_layers,
-            "recent_goal_concepts": self.recent_goal_concepts,
-        }
-        fd, tmp = tempfile.mkstemp(dir=path.parent or ".", prefix=path.name, suffix=".tmp")
-        try:
-            with os.fdopen(fd, "wb") as f:
-                pickle.dump(state, f, protocol=pickle.HIGHEST_PROTOCOL)
-                f.flush()
-                os.fsync(f.fileno())
-            os.replace(tmp, path)
-        except BaseException:
-            if os.path.exists(tmp):
-                os.unlink(tmp)
-            raise
+        """Write the whole memory to ``path`` as a memory file (``memfile``): atomically,
+        mode 0600, never over a file that is not a robocog memory."""
+        memfile.write_file(path, memfile.encode(self))
 
     @classmethod
     def load(cls, path: str | os.PathLike[str]) -> NAR:
-        """A reasoner restored from a file written by :meth:`save`."""
-        with open(path, "rb") as f:
-            state = pickle.load(f)  # noqa: S301 - files written by save()
-        if not isinstance(state, dict) or not str(state.get("format", "")).startswith(
-            "robocog-nar-"
-        ):
-            raise ValueError(f"{path}: not a saved reasoner")
-        if state["format"] != SAVE_FORMAT:
-            raise ValueError(
-                f"{path}: saved in format {state['format']}, this robocog reads {SAVE_FORMAT}"
-            )
-        nar = cls(seed=state["seed"])
-        cfg = state["config"]
-        for k, v in cfg.items():
-            setattr(nar.config, k, v)
-        nar.memory = state["memory"]
-        nar._rand_state = state["rand"]
-        nar.time = state["time"]
-        nar.stamp_base = state["stamp_base"]
-        nar.concept_threshold = state["concept_threshold"]
-        nar.matched_total = state["matched_total"]
-        nar.op_names = state["op_names"]
-        nar.stats = state["stats"]
-        nar.pending_questions = state.get("pending", {})
-        for key in (
-            "time_index",
-            "table_index",
-            "goal_layers",
-            "recent_goal_concepts",
-        ):
-            if key in state:
-                setattr(nar, key, state[key])
+        """A reasoner restored from a file written by :meth:`save`; a file that is not
+        one, or that is damaged, raises :class:`memfile.MemoryFileError` (one line)."""
+        snap = memfile.load_file(path)
+        nar = cls(seed=snap.seed)
+        nar._take(snap)
         return nar
 
-    def _adopt(self, other: NAR) -> None:
-        """Take over another reasoner's state (``*load`` in a running shell)."""
-        keep_output = self.output
-        cbs = (self._answer_cbs, self._derivation_cbs, self._execution_cbs, self.operations)
-        self.__dict__.update(other.__dict__)
-        self.output = keep_output
-        self._answer_cbs, self._derivation_cbs, self._execution_cbs, self.operations = cbs
+    def restore(self, path: str | os.PathLike[str]) -> None:
+        """Replace this reasoner's state by the one saved at ``path`` (``*load``); the
+        output, callbacks and registered operations stay. A refused file changes
+        nothing."""
+        snap = memfile.load_file(path)
+        self._take(snap)
+
+    def _take(self, snap: memfile.Snapshot) -> None:
+        for k, v in snap.config.items():
+            setattr(self.config, k, v)
+        self.seed = snap.seed
+        self._rand_state = snap.rand
+        self.memory = snap.memory
+        self.time = snap.time
+        self.stamp_base = snap.stamp_base
+        self.concept_threshold = snap.concept_threshold
+        self.matched_total = snap.matched_total
+        self.process_id = snap.process_id
+        self.op_names = snap.op_names
+        self.stats = snap.stats
+        self.pending_questions = snap.pending_questions
+        # the sensorimotor indexes' caches start empty, as they do after a reset
+        self._init_sensorimotor()
+        self.time_index = snap.time_index
+        self.table_index = snap.table_index
+        self.links_by_subject = snap.links_by_subject
+        self.general_links = snap.general_links
+        self.goal_layers = snap.goal_layers
+        self.recent_goal_concepts = snap.recent_goal_concepts
         self.memory.on_remove = self._forget_concept
 
 

@@ -14,6 +14,7 @@ from functools import lru_cache
 
 from lark import Lark, Token, Transformer, UnexpectedEOF, UnexpectedInput, UnexpectedToken, v_args
 
+from .config import MAX_TIME
 from .terms import (
     EXT_SET,
     INT_SET,
@@ -158,7 +159,13 @@ class _Build(Transformer):
         return compound(INT_SET, _dedupe(items))
 
     def dt(self, items: list[Token]) -> float:
-        return float(str(items[0])[3:])
+        dt = float(str(items[0])[3:])
+        if abs(dt) > MAX_TIME:
+            raise _Positioned(
+                items[0].column,  # type: ignore[arg-type]
+                f"dt={str(items[0])[3:][:30]} is out of range [-{MAX_TIME}, {MAX_TIME}]",
+            )
+        return dt
 
     def truth(self, items: list[Token]) -> Truth:
         s = str(items[0])

@@ -11,8 +11,14 @@ from __future__ import annotations
 import argparse
 import gc
 import os
+import signal
 import sys
+import tempfile
+from pathlib import Path
+from types import FrameType
 
+from . import memfile
+from .config import DEFAULT_MEMORY_BYTES, ONA_CONCEPTS_MAX, concepts_for_memory, parse_size
 from .nar import NAR
 from .narsese import NarseseError
 
@@ -20,7 +26,24 @@ from .narsese import NarseseError
 def configure(parser: argparse.ArgumentParser) -> None:
     """Declare the shell's arguments."""
     parser.add_argument("--load", metavar="FILE", help="start from a memory saved earlier")
-    parser.add_argument("--save", metavar="FILE", help="save the memory here at the end")
+    parser.add_argument(
+        "--save",
+        metavar="FILE",
+        help="save the memory here at the end, or when interrupted (SIGINT, SIGTERM)",
+    )
+    parser.add_argument(
+        "--memory-dir",
+        metavar="DIR",
+        help="the folder where '*save NAME' and '*load NAME' lines may write and read "
+        "(without it those lines are refused)",
+    )
+    parser.add_argument(
+        "--memory",
+        metavar="SIZE",
+        help="memory budget from which the concept capacity follows, e.g. 500MB or 2GB "
+        f"(default {DEFAULT_MEMORY_BYTES >> 20}MB), or 'ona' for ONA's {ONA_CONCEPTS_MAX} "
+        "concepts; --set concepts_max=N overrides it",
+    )
     parser.add_argument("--seed", type=int, default=666, help="random seed (ONA's is 666)")
     parser.add_argument(
         "--set",
@@ -51,6 +74,83 @@ def _value(text: str) -> object:
         raise ValueError(f"--set: {text!r} is not a number or true/false") from None
 
 
+def capacity(memory: str | None) -> int:
+    """The concept capacity of ``--memory`` (None: the default budget; ``ona``: ONA's)."""
+    if memory is None:
+        return concepts_for_memory(DEFAULT_MEMORY_BYTES)
+    if memory.strip().lower() == "ona":
+        return ONA_CONCEPTS_MAX
+    return concepts_for_memory(parse_size(memory))
+
+
+def check_save_path(path: str) -> str | None:
+    """Why the memory cannot be saved at ``path`` (None if it can): checked before any
+    input is read, so that a long session does not end in an unsaved memory."""
+    target = Path(path)
+    if target.is_dir():
+        return f"--save {path}: is a directory"
+    folder = target.parent
+    if not folder.is_dir():
+        return f"--save {path}: the folder {folder} does not exist"
+    if target.exists() and not memfile.is_memory_file(target):
+        return f"--save {path}: exists and is not a robocog memory; not overwritten"
+    try:  # a real write, since permission bits do not tell (root, read-only mounts)
+        fd, probe = tempfile.mkstemp(dir=folder, prefix=f".{target.name}.", suffix=".tmp")
+        os.close(fd)
+        os.unlink(probe)
+    except OSError as exc:
+        return f"--save {path}: the folder {folder} is not writable ({exc.strerror or exc})"
+    return None
+
+
+class _Stop(BaseException):
+    """Raised by the signal handler to leave a blocking read of the input."""
+
+
+class _Abort(BaseException):
+    """A second signal before the first was acted on: end without saving."""
+
+
+class _Signals:
+    """SIGINT and SIGTERM end the session after the line in progress, saving first when
+    ``--save`` was given; a second signal ends it at once (without saving)."""
+
+    def __init__(self) -> None:
+        self.received: int | None = None
+        self.busy = False
+        self.old: dict[int, object] = {}
+
+    def install(self) -> None:
+        for sig in (signal.SIGINT, signal.SIGTERM):
+            self.old[sig] = signal.signal(sig, self.handle)
+
+    def ignore(self) -> None:
+        """From now on signals are ignored (the final save must not be cut short)."""
+        for sig in self.old:
+            signal.signal(sig, signal.SIG_IGN)
+
+    def restore(self) -> None:
+        for sig, old in self.old.items():
+            signal.signal(sig, old)  # type: ignore[arg-type]
+
+    def handle(self, signum: int, frame: FrameType | None) -> None:
+        if self.received is not None:
+            raise _Abort
+        self.received = signum
+        if not self.busy:
+            raise _Stop
+
+
+def _decoded(raw: bytes, lineno: int) -> tuple[str | None, str | None]:
+    """(the line, None) or (None, the error line for its first invalid UTF-8 byte)."""
+    try:
+        return raw.decode("utf-8"), None
+    except UnicodeDecodeError as exc:
+        column = len(raw[: exc.start].decode("utf-8", "replace")) + 1
+        bad = raw[exc.start : exc.start + 1].hex()
+        return None, f"Error: line {lineno}, column {column}: invalid UTF-8 byte 0x{bad}"
+
+
 def run(args: argparse.Namespace) -> int:
     """Read stdin until EOF or ``quit``, printing ONA's output lines."""
     overrides = {}
@@ -61,6 +161,25 @@ def run(args: argparse.Namespace) -> int:
     except ValueError as exc:
         print(f"robocog nar: {exc}", file=sys.stderr)
         return 2
+    if not -(1 << 63) <= args.seed < 1 << 63:
+        print(f"robocog nar: --seed {args.seed}: out of range [-2**63, 2**63)", file=sys.stderr)
+        return 2
+    memory = getattr(args, "memory", None)
+    if "concepts_max" not in overrides and (memory is not None or not args.load):
+        try:
+            overrides["concepts_max"] = capacity(memory)
+        except ValueError as exc:
+            print(f"robocog nar: --memory: {exc}", file=sys.stderr)
+            return 2
+    memory_dir = getattr(args, "memory_dir", None)
+    if memory_dir is not None and not Path(memory_dir).is_dir():
+        print(f"robocog nar: --memory-dir {memory_dir}: not a directory", file=sys.stderr)
+        return 2
+    if args.save:
+        problem = check_save_path(args.save)
+        if problem is not None:
+            print(f"robocog nar: {problem}", file=sys.stderr)
+            return 2
     try:
         if args.load:
             nar = NAR.load(args.load)
@@ -69,8 +188,11 @@ def run(args: argparse.Namespace) -> int:
         else:
             nar = NAR(seed=args.seed, **overrides)
     except (OSError, ValueError, KeyError) as exc:
-        print(f"robocog nar: {exc}", file=sys.stderr)
+        message = exc.args[0] if isinstance(exc, KeyError) and exc.args else exc
+        print(f"robocog nar: {message}", file=sys.stderr)
         return 2
+    if memory_dir is not None:
+        nar.memory_dir = Path(memory_dir)
     # The reasoner's garbage is acyclic: reference counting frees it (a 1,000-link
     # taxonomy leaves ~900 objects in cycles, 20,000 random lines none). Yet each
     # collection of the youngest generation walks into the long-lived concepts and cost
@@ -78,33 +200,72 @@ def run(args: argparse.Namespace) -> int:
     # million objects have been added net, which bounds whatever cycles there are.
     gc.set_threshold(1_000_000, 20, 100)
     out = sys.stdout
+    if hasattr(out, "reconfigure"):
+        # whatever the locale, output is UTF-8 (as input is), never an encoding error
+        out.reconfigure(encoding="utf-8", errors="backslashreplace")
     nar.output = lambda line: out.write(line + "\n")
     nar.config.print_derivations = True
-    for lineno, raw in enumerate(sys.stdin, start=1):
-        line = raw.rstrip()
-        if line == "quit":
-            break
+    signals = _Signals()
+    signals.install()
+    aborted = False
+    try:
+        for lineno, raw in enumerate(sys.stdin.buffer, start=1):
+            signals.busy = True
+            try:
+                if _line(nar, raw, lineno, out):
+                    break
+            finally:
+                signals.busy = False
+            if signals.received is not None:
+                break
+    except _Stop:
+        pass
+    except _Abort:
+        aborted = True
+    signals.ignore()
+    code = 0 if signals.received is None else 128 + signals.received
+    if args.save and not aborted:
         try:
-            nar.add_input(line)
-        except BrokenPipeError:
-            # the reader of our output has gone (``| head``): stop quietly, still saving
-            os.dup2(os.open(os.devnull, os.O_WRONLY), out.fileno())
-            break
-        except NarseseError as exc:
-            out.write(f"Error: line {lineno}, column {exc.column}: {exc.message}\n")
-        except RecursionError:
-            out.write(f"Error: line {lineno}, column 1: term nested too deeply\n")
-        except Exception as exc:  # noqa: BLE001 - the shell must outlive any one line
-            out.write(f"Error: line {lineno}, column 1: internal error: {exc!r}\n")
-    if args.save:
-        nar.save(args.save)
-    if not args.quiet:
+            nar.save(args.save)
+        except (OSError, ValueError) as exc:
+            print(f"robocog nar: {exc}", file=sys.stderr)
+            code = code or 1
+    if not args.quiet and not aborted:
         for line in nar.statistics():
             out.write(line + "\n")
-    out.flush()
+    try:
+        out.flush()
+    except BrokenPipeError:
+        pass
     if getattr(args, "exit_when_done", False):
         # a full memory is millions of objects; freeing them one by one at exit takes
         # a fifth of a short run, and the operating system reclaims them at once
         sys.stderr.flush()
-        os._exit(0)
-    return 0
+        os._exit(code)
+    signals.restore()
+    return code
+
+
+def _line(nar: NAR, raw: bytes, lineno: int, out: object) -> bool:
+    """Process one input line; True when the session ends (``quit``, a closed output)."""
+    text, error = _decoded(raw, lineno)
+    write = out.write  # type: ignore[attr-defined]
+    if text is None:
+        write(error + "\n")
+        return False
+    line = text.rstrip()
+    if line == "quit":
+        return True
+    try:
+        nar.add_input(line)
+    except BrokenPipeError:
+        # the reader of our output has gone (``| head``): stop quietly, still saving
+        os.dup2(os.open(os.devnull, os.O_WRONLY), out.fileno())  # type: ignore[attr-defined]
+        return True
+    except NarseseError as exc:
+        write(f"Error: line {lineno}, column {exc.column}: {exc.message}\n")
+    except RecursionError:
+        write(f"Error: line {lineno}, column 1: term nested too deeply\n")
+    except Exception as exc:  # noqa: BLE001 - the shell must outlive any one line
+        write(f"Error: line {lineno}, column 1: internal error: {exc!r}\n")
+    return False

@@ -148,3 +148,14 @@ def _restored(
     table._neg = neg
     table._entry = entry
     return table
+
+
+def restored_table(size: int, items: list[Implication]) -> Table:
+    """A table holding ``items`` in their order (best expectation first), as a saved
+    memory lists them; the expectations and the entry index are computed as
+    :meth:`Table._insert` does."""
+    table = Table(size)
+    table.items = list(items)
+    table._neg = [-expectation(m.truth) for m in items]
+    table._entry = {(m.term, m.dt == 0.0): m for m in items}
+    return table

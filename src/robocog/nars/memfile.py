@@ -1,0 +1,817 @@
+"""Saved memories: a versioned data format that holds data and nothing else.
+
+A memory file is gzip-compressed JSON (plain JSON is read too). Terms are written as
+Narsese text and read back through the Narsese parser; everything else is numbers,
+strings, lists and objects, checked for type, range and size before any of it reaches
+a reasoner, so a file from anywhere can at worst be refused. The layout, field by
+field, is documented in ``docs/nars.md`` ("Saved memories").
+
+Earlier versions of robocog pickled the memory. Reading a pickle can run any code its
+author chose, so such files are recognised by their first byte and refused with a
+message on how to convert one that is trusted (``tools/convert_pickle_memory.py``).
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+import re
+import time as _time
+import zlib
+from collections import deque
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Protocol
+
+from robocog import __version__, atomic
+
+from .config import MAX_TIME, Config, checked_value
+from .event import BELIEF, ETERNAL, GOAL, Event, Implication
+from .memory import Concept, EventQueue, Memory
+from .narsese import NarseseError, parse_pattern
+from .table import Table, restored_table
+from .terms import Term
+from .truth import Truth
+
+FORMAT = "robocog-nar-memory"
+VERSION = 1
+#: how a robocog memory file starts, once decompressed: its first field is the format
+HEADER = re.compile(rb'\s*\{\s*"format"\s*:\s*"' + FORMAT.encode() + rb'"')
+#: enough decompressed bytes to see the header
+HEADER_BYTES = 256
+#: bounds on what a file may make the reader hold: its size on disk, its size once
+#: decompressed (a small file can inflate a thousandfold), one term's text
+MAX_FILE_BYTES = 1 << 30
+MAX_JSON_BYTES = 2 << 30
+MAX_TERM_CHARS = 65_536
+MAX_NAME_CHARS = 1_024
+#: a temporary file of an interrupted save older than this is removed by the next save
+#: of the same memory (a save killed outright, e.g. by SIGKILL, cannot clean up itself)
+STALE_TMP_SECONDS = 600.0
+PICKLE_HINT = (
+    "it is a pickle (robocog's memory format before version 1, or any pickle), refused "
+    "because loading a pickle can run code; if you trust the file and its author, convert "
+    "it once with `python tools/convert_pickle_memory.py --trust OLD NEW`"
+)
+
+
+class MemoryFileError(ValueError):
+    """A memory file that cannot be read or written; the message is one line that says
+    which file and what is wrong with it."""
+
+
+class _State(Protocol):
+    """What :func:`encode` reads of a reasoner (the attributes of ``NAR``)."""
+
+    config: Config
+    seed: int
+    memory: Memory
+    time: int
+    stamp_base: int
+    concept_threshold: float
+    matched_total: int
+    process_id: int
+    op_names: list[str]
+    stats: dict[str, int]
+    pending_questions: dict[Term, None]
+    time_index: deque[Concept]
+    table_index: dict[int, dict[Concept, None]]
+    links_by_subject: dict[Term, dict[Term, None]]
+    general_links: dict[Term, None]
+    goal_layers: list[EventQueue]
+    recent_goal_concepts: dict[Concept, None]
+
+    def random_state(self) -> int: ...
+
+
+@dataclass
+class Snapshot:
+    """A reasoner's state as read from a file, every object built and checked."""
+
+    config: dict[str, object]
+    seed: int
+    rand: int
+    time: int
+    stamp_base: int
+    concept_threshold: float
+    matched_total: int
+    process_id: int
+    op_names: list[str]
+    stats: dict[str, int]
+    pending_questions: dict[Term, None]
+    memory: Memory
+    time_index: deque[Concept]
+    table_index: dict[int, dict[Concept, None]]
+    links_by_subject: dict[Term, dict[Term, None]]
+    general_links: dict[Term, None]
+    goal_layers: list[EventQueue]
+    recent_goal_concepts: dict[Concept, None]
+    robocog_version: str = field(default="")
+
+
+# ------------------------------------------------------------------------- writing
+class _Writer:
+    """Numbers each distinct term, event and implication once, so that shared objects
+    stay shared after loading (an event can be a concept's belief and queued at once,
+    and a later change to one must show in the other, as in the running reasoner)."""
+
+    def __init__(self) -> None:
+        self.terms: dict[Term, int] = {}
+        self.events: dict[int, int] = {}
+        self.event_rows: list[dict[str, object]] = []
+        self.imps: dict[int, int] = {}
+        self.imp_rows: list[dict[str, object]] = []
+        self.keep: list[object] = []  # holds numbered objects alive, so ids stay unique
+
+    def term(self, t: Term) -> int:
+        i = self.terms.get(t)
+        if i is None:
+            i = self.terms[t] = len(self.terms)
+        return i
+
+    def event(self, e: Event | None) -> int | None:
+        if e is None:
+            return None
+        i = self.events.get(id(e))
+        if i is None:
+            i = self.events[id(e)] = len(self.event_rows)
+            self.keep.append(e)
+            self.event_rows.append(
+                {
+                    "term": self.term(e.term),
+                    "type": e.type,
+                    "truth": [e.truth.f, e.truth.c],
+                    "stamp": list(e.stamp),
+                    "occurrence_time": e.occurrence_time,
+                    "creation_time": e.creation_time,
+                    "dt": e.dt,
+                    "processed": bool(e.processed),
+                    "is_input": bool(e.is_input),
+                }
+            )
+        return i
+
+    def imp(self, m: Implication) -> int:
+        i = self.imps.get(id(m))
+        if i is None:
+            i = self.imps[id(m)] = len(self.imp_rows)
+            self.keep.append(m)
+            self.imp_rows.append(
+                {
+                    "term": self.term(m.term),
+                    "truth": [m.truth.f, m.truth.c],
+                    "stamp": list(m.stamp),
+                    "dt": m.dt,
+                    "creation_time": m.creation_time,
+                    "source": None if m.source is None else self.term(m.source),
+                }
+            )
+        return i
+
+    def table(self, t: Table | None) -> dict[str, object] | None:
+        if t is None:
+            return None
+        return {"size": t.size, "items": [self.imp(m) for m in t.items]}
+
+    def queue(self, q: EventQueue) -> dict[str, object]:
+        return {
+            "capacity": q.capacity,
+            "items": [[p, self.event(e)] for p, e in zip(q.prio, q.events, strict=True)],
+        }
+
+    def concept(self, c: Concept, in_memory: bool) -> dict[str, object]:
+        tables = c.precondition_beliefs
+        return {
+            "id": c.id,
+            "term": self.term(c.term),
+            "in_memory": in_memory,
+            "use_count": c.use_count,
+            "last_used": c.last_used,
+            "belief": self.event(c.belief),
+            "belief_spike": self.event(c.belief_spike),
+            "predicted_belief": self.event(c.predicted_belief),
+            "goal_spike": self.event(c.goal_spike),
+            "precondition_beliefs": None if tables is None else [self.table(t) for t in tables],
+            "implication_links": self.table(c.implication_links),
+            "priority": c.priority,
+            "priority_time": c.priority_time,
+            "selected_time": c.selected_time,
+            "process_id": c.process_id,
+            "timed": bool(c.timed),
+        }
+
+
+def encode(nar: _State) -> bytes:
+    """The reasoner's whole state as the bytes of a memory file."""
+    w = _Writer()
+    mem = nar.memory
+    live = list(mem.concepts.values())
+    live_ids = {id(c) for c in live}
+    # concepts that left the memory yet are still referred to (the recent goal
+    # concepts keep theirs until they age out) are saved beside the others
+    extra: dict[int, Concept] = {}
+    referred: Iterable[Concept] = (
+        *nar.time_index,
+        *(c for d in nar.table_index.values() for c in d),
+        *nar.recent_goal_concepts,
+    )
+    for c in referred:
+        if id(c) not in live_ids:
+            extra[id(c)] = c
+    concepts = [w.concept(c, True) for c in live] + [w.concept(c, False) for c in extra.values()]
+    doc: dict[str, Any] = {
+        "format": FORMAT,
+        "version": VERSION,
+        "robocog": __version__,
+        "config": nar.config.as_dict(),
+        "reasoner": {
+            "seed": nar.seed,
+            "rand": nar.random_state(),
+            "time": nar.time,
+            "stamp_base": nar.stamp_base,
+            "concept_threshold": nar.concept_threshold,
+            "matched_total": nar.matched_total,
+            "process_id": nar.process_id,
+            "stats": dict(nar.stats),
+        },
+        "operations": list(nar.op_names),
+        "memory": {
+            "capacity": mem.capacity,
+            "operations": mem.operations,
+            "table_size": mem.table_size,
+            "next_concept_id": mem.next_concept_id,
+            "evictions": mem.evictions,
+        },
+        "concepts": concepts,
+        "belief_events": w.queue(mem.belief_events),
+        "goal_layers": [w.queue(q) for q in nar.goal_layers],
+        "pending_questions": [w.term(t) for t in nar.pending_questions],
+        "time_index": {
+            "size": nar.time_index.maxlen,
+            "concepts": [c.id for c in nar.time_index],
+        },
+        "table_index": [[op, [c.id for c in d]] for op, d in nar.table_index.items()],
+        "links_by_subject": [
+            [w.term(s), [w.term(t) for t in d]] for s, d in nar.links_by_subject.items()
+        ],
+        "general_links": [w.term(t) for t in nar.general_links],
+        "recent_goal_concepts": [c.id for c in nar.recent_goal_concepts],
+    }
+    # the tables refer to events, implications and terms by their place in these lists
+    doc["events"] = w.event_rows
+    doc["implications"] = w.imp_rows
+    doc["terms"] = [str(t) for t in w.terms]
+    text = json.dumps(doc, separators=(",", ":"), allow_nan=False, ensure_ascii=False)
+    return zlib_gzip(text.encode("utf-8"))
+
+
+def zlib_gzip(data: bytes) -> bytes:
+    """``data`` gzip-compressed, without a time stamp (equal states, equal files)."""
+    c = zlib.compressobj(6, zlib.DEFLATED, 31)
+    return c.compress(data) + c.flush()
+
+
+def write_file(path: str | os.PathLike[str], data: bytes) -> None:
+    """Write a memory file atomically (readers see the old file or the new one), mode
+    0600, removing what interrupted saves of the same file left behind."""
+    target = Path(path)
+    if target.is_dir():
+        raise MemoryFileError(f"{target}: is a directory")
+    if target.exists() and not is_memory_file(target):
+        raise MemoryFileError(f"{target}: exists and is not a robocog memory; not overwritten")
+    _sweep_stale(target)
+    try:
+        atomic.write_bytes(target, data)
+    except OSError as exc:
+        raise MemoryFileError(f"{target}: cannot be written: {exc.strerror or exc}") from None
+
+
+def _sweep_stale(target: Path) -> None:
+    """Remove temporary files of earlier saves of ``target`` that were killed midway."""
+    folder = target.parent
+    if not folder.is_dir():
+        return
+    cutoff = _time.time() - STALE_TMP_SECONDS
+    for p in folder.glob(f".{_glob_escape(target.name)}.*.tmp"):
+        try:
+            if p.is_file() and not p.is_symlink() and p.stat().st_mtime < cutoff:
+                p.unlink()
+        except OSError:
+            pass
+
+
+def _glob_escape(name: str) -> str:
+    return "".join(f"[{ch}]" if ch in "*?[" else ch for ch in name)
+
+
+def is_memory_file(path: str | os.PathLike[str]) -> bool:
+    """True if the file at ``path`` starts as a robocog memory file does."""
+    try:
+        with open(path, "rb") as f:
+            head = f.read(4096)
+    except OSError:
+        return False
+    if head[:2] == b"\x1f\x8b":
+        try:
+            head = zlib.decompressobj(31).decompress(head, HEADER_BYTES)
+        except zlib.error:
+            return False
+    return HEADER.match(head) is not None
+
+
+# ------------------------------------------------------------------------- reading
+def read_file(path: str | os.PathLike[str]) -> bytes:
+    """The JSON text of the memory file at ``path``, decompressed within the bounds."""
+    name = str(path)
+    try:
+        with open(path, "rb") as f:
+            size = os.fstat(f.fileno()).st_size
+            if size > MAX_FILE_BYTES:
+                raise MemoryFileError(f"{name}: larger than {MAX_FILE_BYTES} bytes")
+            raw = f.read(MAX_FILE_BYTES + 1)
+    except IsADirectoryError:
+        raise MemoryFileError(f"{name}: is a directory") from None
+    except OSError as exc:
+        raise MemoryFileError(f"{name}: cannot be read: {exc.strerror or exc}") from None
+    if not raw:
+        raise MemoryFileError(f"{name}: empty file, not a robocog memory")
+    if raw[:1] == b"\x80":
+        raise MemoryFileError(f"{name}: {PICKLE_HINT}")
+    if raw[:2] == b"\x1f\x8b":
+        d = zlib.decompressobj(31)
+        try:
+            data = d.decompress(raw, MAX_JSON_BYTES + 1)
+        except zlib.error as exc:
+            raise MemoryFileError(f"{name}: damaged compressed data ({exc})") from None
+        if len(data) > MAX_JSON_BYTES:
+            raise MemoryFileError(f"{name}: decompresses to more than {MAX_JSON_BYTES} bytes")
+        if not d.eof:
+            raise MemoryFileError(f"{name}: truncated (the compressed data ends early)")
+        raw = data
+    if HEADER.match(raw[:HEADER_BYTES]) is None:
+        start = raw[:16]
+        raise MemoryFileError(f"{name}: not a robocog memory (it starts with {start!r})")
+    return raw
+
+
+def load_file(path: str | os.PathLike[str]) -> Snapshot:
+    """Read, check and build the state saved at ``path``."""
+    return decode(read_file(path), str(path))
+
+
+def _no_constants(name: str) -> object:
+    raise ValueError(f"{name} is not a number a memory may hold")
+
+
+def decode(data: bytes, source: str = "memory") -> Snapshot:
+    """Build the state from a memory file's JSON text, checking every field."""
+    try:
+        doc = json.loads(data.decode("utf-8"), parse_constant=_no_constants)
+    except UnicodeDecodeError as exc:
+        raise MemoryFileError(f"{source}: not UTF-8 text at byte {exc.start}") from None
+    except RecursionError:
+        raise MemoryFileError(f"{source}: nested too deeply") from None
+    except ValueError as exc:
+        raise MemoryFileError(f"{source}: not valid JSON: {exc}") from None
+    try:
+        return _Reader(doc).snapshot()
+    except _Bad as exc:
+        raise MemoryFileError(f"{source}: {exc.where}: {exc.what}") from None
+
+
+class _Bad(Exception):
+    def __init__(self, where: str, what: str) -> None:
+        super().__init__(f"{where}: {what}")
+        self.where = where
+        self.what = what
+
+
+def _check(ok: bool, where: str, what: str) -> None:
+    if not ok:
+        raise _Bad(where, what)
+
+
+def _int(v: object, where: str, lo: int, hi: int) -> int:
+    _check(isinstance(v, int) and not isinstance(v, bool), where, f"{v!r} is not an integer")
+    _check(lo <= v <= hi, where, f"{v} is out of range [{lo}, {hi}]")  # type: ignore[operator]
+    return v  # type: ignore[return-value]
+
+
+def _float(v: object, where: str, lo: float, hi: float) -> float:
+    ok = isinstance(v, int | float) and not isinstance(v, bool)
+    _check(ok, where, f"{v!r} is not a number")
+    _check(math.isfinite(v), where, f"{v!r} is not finite")  # type: ignore[arg-type]
+    _check(lo <= v <= hi, where, f"{v} is out of range [{lo:g}, {hi:g}]")  # type: ignore[operator]
+    return float(v)  # type: ignore[arg-type]
+
+
+def _bool(v: object, where: str) -> bool:
+    _check(isinstance(v, bool), where, f"{v!r} is not true or false")
+    return v  # type: ignore[return-value]
+
+
+def _list(v: object, where: str, most: int) -> list[Any]:
+    _check(isinstance(v, list), where, "is not a list")
+    _check(len(v) <= most, where, f"has {len(v)} items, at most {most} are allowed")  # type: ignore[arg-type]
+    return v  # type: ignore[return-value]
+
+
+def _obj(v: object, where: str, keys: Iterable[str]) -> dict[str, Any]:
+    _check(isinstance(v, dict), where, "is not an object")
+    want = set(keys)
+    missing = sorted(want - v.keys())  # type: ignore[union-attr]
+    _check(not missing, where, f"lacks {', '.join(missing)}")
+    extra = sorted(v.keys() - want)  # type: ignore[union-attr]
+    _check(not extra, where, f"has unknown fields {', '.join(extra)}")
+    return v  # type: ignore[return-value]
+
+
+def _str(v: object, where: str, most: int) -> str:
+    _check(isinstance(v, str), where, f"{v!r} is not a string")
+    _check(len(v) <= most, where, f"longer than {most} characters")  # type: ignore[arg-type]
+    return v  # type: ignore[return-value]
+
+
+_TOP = (
+    "format",
+    "version",
+    "robocog",
+    "config",
+    "reasoner",
+    "operations",
+    "memory",
+    "concepts",
+    "belief_events",
+    "goal_layers",
+    "pending_questions",
+    "time_index",
+    "table_index",
+    "links_by_subject",
+    "general_links",
+    "recent_goal_concepts",
+    "events",
+    "implications",
+    "terms",
+)
+_EVENT = (
+    "term",
+    "type",
+    "truth",
+    "stamp",
+    "occurrence_time",
+    "creation_time",
+    "dt",
+    "processed",
+    "is_input",
+)
+_IMP = ("term", "truth", "stamp", "dt", "creation_time", "source")
+_CONCEPT = (
+    "id",
+    "term",
+    "in_memory",
+    "use_count",
+    "last_used",
+    "belief",
+    "belief_spike",
+    "predicted_belief",
+    "goal_spike",
+    "precondition_beliefs",
+    "implication_links",
+    "priority",
+    "priority_time",
+    "selected_time",
+    "process_id",
+    "timed",
+)
+_STATS = ("inputs", "derived", "selected", "answers")
+#: bounds on list lengths: what the largest accepted configuration can hold
+_MAX_ITEMS = 200_000_000
+_MAX_STAMP = 1_000
+
+
+class _Reader:
+    """Checks a decoded document field by field and builds the objects it describes."""
+
+    def __init__(self, doc: object) -> None:
+        self.doc = _obj(doc, "file", _TOP) if isinstance(doc, dict) else None
+        _check(self.doc is not None, "file", "is not a JSON object")
+
+    def snapshot(self) -> Snapshot:
+        d = self.doc
+        assert d is not None
+        _check(d["format"] == FORMAT, "format", f"{d['format']!r} is not {FORMAT!r}")
+        v = _int(d["version"], "version", 0, 1 << 30)
+        _check(v == VERSION, "version", f"version {v}; this robocog reads version {VERSION}")
+        version = _str(d["robocog"], "robocog", 64)
+        config = self.config(d["config"])
+        self.terms = self.term_list(d["terms"])
+        self.truths: dict[tuple[float, float], Truth] = {}
+        self.event_list = [
+            self.event(x, f"events[{i}]", config)
+            for i, x in enumerate(_list(d["events"], "events", _MAX_ITEMS))
+        ]
+        self.imp_list = [
+            self.imp(x, f"implications[{i}]", config)
+            for i, x in enumerate(_list(d["implications"], "implications", _MAX_ITEMS))
+        ]
+        r = _obj(d["reasoner"], "reasoner", (*_TIMES, "seed", "rand", "concept_threshold", "stats"))
+        m = _obj(
+            d["memory"],
+            "memory",
+            ("capacity", "operations", "table_size", "next_concept_id", "evictions"),
+        )
+        now = _int(r["time"], "reasoner.time", 1, MAX_TIME)
+        memory = Memory(
+            _int(m["capacity"], "memory.capacity", 1, 100_000_000),
+            _int(m["operations"], "memory.operations", 1, 10_000),
+            _int(m["table_size"], "memory.table_size", 1, 100_000),
+            1,
+        )
+        next_id = _int(m["next_concept_id"], "memory.next_concept_id", 1, MAX_TIME)
+        concepts, by_id = self.concepts(d["concepts"], memory, next_id)
+        memory.restore(
+            [c for c, live in concepts if live],
+            next_id,
+            _int(m["evictions"], "memory.evictions", 0, MAX_TIME),
+        )
+        memory.belief_events = self.queue(d["belief_events"], "belief_events")
+        goal_layers = [
+            self.queue(q, f"goal_layers[{i}]")
+            for i, q in enumerate(_list(d["goal_layers"], "goal_layers", 1_000))
+        ]
+        _check(bool(goal_layers), "goal_layers", "is empty")
+        ti = _obj(d["time_index"], "time_index", ("size", "concepts"))
+        size = _int(ti["size"], "time_index.size", 1, 10_000_000)
+        ids = _list(ti["concepts"], "time_index.concepts", size)
+        time_index: deque[Concept] = deque(
+            (self.concept_ref(x, by_id, f"time_index.concepts[{i}]") for i, x in enumerate(ids)),
+            maxlen=size,
+        )
+        table_index: dict[int, dict[Concept, None]] = {}
+        for i, row in enumerate(_list(d["table_index"], "table_index", 10_001)):
+            where = f"table_index[{i}]"
+            pair = _list(row, where, 2)
+            _check(len(pair) == 2, where, "is not [operation, concepts]")
+            op = _int(pair[0], where + "[0]", 0, memory.operations)
+            cs = _list(pair[1], where + "[1]", _MAX_ITEMS)
+            table_index[op] = {
+                self.concept_ref(x, by_id, f"{where}[1][{j}]"): None for j, x in enumerate(cs)
+            }
+        links: dict[Term, dict[Term, None]] = {}
+        for i, row in enumerate(_list(d["links_by_subject"], "links_by_subject", _MAX_ITEMS)):
+            where = f"links_by_subject[{i}]"
+            pair = _list(row, where, 2)
+            _check(len(pair) == 2, where, "is not [subject, links]")
+            ts = _list(pair[1], where + "[1]", _MAX_ITEMS)
+            links[self.term(pair[0], where + "[0]")] = {
+                self.term(x, f"{where}[1][{j}]"): None for j, x in enumerate(ts)
+            }
+        general = {
+            self.term(x, f"general_links[{i}]"): None
+            for i, x in enumerate(_list(d["general_links"], "general_links", _MAX_ITEMS))
+        }
+        pending = {
+            self.term(x, f"pending_questions[{i}]"): None
+            for i, x in enumerate(_list(d["pending_questions"], "pending_questions", 10_000))
+        }
+        recent = {
+            self.concept_ref(x, by_id, f"recent_goal_concepts[{i}]"): None
+            for i, x in enumerate(_list(d["recent_goal_concepts"], "recent_goal_concepts", 10_000))
+        }
+        stats = _obj(r["stats"], "reasoner.stats", _STATS)
+        ops = _list(d["operations"], "operations", config["operations_max"])  # type: ignore[arg-type]
+        op_names = [self.op_name(x, f"operations[{i}]") for i, x in enumerate(ops)]
+        return Snapshot(
+            config=config,
+            seed=_int(r["seed"], "reasoner.seed", -(1 << 63), (1 << 64) - 1),
+            rand=_int(r["rand"], "reasoner.rand", -(1 << 63), (1 << 64) - 1),
+            time=now,
+            stamp_base=_int(r["stamp_base"], "reasoner.stamp_base", 1, MAX_TIME),
+            concept_threshold=_float(r["concept_threshold"], "reasoner.concept_threshold", 0, 1),
+            matched_total=_int(r["matched_total"], "reasoner.matched_total", 0, 1 << 62),
+            process_id=_int(r["process_id"], "reasoner.process_id", 0, 1 << 62),
+            op_names=op_names,
+            stats={k: _int(stats[k], f"reasoner.stats.{k}", 0, 1 << 62) for k in _STATS},
+            pending_questions=pending,
+            memory=memory,
+            time_index=time_index,
+            table_index=table_index,
+            links_by_subject=links,
+            general_links=general,
+            goal_layers=goal_layers,
+            recent_goal_concepts=recent,
+            robocog_version=version,
+        )
+
+    # --------------------------------------------------------------- pieces
+    def config(self, v: object) -> dict[str, object]:
+        names = Config().as_dict().keys()
+        c = _obj(v, "config", names)
+        out: dict[str, object] = {}
+        for k in names:
+            try:
+                out[k] = checked_value(k, c[k])
+            except (ValueError, KeyError) as exc:
+                raise _Bad(f"config.{k}", str(exc)) from None
+            if isinstance(out[k], int) and not isinstance(out[k], bool):
+                # a whole float would pass ``checked_value``; the file holds integers
+                _check(isinstance(c[k], int), f"config.{k}", f"{c[k]!r} is not an integer")
+        return out
+
+    def term_list(self, v: object) -> list[Term]:
+        out: list[Term] = []
+        for i, x in enumerate(_list(v, "terms", _MAX_ITEMS)):
+            where = f"terms[{i}]"
+            text = _str(x, where, MAX_TERM_CHARS)
+            try:
+                t = parse_pattern(text)
+            except RecursionError:
+                raise _Bad(where, "term nested too deeply") from None
+            except Exception as exc:  # noqa: BLE001 - the parser's errors, reported as one line
+                msg = exc.message if isinstance(exc, NarseseError) else type(exc).__name__
+                raise _Bad(where, f"{text[:80]!r} is not a Narsese term ({msg})") from None
+            _check(str(t) == text, where, f"{text[:80]!r} is not in canonical form")
+            out.append(t)
+        return out
+
+    def term(self, v: object, where: str) -> Term:
+        i = _int(v, where, 0, len(self.terms) - 1)
+        return self.terms[i]
+
+    def truth(self, v: object, where: str) -> Truth:
+        pair = _list(v, where, 2)
+        _check(len(pair) == 2, where, "is not [frequency, confidence]")
+        f = _float(pair[0], where + "[0]", 0.0, 1.0)
+        c = _float(pair[1], where + "[1]", 0.0, 1.0)
+        _check(c < 1.0, where + "[1]", "a confidence is below 1")
+        t = self.truths.get((f, c))
+        if t is None:
+            t = self.truths[f, c] = Truth(f, c)
+        return t
+
+    def stamp(self, v: object, where: str) -> tuple[int, ...]:
+        ids = _list(v, where, _MAX_STAMP)
+        return tuple(_int(x, f"{where}[{i}]", 0, MAX_TIME) for i, x in enumerate(ids))
+
+    def event(self, v: object, where: str, config: dict[str, object]) -> Event:
+        e = _obj(v, where, _EVENT)
+        kind = e["type"]
+        _check(kind in (BELIEF, GOAL), where + ".type", f"{kind!r} is not '.' or '!'")
+        occ = _int(e["occurrence_time"], where + ".occurrence_time", -MAX_TIME, 2 * MAX_TIME)
+        return Event(
+            self.term(e["term"], where + ".term"),
+            kind,
+            self.truth(e["truth"], where + ".truth"),
+            self.stamp(e["stamp"], where + ".stamp"),
+            ETERNAL if occ == ETERNAL else occ,
+            _int(e["creation_time"], where + ".creation_time", -MAX_TIME, 2 * MAX_TIME),
+            _float(e["dt"], where + ".dt", -MAX_TIME, MAX_TIME),
+            _bool(e["processed"], where + ".processed"),
+            _bool(e["is_input"], where + ".is_input"),
+        )
+
+    def imp(self, v: object, where: str, config: dict[str, object]) -> Implication:
+        m = _obj(v, where, _IMP)
+        source = m["source"]
+        return Implication(
+            self.term(m["term"], where + ".term"),
+            self.truth(m["truth"], where + ".truth"),
+            self.stamp(m["stamp"], where + ".stamp"),
+            _float(m["dt"], where + ".dt", -MAX_TIME, MAX_TIME),
+            _int(m["creation_time"], where + ".creation_time", -MAX_TIME, 2 * MAX_TIME),
+            None if source is None else self.term(source, where + ".source"),
+        )
+
+    def event_ref(self, v: object, where: str) -> Event | None:
+        if v is None:
+            return None
+        return self.event_list[_int(v, where, 0, len(self.event_list) - 1)]
+
+    def table(self, v: object, where: str) -> Table | None:
+        if v is None:
+            return None
+        t = _obj(v, where, ("size", "items"))
+        size = _int(t["size"], where + ".size", 1, 100_000)
+        items = [
+            self.imp_list[_int(x, f"{where}.items[{i}]", 0, len(self.imp_list) - 1)]
+            for i, x in enumerate(_list(t["items"], where + ".items", size))
+        ]
+        keys = {(m.term, m.dt == 0.0) for m in items}
+        _check(len(keys) == len(items), where, "holds one link of a kind twice")
+        return restored_table(size, items)
+
+    def concepts(
+        self, v: object, memory: Memory, next_id: int
+    ) -> tuple[list[tuple[Concept, bool]], dict[int, Concept]]:
+        out: list[tuple[Concept, bool]] = []
+        by_id: dict[int, Concept] = {}
+        seen_terms: set[Term] = set()
+        last_id = 0
+        for i, x in enumerate(_list(v, "concepts", _MAX_ITEMS)):
+            where = f"concepts[{i}]"
+            d = _obj(x, where, _CONCEPT)
+            cid = _int(d["id"], where + ".id", 1, next_id - 1)
+            _check(cid not in by_id, where + ".id", f"{cid} occurs twice")
+            live = _bool(d["in_memory"], where + ".in_memory")
+            term = self.term(d["term"], where + ".term")
+            if live:
+                # the memory's order is the order concepts were made in (eviction ties
+                # and the order of related concepts follow it)
+                _check(cid > last_id, where + ".id", "concepts in memory are not in order")
+                _check(term not in seen_terms, where + ".term", f"{term} has two concepts")
+                seen_terms.add(term)
+                last_id = cid
+            c = Concept(cid, term, 0, memory.operations, memory.table_size)
+            c.use_count = _int(d["use_count"], where + ".use_count", 0, 1 << 62)
+            c.last_used = _int(d["last_used"], where + ".last_used", -MAX_TIME, 2 * MAX_TIME)
+            for slot in ("belief", "belief_spike", "predicted_belief", "goal_spike"):
+                setattr(c, slot, self.event_ref(d[slot], f"{where}.{slot}"))
+            tables = d["precondition_beliefs"]
+            if tables is not None:
+                ts = _list(tables, where + ".precondition_beliefs", memory.operations + 1)
+                _check(
+                    len(ts) == memory.operations + 1,
+                    where + ".precondition_beliefs",
+                    f"holds {len(ts)} tables, not {memory.operations + 1}",
+                )
+                built = [
+                    self.table(t, f"{where}.precondition_beliefs[{j}]") for j, t in enumerate(ts)
+                ]
+                _check(None not in built, where + ".precondition_beliefs", "a table is null")
+                c.precondition_beliefs = built  # type: ignore[assignment]
+            c.implication_links = self.table(d["implication_links"], where + ".implication_links")
+            c.priority = _float(d["priority"], where + ".priority", 0.0, 1.0)
+            c.priority_time = _int(d["priority_time"], where + ".priority_time", 0, 2 * MAX_TIME)
+            c.selected_time = _int(d["selected_time"], where + ".selected_time", 0, 2 * MAX_TIME)
+            c.process_id = _int(d["process_id"], where + ".process_id", 0, 1 << 62)
+            c.timed = _bool(d["timed"], where + ".timed")
+            by_id[cid] = c
+            out.append((c, live))
+        return out, by_id
+
+    def concept_ref(self, v: object, by_id: dict[int, Concept], where: str) -> Concept:
+        cid = _int(v, where, 1, MAX_TIME)
+        c = by_id.get(cid)
+        _check(c is not None, where, f"no concept has id {cid}")
+        return c  # type: ignore[return-value]
+
+    def queue(self, v: object, where: str) -> EventQueue:
+        q = _obj(v, where, ("capacity", "items"))
+        cap = _int(q["capacity"], where + ".capacity", 1, 1_000_000)
+        items = _list(q["items"], where + ".items", cap)
+        queue = EventQueue(cap)
+        for i, row in enumerate(items):
+            w = f"{where}.items[{i}]"
+            pair = _list(row, w, 2)
+            _check(len(pair) == 2, w, "is not [priority, event]")
+            prio = _float(pair[0], w + "[0]", 0.0, 1.0)
+            e = self.event_ref(pair[1], w + "[1]")
+            _check(e is not None, w + "[1]", "is null")
+            queue.push(e, prio)  # type: ignore[arg-type]
+        return queue
+
+    def op_name(self, v: object, where: str) -> str:
+        name = _str(v, where, MAX_NAME_CHARS)
+        _check(is_operation_name(name), where, f"{name[:80]!r} is not an operation name")
+        return name
+
+
+_TIMES = ("time", "stamp_base", "matched_total", "process_id")
+
+
+def is_operation_name(name: str) -> bool:
+    """True for ``^name`` where ``name`` is a Narsese name (letters, digits, ``_``)."""
+    if len(name) < 2 or len(name) > MAX_NAME_CHARS or name[0] != "^":
+        return False
+    try:
+        t = parse_pattern(name)
+    except Exception:  # noqa: BLE001 - not a term at all
+        return False
+    return t.op is None and str(t) == name
+
+
+def path_in(directory: str | os.PathLike[str] | None, name: str) -> Path:
+    """The file ``name`` inside ``directory``, for ``*save``/``*load`` lines of an input
+    stream: refused (MemoryFileError) without a directory, for absolute names, names
+    with ``..`` and names that lead out of the directory through a symbolic link."""
+    if directory is None:
+        raise MemoryFileError(
+            "*save and *load need a memory directory (robocog nar --memory-dir DIR)"
+        )
+    if not name or "\x00" in name or len(name) > 4096:
+        raise MemoryFileError("a memory file name is needed")
+    rel = Path(name)
+    if rel.is_absolute() or name.startswith(("/", "\\", "~")):
+        raise MemoryFileError(f"{name}: absolute names are refused; name a file in {directory}")
+    if any(part == ".." for part in rel.parts) or "\\" in name:
+        raise MemoryFileError(f"{name}: names with '..' or '\\' are refused")
+    root = Path(os.path.realpath(directory))
+    target = root / rel
+    if target.is_symlink():
+        raise MemoryFileError(f"{name}: is a symbolic link; refused")
+    real = Path(os.path.realpath(target))
+    if real != root and root not in real.parents:
+        raise MemoryFileError(f"{name}: leads out of the memory directory; refused")
+    return real

@@ -1,0 +1,165 @@
+"""ONA's Python interface: the dicts ``AddInput`` returns, held against ONA's binary."""
+
+from __future__ import annotations
+
+import shutil
+import subprocess
+
+import pytest
+
+from robocog.nars import ona_api
+
+ONA = shutil.which("NAR")
+
+
+def test_an_input_line_gives_onas_fields() -> None:
+    proc = ona_api.spawnNAR()
+    r = ona_api.AddInput("<a --> b>.", Print=False, usedNAR=proc)
+    assert set(r) == {
+        "input",
+        "derivations",
+        "answers",
+        "executions",
+        "reason",
+        "selections",
+        "raw",
+        "requestOutputArgs",
+    }
+    assert r["input"] == [
+        {
+            "occurrenceTime": "eternal",
+            "Stamp": [1],
+            "punctuation": ".",
+            "term": "<a --> b>",
+            "truth": {"frequency": "1.000000", "confidence": "0.900000"},
+            "Priority": "1.000000",
+        }
+    ]
+    assert r["reason"] is None and r["executions"] == [] and r["requestOutputArgs"] is False
+    assert r["raw"].startswith("Input: <a --> b>.")
+
+
+def test_answers_executions_and_the_reason_of_a_decision() -> None:
+    proc = ona_api.spawnNAR()
+    for line in ["<a --> b>.", "<b --> c>.", "<(x &/ <({SELF} * y) --> ^go>) =/> h>.", "x. :|:"]:
+        ona_api.AddInput(line, Print=False, usedNAR=proc)
+    ans = ona_api.AddInput("<a --> c>?", Print=False, usedNAR=proc)["answers"]
+    assert ans == [
+        {
+            "occurrenceTime": "eternal",
+            "Stamp": [2, 1],
+            "punctuation": ".",
+            "term": "<a --> c>",
+            "truth": {"frequency": "1.000000", "confidence": "0.810000"},
+        }
+    ]
+    r = ona_api.AddInput("h! :|:", Print=False, usedNAR=proc)
+    assert r["executions"] == [{"operator": "^go", "arguments": "y"}]
+    reason = r["reason"]
+    assert reason["desire"] == "0.791600"
+    assert reason["hypothesis"]["term"] == "<(x &/ <({SELF} * y) --> ^go>) =/> h>"
+    assert reason["hypothesis"]["occurrenceTime"] == "eternal"
+    assert reason["precondition"]["term"] == "x"
+    assert reason["precondition"]["punctuation"] == "."
+    assert ona_api.AddInput("<nothing --> here>?", Print=False, usedNAR=proc)["answers"] == [
+        {"occurrenceTime": "eternal", "punctuation": ".", "term": "None"}
+    ]
+
+
+def test_stats_reset_exit_and_a_bad_line() -> None:
+    proc = ona_api.spawnNAR()
+    ona_api.AddInput("<a --> b>.", Print=False, usedNAR=proc)
+    stats = ona_api.GetStats(usedNAR=proc)
+    assert stats["total_concepts"] >= 1 and stats["currentTime"] == 2.0
+    assert ona_api.AddInput("*stats", Print=False, usedNAR=proc) == stats
+    bad = ona_api.AddInput("<a --> ", Print=False, usedNAR=proc)
+    assert bad["raw"].startswith("Error: line") and bad["input"] == []
+    ona_api.Reset(usedNAR=proc)
+    assert ona_api.GetStats(usedNAR=proc)["total_concepts"] == 0
+    ona_api.Exit(usedNAR=proc)
+    with pytest.raises(RuntimeError):
+        ona_api.AddInput("<a --> b>.", Print=False, usedNAR=proc)
+
+
+def test_print_echoes_the_raw_output(capsys: pytest.CaptureFixture[str]) -> None:
+    proc = ona_api.spawnNAR()
+    ona_api.AddInput("<a --> b>.", usedNAR=proc)
+    assert "Input: <a --> b>." in capsys.readouterr().out
+
+
+def test_the_default_reasoner_can_be_replaced() -> None:
+    first = ona_api.getNAR()
+    other = ona_api.spawnNAR()
+    ona_api.setNAR(other)
+    try:
+        assert ona_api.getNAR() is other
+    finally:
+        ona_api.setNAR(first)
+
+
+class _OnaShell:
+    """ONA's binary driven line by line, as ONA's wrapper drives it: the line, then
+    ``0`` cycles, reading until ``done with 0 additional inference steps.``."""
+
+    def __init__(self) -> None:
+        self.proc = subprocess.Popen(
+            [ONA, "shell"],  # type: ignore[list-item]
+            stdin=subprocess.PIPE,
+            stdout=subprocess.PIPE,
+            text=True,
+        )
+        self.send("*volume=100")
+
+    def send(self, line: str) -> list[str]:
+        assert self.proc.stdin is not None and self.proc.stdout is not None
+        self.proc.stdin.write(line + "\n0\n")
+        self.proc.stdin.flush()
+        out: list[str] = []
+        while True:
+            got = self.proc.stdout.readline()
+            if not got or got.strip() == "done with 0 additional inference steps.":
+                break
+            out.append(got.strip())
+        return out[:-1]  # the last is "performing 0 inference steps:"
+
+    def close(self) -> None:
+        self.proc.kill()
+        self.proc.wait()
+
+
+SCRIPT = [
+    "<(x &/ ^left) =/> g>.",
+    "x. :|:",
+    "g! :|:",
+    "<(x &/ <({SELF} * y) --> ^go>) =/> h>.",
+    "x. :|:",
+    "h! :|:",
+    "<a --> b>.",
+    "<b --> c>.",
+    "<a --> c>?",
+    "<c --> a>?",
+    "<a --> ?1>?",
+    "a? :|:",
+    "<(x &/ ^left) =/> g>?",
+    "<{tom} --> cat>. %0.8;0.7%",
+    "<{tom} --> cat>?",
+    "<{tom} --> cat>. :|:",
+]
+
+
+@pytest.mark.skipif(ONA is None, reason="ONA (pip install ona==0.9.2) not found")
+def test_the_same_dicts_as_ona_for_the_same_inputs() -> None:
+    """ONA's own output lines read the same way give the same inputs, answers,
+    executions and reasons (derivations in idle cycles differ with the engines, so
+    they are compared only where no cycle runs on its own)."""
+    ona = _OnaShell()
+    ours = ona_api.spawnNAR()
+    try:
+        for line in SCRIPT:
+            theirs = ona_api.GetOutput(ona.send(line))
+            mine = ona_api.AddInput(line, Print=False, usedNAR=ours)
+            for key in ("input", "answers", "executions", "reason"):
+                assert mine[key] == theirs[key], (line, key)
+            assert [type(v) for v in mine.values()] == [type(v) for v in theirs.values()]
+    finally:
+        ona.close()
