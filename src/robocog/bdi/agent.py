@@ -27,6 +27,7 @@ from collections.abc import Callable, Iterable
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from robocog.bdi import context
 from robocog.bdi import plans as P
 from robocog.bdi.actions import ActionFn, ActionHandle, to_python
 from robocog.bdi.beliefs import BeliefBase
@@ -39,6 +40,7 @@ from robocog.bdi.circumstance import (
     new_im,
 )
 from robocog.bdi.logic import ActionError, holds, solve
+from robocog.bdi.messages import Message, handle_message
 from robocog.bdi.parser import ParseError, Program, Rule, parse_literal, parse_program, parse_term
 from robocog.bdi.plans import (
     ACHIEVE,
@@ -62,6 +64,7 @@ from robocog.bdi.plans import (
     WHILE,
     WHILE_AGAIN,
 )
+from robocog.bdi.signals import DONE, SUSPEND
 from robocog.bdi.terms import (
     SOURCE_PERCEPT,
     SOURCE_SELF,
@@ -75,20 +78,16 @@ from robocog.bdi.terms import (
 )
 from robocog.bdi.unifier import (
     EvalError,
-    current_agent,
     deref,
     resolve,
+    undo,
     unify,
     variables,
 )
 
 if TYPE_CHECKING:
-    from robocog.bdi.mas import Message, MultiAgentSystem
+    from robocog.bdi.mas import MultiAgentSystem
 
-#: returned by an internal action that suspended its intention itself
-SUSPEND = object()
-#: returned by an internal action that already updated its intention itself
-DONE = object()
 
 Option = tuple  # (Plan, substitution)
 
@@ -236,6 +235,15 @@ class Agent:
         """The implementation of internal action ``name`` (with its leading dot)."""
         return self._internal.get(name)
 
+    def count_solutions(self, query: Term, s: dict) -> int:
+        """How many ways ``query`` holds on the beliefs under ``s`` (``.count``)."""
+        n = 0
+        trail: list = []
+        for _ in solve(self, query, s, trail):
+            n += 1
+        undo(s, trail, 0)
+        return n
+
     def add_percept(self, percept: str | Literal) -> None:
         """Perceive ``percept`` from the next cycle on (until removed)."""
         lit = _as_literal(percept).without_annots()
@@ -293,7 +301,7 @@ class Agent:
         """All solutions of a formula, e.g. ``"at(X) & X \\== door"``, as name -> value."""
         f = parse_term(formula) if isinstance(formula, str) else formula
         names = [v for v in variables(f) if v.name != "_"]
-        current_agent[0] = self
+        context.running.set(self)
         out = []
         s: dict = {}
         for _ in solve(self, f, s, []):
@@ -397,7 +405,7 @@ class Agent:
                     and not self._formula_waiters
                     and not self._has_atomic
                 ):
-                    current_agent[0] = self
+                    context.running.set(self)
                     self.cycle += 1
                     while events:
                         if deliberate(popleft()):
@@ -420,7 +428,7 @@ class Agent:
 
     def step(self) -> None:
         """One reasoning cycle."""
-        current_agent[0] = self
+        context.running.set(self)
         self.cycle += 1
         C = self.C
         # ---- sense
@@ -480,8 +488,6 @@ class Agent:
         self._perceived = dict(new)
 
     def _process_message(self, msg: Message) -> None:
-        from robocog.bdi.mas import handle_message
-
         handle_message(self, msg)
 
     def _wake_timers(self) -> None:

@@ -2,49 +2,22 @@
 
 :class:`MultiAgentSystem` steps its agents in a fixed order (one reasoning cycle each
 per round), delivers messages to mailboxes (one message is taken in per cycle, as in
-Jason) and shares one virtual clock for ``.wait``. Performatives: ``tell``,
-``untell``, ``achieve``, ``unachieve``, ``askOne``, ``askAll``, ``tellHow``.
+Jason) and shares one virtual clock for ``.wait``. What a message does to its receiver
+is in :mod:`robocog.bdi.messages`.
 """
 
 from __future__ import annotations
 
-import itertools
 from collections.abc import Callable
-from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
-from robocog.bdi import plans as P
-from robocog.bdi.circumstance import Event
-from robocog.bdi.logic import ActionError, solve
-from robocog.bdi.terms import (
-    FALSE,
-    Literal,
-    Term,
-    is_list,
-    iter_list,
-    make_list,
-    source,
-    term_str,
-)
-from robocog.bdi.unifier import resolve, unify
+from robocog.bdi.agent import Agent
+from robocog.bdi.logic import ActionError
+from robocog.bdi.messages import Message
+from robocog.bdi.terms import Literal
 
-if TYPE_CHECKING:
-    from robocog.bdi.agent import Agent
-
-_msg_ids = itertools.count(1)
-
-
-@dataclass
-class Message:
-    """A KQML-like message between agents."""
-
-    sender: str
-    receiver: str
-    performative: str
-    content: Term
-    msg_id: str
-    in_reply_to: str | None = None
+__all__ = ["Message", "MultiAgentSystem"]
 
 
 class MultiAgentSystem:
@@ -66,14 +39,10 @@ class MultiAgentSystem:
 
     def create(self, name: str, source: str = "", **kw: Any) -> Agent:
         """Build an agent from source text and add it."""
-        from robocog.bdi.agent import Agent
-
         return self.add(Agent(source, name, **kw))
 
     def create_from_file(self, path: str | Path, name: str | None = None, **kw: Any) -> Agent:
         """Build an agent from an ``.asl`` file and add it."""
-        from robocog.bdi.agent import Agent
-
         return self.add(Agent.from_file(path, name, **kw))
 
     def deliver(self, msg: Message) -> None:
@@ -108,154 +77,3 @@ class MultiAgentSystem:
             self.step()
             n += 1
         return n
-
-
-def _receivers(ag: Agent, to: Term) -> list[str]:
-    names = list(iter_list(to)) if is_list(to) else [to]
-    out = []
-    for n in names:
-        if n.__class__ is Literal:
-            out.append(n.functor)
-        elif n.__class__ is str:
-            out.append(n)
-        else:
-            raise ActionError(f".send: bad receiver {term_str(n)}")
-    return out
-
-
-def _deliver(ag: Agent, msg: Message) -> None:
-    if ag.mas is not None:
-        ag.mas.deliver(msg)
-    elif msg.receiver == ag.name:
-        ag.mailbox.append(msg)
-    else:
-        raise ActionError(f"no agent named {msg.receiver}")
-
-
-def send(ag: Agent, args: tuple, s: dict, ctx: Any) -> Any:
-    """``.send(To, Performative, Content[, Answer[, Timeout]])``."""
-    from robocog.bdi.agent import SUSPEND
-
-    to = resolve(args[0], s)
-    perf = resolve(args[1], s)
-    if perf.__class__ is not Literal:
-        raise ActionError(".send: the performative must be an atom")
-    perf_name = perf.functor
-    content = resolve(args[2], s, {})
-    msg_id = f"mid{next(_msg_ids)}"
-    if len(args) >= 4 and perf_name in ("askOne", "askAll", "askHow"):
-        if ctx is None:
-            raise ActionError(".send with an answer can only be used in a plan body")
-        names = _receivers(ag, to)
-        if len(names) != 1:
-            raise ActionError(".send: an ask with an answer needs one receiver")
-        i = ctx[0]
-        ag._asks[msg_id] = (i, args[3])
-        ag.C.pending[i.id] = (i, "ask")
-        _deliver(ag, Message(ag.name, names[0], perf_name, content, msg_id))
-        return SUSPEND
-    if len(args) >= 4 and perf_name in ("tell", "untell"):
-        reply_to = resolve(args[3], s)
-        reply_to = reply_to if reply_to.__class__ is str else term_str(reply_to)
-        for name in _receivers(ag, to):
-            _deliver(ag, Message(ag.name, name, perf_name, content, msg_id, reply_to))
-        return True
-    for name in _receivers(ag, to):
-        _deliver(ag, Message(ag.name, name, perf_name, content, msg_id))
-    return True
-
-
-def broadcast(ag: Agent, perf: Term, content: Term) -> None:
-    """Send to every other agent of the system."""
-    if perf.__class__ is not Literal:
-        raise ActionError(".broadcast: the performative must be an atom")
-    if ag.mas is None:
-        return
-    for name in ag.mas.agents:
-        if name != ag.name:
-            ag.mas.deliver(Message(ag.name, name, perf.functor, content, f"mid{next(_msg_ids)}"))
-
-
-def _with_sender(t: Term, sender: str) -> Term:
-    if t.__class__ is Literal:
-        if any(a.__class__ is Literal and a.functor == "source" for a in t.annots):
-            return t
-        return t.add_annots((source(sender),))
-    return t
-
-
-def handle_message(ag: Agent, msg: Message) -> None:
-    """What a received message does (Jason's default ``kqmlPlans``)."""
-    sender = "self" if msg.sender == ag.name else msg.sender
-    if msg.in_reply_to is not None and msg.in_reply_to in ag._asks:
-        i, answer = ag._asks.pop(msg.in_reply_to)
-        if ag.C.pending.pop(i.id, None) is None or i.dropped:
-            return
-        content = msg.content
-        if msg.performative == "untell":
-            content = FALSE
-        elif is_list(content):
-            content = make_list([_with_sender(x, msg.sender) for x in iter_list(content)])
-        else:
-            content = _with_sender(content, msg.sender)
-        if unify(answer, content, i.top().s, []):
-            ag._advance(i)
-        else:
-            ag.fail_intention(i, "ask_failed", f"reply '{term_str(content)}' does not unify")
-        return
-    perf = msg.performative
-    content = msg.content
-    if perf == "tell":
-        for c in list(iter_list(content)) if is_list(content) else [content]:
-            if c.__class__ is Literal:
-                lit = _with_sender(c, sender)
-                if ag.bb.add(lit) is not None:
-                    ag.post(Event(P.Trigger("+", P.BELIEF, lit), None))
-    elif perf == "untell":
-        for c in list(iter_list(content)) if is_list(content) else [content]:
-            if c.__class__ is Literal:
-                gone = ag.bb.remove(c.add_annots((source(sender),)))
-                if gone is not None:
-                    ag.post(Event(P.Trigger("-", P.BELIEF, gone), None))
-    elif perf == "achieve":
-        if content.__class__ is Literal:
-            ag.post(Event(P.Trigger("+", P.ACHIEVE, _with_sender(content, sender)), None))
-    elif perf == "unachieve":
-        if content.__class__ is Literal:
-            ag.drop_goal(content, "drop")
-    elif perf in ("askOne", "askAll"):
-        answers = []
-        s: dict = {}
-        try:
-            for _ in solve(ag, content, s, []):
-                answers.append(resolve(content, s, {}))
-                if perf == "askOne":
-                    break
-        except ActionError:
-            answers = []
-        if perf == "askOne":
-            if answers:
-                reply = Message(ag.name, msg.sender, "tell", answers[0], f"mid{next(_msg_ids)}")
-            else:
-                reply = Message(ag.name, msg.sender, "untell", content, f"mid{next(_msg_ids)}")
-        else:
-            reply = Message(ag.name, msg.sender, "tell", make_list(answers), f"mid{next(_msg_ids)}")
-        reply.in_reply_to = msg.msg_id
-        _reply(ag, reply)
-    elif perf == "tellHow":
-        texts = list(iter_list(content)) if is_list(content) else [content]
-        for t in texts:
-            if t.__class__ is str:
-                try:
-                    ag.add_plan(t)
-                except ValueError as exc:
-                    ag.warn(f"tellHow from {msg.sender}: {exc}")
-    else:
-        ag.warn(f"unknown performative {perf} from {msg.sender}")
-
-
-def _reply(ag: Agent, reply: Message) -> None:
-    try:
-        _deliver(ag, reply)
-    except ActionError as exc:
-        ag.warn(str(exc))

@@ -446,7 +446,7 @@ def _end_goal(how: str, ag: Agent, args: tuple, s: dict, ctx: Any) -> Any:
     The calling intention first steps over this formula, so that when the goal it drops
     is not one of its own it simply goes on with its next formula.
     """
-    from robocog.bdi.agent import DONE
+    from robocog.bdi.signals import DONE
 
     _need(args, 1, f"{how}_goal")
     goal = resolve(args[0], s)
@@ -478,7 +478,7 @@ def _step_over(ag: Agent, ctx: Any) -> None:
 
 @internal("drop_intention")
 def _drop_intention(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Any:
-    from robocog.bdi.agent import DONE
+    from robocog.bdi.signals import DONE
 
     if not args:
         if ctx:
@@ -500,7 +500,7 @@ def _drop_desire(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Any:
 
 @internal("drop_all_intentions")
 def _drop_all_intentions(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Any:
-    from robocog.bdi.agent import DONE
+    from robocog.bdi.signals import DONE
 
     for i in ag.C.intentions():
         ag._drop(i)
@@ -553,7 +553,7 @@ def _desire(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Iterator[
 # ---------------------------------------------------------------- time
 @internal("wait")
 def _wait(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Any:
-    from robocog.bdi.agent import SUSPEND
+    from robocog.bdi.signals import SUSPEND
 
     _need(args, 1, "wait", 3)
     if ctx is None:
@@ -665,7 +665,7 @@ def _remove_plan(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool
 # ---------------------------------------------------------------- communication
 @internal("send")
 def _send(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Any:
-    from robocog.bdi.mas import send
+    from robocog.bdi.messages import send
 
     _need(args, 3, "send", 5)
     return send(ag, args, s, ctx)
@@ -673,7 +673,7 @@ def _send(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Any:
 
 @internal("broadcast")
 def _broadcast(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
-    from robocog.bdi.mas import broadcast
+    from robocog.bdi.messages import broadcast
 
     _need(args, 2, "broadcast")
     broadcast(ag, resolve(args[0], s), resolve(args[1], s))
@@ -689,7 +689,7 @@ def _all_names(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
 
 @internal("stopMAS")
 def _stop_mas(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Any:
-    from robocog.bdi.agent import DONE
+    from robocog.bdi.signals import DONE
 
     if ag.mas is not None:
         ag.mas.stopped = True

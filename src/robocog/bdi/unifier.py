@@ -15,6 +15,7 @@ from __future__ import annotations
 import math
 import random
 
+from robocog.bdi.context import running
 from robocog.bdi.terms import (
     And,
     Arith,
@@ -458,22 +459,12 @@ def _call(t: Arith, s: dict, fresh: dict | None, strict: bool) -> Term:
 
 _RNG = random.Random(0)
 
-#: the agent whose cycle is running, for functions that read beliefs (``.count``)
-current_agent: list = [None]
-
 
 def _count(query: Term, s: dict) -> int:
-    agent = current_agent[0]
+    agent = running.get()
     if agent is None:
         raise EvalError(".count needs an agent")
-    from robocog.bdi.logic import solve
-
-    n = 0
-    trail: list = []
-    for _ in solve(agent, query, s, trail):
-        n += 1
-    undo(s, trail, 0)
-    return n
+    return agent.count_solutions(query, s)
 
 
 def _round(x: float) -> int:
