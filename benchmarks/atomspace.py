@@ -37,8 +37,8 @@ import time
 from collections.abc import Callable
 
 from robocog.atomspace import AtomSpace, Link, Node, fastpath, matcher, query
+from robocog.atomspace.atoms import bulk
 from robocog.atomspace.persist import load, store
-from robocog.atomspace.space import bulk
 
 KINDS = ("first", "second", "join-first", "join-last")
 

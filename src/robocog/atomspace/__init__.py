@@ -14,10 +14,10 @@ from robocog.atomspace.atomese import (
     write,
     write_pretty,
 )
-from robocog.atomspace.atoms import Atom, Link, Node, constructor, has_variables, variables_of
+from robocog.atomspace.atoms import Atom, Link, Node, bulk, constructor, has_variables, variables_of
 from robocog.atomspace.execute import GroundedError, evaluate, execute, instantiate
 from robocog.atomspace.matcher import Pattern, PatternError, compile_pattern, query, substitute
-from robocog.atomspace.space import TV_KEY, AtomSpace, bulk, register_function
+from robocog.atomspace.space import TV_KEY, AtomSpace, register_function
 from robocog.atomspace.types import declare_type, is_a, subtypes
 from robocog.atomspace.values import (
     DEFAULT_TV,

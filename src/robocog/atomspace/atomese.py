@@ -20,7 +20,7 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
 from robocog.atomspace import types as _t
-from robocog.atomspace.atoms import Atom, Node, _raw_link, _raw_node
+from robocog.atomspace.atoms import Atom, Node, _raw_link, _raw_node, atom_text, bulk, quote
 from robocog.atomspace.values import TruthValue, Value
 
 if TYPE_CHECKING:
@@ -278,8 +278,6 @@ def load(
     The whole text is parsed first, so a malformed text leaves ``space`` unchanged.
     Returns the top-level atoms (as added to the space).
     """
-    from robocog.atomspace.space import bulk
-
     with bulk():
         parsed = parse(text, source=source, env=env)
         return add_parsed(parsed, space)
@@ -303,32 +301,14 @@ def read_atom(text: str, env: dict[str, Atom] | None = None) -> Atom:
 
 
 # ---------------------------------------------------------------------- writing
-def quote(name: str) -> str:
-    """A node name as an Atomese string literal."""
-    return '"' + name.replace("\\", "\\\\").replace('"', '\\"') + '"'
-
-
 def write(atom: Atom | Value, tv: TruthValue | None = None) -> str:
     """One-line Atomese for an atom (or a Value)."""
     if isinstance(atom, Value):
         return atom.to_atomese()
-    parts: list[str] = []
-    _write_flat(atom, parts)
-    text = "".join(parts)
+    text = atom_text(atom)
     if tv is not None:
         text = f"{text[:-1]} {tv.to_atomese()})"
     return text
-
-
-def _write_flat(atom: Atom, parts: list[str]) -> None:
-    if atom.__class__ is Node or (isinstance(atom, Atom) and isinstance(atom[1], str)):
-        parts.append(f"({atom[0]} {quote(atom[1])})")
-        return
-    parts.append("(" + atom[0])
-    for a in atom[1]:
-        parts.append(" ")
-        _write_flat(a, parts)
-    parts.append(")")
 
 
 def write_pretty(atom: Atom | Value, space: AtomSpace | None = None, indent: int = 0) -> str:

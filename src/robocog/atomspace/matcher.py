@@ -786,9 +786,8 @@ def _exists(space: AtomSpace, clause: _Clause, b: Bindings) -> bool:
 
 # ---------------------------------------------------------------------- evaluation
 def _eval_clause(space: AtomSpace, atom: Atom) -> bool:
-    from robocog.atomspace.execute import evaluate
-
-    return evaluate(space, atom).is_true()
+    # through the space, which knows its evaluator: the matcher sits below execution
+    return space.evaluate(atom).is_true()
 
 
 _CACHE: dict[tuple[Atom, Atom | None], Pattern] = {}

@@ -17,8 +17,8 @@ from pathlib import Path
 
 from robocog.atomspace import types as _t
 from robocog.atomspace.atomese import read_atom, write
-from robocog.atomspace.atoms import Atom, Link, Node, _raw_link, _raw_node
-from robocog.atomspace.space import AtomSpace, bulk
+from robocog.atomspace.atoms import Atom, Link, Node, _raw_link, _raw_node, bulk
+from robocog.atomspace.space import AtomSpace
 from robocog.atomspace.values import (
     FloatValue,
     LinkValue,

@@ -16,9 +16,7 @@ held by a link is refused unless the removal is recursive, as OpenCog's ``cog-ex
 
 from __future__ import annotations
 
-import gc
 from collections.abc import Callable, Iterable, Iterator
-from contextlib import contextmanager
 from typing import Any
 
 from robocog.atomspace import types as _t
@@ -61,23 +59,6 @@ def register_function(name: str, fn: GroundedFunction) -> None:
     if not callable(fn):
         raise TypeError(f"{name}: {fn!r} is not callable")
     GLOBAL_FUNCTIONS[name] = fn
-
-
-@contextmanager
-def bulk() -> Iterator[None]:
-    """Pause Python's cyclic garbage collector while adding many atoms.
-
-    Atoms are tuples, which the collector tracks; during a load of 10^5-10^6 atoms its
-    repeated passes over them take about half of the time. Atoms form no cycles, so
-    nothing is lost by pausing it.
-    """
-    was = gc.isenabled()
-    gc.disable()
-    try:
-        yield
-    finally:
-        if was:
-            gc.enable()
 
 
 def _relation_keys(link: Atom) -> list[tuple[tuple, Atom]]:

@@ -12,6 +12,8 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 from typing import Any
 
+from robocog.atomspace.atoms import atom_text, quote
+
 
 class Value:
     """Base of every Value."""
@@ -121,8 +123,6 @@ class StringValue(_SeqValue):
         super().__init__(str(x) for x in items)
 
     def _item_text(self, x: Any) -> str:
-        from robocog.atomspace.atomese import quote
-
         return quote(x)
 
 
@@ -133,9 +133,7 @@ class LinkValue(_SeqValue):
     _name = "LinkValue"
 
     def _item_text(self, x: Any) -> str:
-        from robocog.atomspace.atomese import write
-
-        return x.to_atomese() if isinstance(x, Value) else write(x)
+        return x.to_atomese() if isinstance(x, Value) else atom_text(x)
 
 
 class QueueValue(LinkValue):
