@@ -1,6 +1,6 @@
 """The NARS mind's perception-reason-action cycle on the garbage task, beside ONA's.
 
-Runs NarsMind on seed 000's garbage field through ``robocog.robot.loop.Loop`` and
+Runs NarsMind on the garbage field of Hammer et al. through ``robocog.robot.loop.Loop`` and
 reports the p50 and p99 of the whole cycle (percepts, perceive + decide, the actions and
 the mind's handling of their outcomes, which feeds the reasoner too) and of its first
 part up to the decision ("reason"); the goal is on the whole cycle. In the same run the

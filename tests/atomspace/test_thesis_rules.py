@@ -1,4 +1,4 @@
-"""The thesis's rules (seed 004, Section 3.2 and Appendix 7.3) on its knowledge bases
+"""The thesis's rules (Thiella 2021, Section 3.2 and Appendix 7.3) on its knowledge bases
 (Appendix 7.1), as written, with the Scheme procedures registered from Python."""
 
 from __future__ import annotations

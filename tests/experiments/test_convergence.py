@@ -1,4 +1,4 @@
-"""The convergence property of seed 001 Section 4, on simulated steps."""
+"""The convergence property of Fujita et al., Section 4, on simulated steps."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""Seed 000 Section IV's encodings: percepts to Narsese events, operations to Commands."""
+"""The encodings of Hammer et al., Section IV: percepts to Narsese events, operations to Commands."""
 
 from __future__ import annotations
 

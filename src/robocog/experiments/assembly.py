@@ -1,4 +1,4 @@
-"""``robocog experiment assembly``: the torque-reaction-arm assembly of seed 004 (Chapter 5).
+"""``robocog experiment assembly``: the torque-reaction-arm assembly of Thiella (2021, Chapter 5).
 
 The thesis planned Tables 5.2-5.10 one request at a time and sent each plan to a
 simulated arm; between stages, finished stacks were replaced by hand with one cube
@@ -335,7 +335,7 @@ def write_report(
 ) -> None:
     """The markdown report: one table per sequence, thesis figures alongside."""
     lines = [
-        "# Assembly (seed 004, Chapter 5)",
+        "# Assembly (Thiella 2021, Chapter 5)",
         "",
         f"Planner search mode `{args.mode}`. Each sequence ran once without failures and "
         f"{args.runs} times with grasps slipping at {args.failure_rate:.0%} (seeds "

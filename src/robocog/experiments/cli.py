@@ -19,9 +19,9 @@ if TYPE_CHECKING:
 
 #: experiment name -> (module with configure/run, or None for the garbage field here, help)
 EXPERIMENTS: dict[str, tuple[str | None, str]] = {
-    "garbage": (None, "seed 000: NARS and BDI collecting garbage (Table II, Fig. 6)"),
-    "room-exit": ("robocog.experiments.room_exit", "seed 001: the Q.bo leaving a room"),
-    "assembly": ("robocog.experiments.assembly", "seed 004: the manipulator's assemblies"),
+    "garbage": (None, "Hammer et al.: NARS and BDI collecting garbage (Table II, Fig. 6)"),
+    "room-exit": ("robocog.experiments.room_exit", "Fujita et al.: the Q.bo leaving a room"),
+    "assembly": ("robocog.experiments.assembly", "Thiella 2021: the manipulator's assemblies"),
 }
 
 

@@ -1,4 +1,4 @@
-"""The convergence property of seed 001 Section 4, checked by simulation.
+"""The convergence property of Fujita et al., Section 4, checked by simulation.
 
 Section 4.1 models the robot's ``fwQ`` (``forward_Qbo``) by assumption A: from x0 the
 robot lands according to N(x1, sigma^2 I) with x1 = x0 (|x0| - r) / |x0| and

@@ -1,4 +1,4 @@
-"""Seed 000's garbage-collection experiment (Section V.C-D): minds compared on one field.
+"""The garbage-collection experiment of Hammer et al. (Section V.C-D): minds compared on one field.
 
 Each run puts a fresh, seeded field in front of a fresh mind and lets the sense-decide-
 act loop run until the route is complete or the battery is spent. What a run reports is
@@ -22,7 +22,7 @@ from robocog.robot.loop import Loop
 from robocog.robot.protocols import Mind
 from robocog.worlds.garbage import GarbageConfig, GarbageField
 
-#: Table II of seed 000: success rate over 30 runs each, sunny light
+#: Table II of Hammer et al.: success rate over 30 runs each, sunny light
 PAPER: dict[str, float] = {"NARS": 0.68, "BDI": 0.56}
 CAUSES: tuple[str, ...] = ("detection", "grasp", "decision", "time")
 #: the JSON keys whose values depend on the machine rather than on seeds and settings

@@ -153,7 +153,7 @@ def markdown(result: ExperimentResult, images: dict[str, str]) -> str:
     """The report page."""
     cfg = result.config
     lines = [
-        "# Garbage collection (seed 000, Section V)",
+        "# Garbage collection (Hammer et al., Section V)",
         "",
         f"{result.runs} runs per mind, seed {result.seed}, {cfg.light} light "
         f"(detection rate {_pct(cfg.detection_rate)}, grasp success "

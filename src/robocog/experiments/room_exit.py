@@ -1,4 +1,4 @@
-"""``robocog experiment room-exit``: the Q.bo leaving a room (seed 001, Sections 2-4).
+"""``robocog experiment room-exit``: the Q.bo leaving a room (Fujita et al., Sections 2-4).
 
 Many seeded runs of the robot in :class:`~robocog.worlds.room.RoomWorld`, driven by the
 plans of Figs. 6-8 run unchanged by the AgentSpeak interpreter (mind ``bdi``) and by
@@ -478,7 +478,7 @@ def write_report(
 ) -> None:
     """The markdown report."""
     lines = [
-        "# Room exit (seed 001)",
+        "# Room exit (Fujita et al.)",
         "",
         f"{args.runs} seeded runs per mind from seed {args.seed}; the plans of Figs. 6-8 "
         "unchanged. `bdi` runs them in the AgentSpeak interpreter, `reference` is the same "

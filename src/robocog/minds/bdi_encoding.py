@@ -1,7 +1,7 @@
 """Percepts as AgentSpeak beliefs and environment actions as Commands, for BdiMind.
 
 Pure functions over text, so they can be read and tested without an interpreter. The
-beliefs carry the same information as NARS's channels (seed 000 Section IV):
+beliefs carry the same information as NARS's channels (Hammer et al., Section IV):
 
 - ``see(bottle)`` and ``position(bottle, left|center|right)`` per detected label;
 - ``obstacle(left|front|right|free)``;

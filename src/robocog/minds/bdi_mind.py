@@ -5,7 +5,7 @@ turns into beliefs annotated ``source(percept)`` as Jason does (``bdi_encoding``
 the literals). Environment actions (``goto pick drop forward left right``) become
 Commands; each returns an ``ActionHandle`` that the Outcome completes, so the
 intention that acted waits for the robot exactly as a Jason agent waits for its
-environment. The default program is seed 000's background knowledge translated to
+environment. The default program is the background knowledge of Hammer et al. translated to
 AgentSpeak (``knowledge/garbage.asl``), the paper's BDI baseline.
 """
 

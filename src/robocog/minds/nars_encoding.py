@@ -1,4 +1,4 @@
-"""Seed 000 Section IV's channels: percepts as Narsese events, operations as Commands.
+"""The channels of Hammer et al., Section IV: percepts as Narsese events, operations as Commands.
 
 Pure functions, so the encodings can be read and tested without a reasoner:
 

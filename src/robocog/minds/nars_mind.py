@@ -1,4 +1,4 @@
-"""NarsMind: the reasoner of seed 000 behind the robot contract.
+"""NarsMind: the reasoner of Hammer et al. behind the robot contract.
 
 Each frame the percepts become Narsese events (``nars_encoding``), the task goal ``G!``
 is given, and the reasoner runs a few cycles. Operations it executes (``^forward
@@ -81,7 +81,7 @@ class NotReady(RuntimeError):
 
 
 def background(name: str = "garbage.nal") -> list[str]:
-    """The lines of a knowledge file shipped with robocog (seed 000 Section V.C.1)."""
+    """The lines of a knowledge file shipped with robocog (Hammer et al., Section V.C.1)."""
     text = importlib.resources.files("robocog.minds").joinpath("knowledge", name).read_text()
     return [line for line in text.splitlines() if line.strip()]
 

@@ -1,4 +1,4 @@
-"""PlannerMind: the AtomSpace planner of seed 004 driving a manipulator through the contract.
+"""PlannerMind: the AtomSpace planner of Thiella (2021) driving a manipulator through the contract.
 
 The phases of Chapter 4 of the thesis, one mind:
 

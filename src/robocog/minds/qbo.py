@@ -1,4 +1,4 @@
-"""The Q.bo's atomic actions of seed 001 on the robot contract, and the perceptions they return.
+"""The Q.bo's atomic actions of Fujita et al. on the robot contract, and the perceptions they return.
 
 The paper's agent calls three environment actions (Section 2.4): ``looking_Qbo(Obj)``,
 ``forward_Qbo(Dir)`` and ``search_Qbo(Dir)``, the last two sent through
@@ -255,7 +255,7 @@ class _Frame:
 
 
 class ReachExitReference:
-    """Figs. 6-8 of seed 001 transcribed into Python, for comparison with the .asl run.
+    """Figs. 6-8 of Fujita et al. transcribed into Python, for comparison with the .asl run.
 
     ``@re`` reaches the door then the entry; ``@ro`` sets the expected direction
     (``@s_td1``: 0, ``@s_td2``: current direction + 45) and searches; ``@so1`` looks

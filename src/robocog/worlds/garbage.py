@@ -1,4 +1,4 @@
-"""The garbage field of seed 000 Section V, as an embedded, seeded simulator.
+"""The garbage field of Hammer et al., Section V, as an embedded, seeded simulator.
 
 A 22 x 22 m square of a football field, fenced. Checkpoints lie on a circular route near
 the boundary (the robot navigates to them by name), and bottles and cups stand upright
@@ -41,7 +41,7 @@ from robocog.robot.percepts import Detection, Gripper, Obstacle, Percept, Pose
 
 Light = Literal["sunny", "cloudy", "evening"]
 
-#: Detection rate of bottles and cups by light (seed 000, Table I).
+#: Detection rate of bottles and cups by light (Hammer et al., Table I).
 DETECTION_RATE: dict[str, float] = {"sunny": 0.83, "cloudy": 0.70, "evening": 0.61}
 #: Grasp success on a well-detected upright object by light (Section V.C: 85%; the
 #: paper notes worse manipulation in the strong shadows of the evening sun).

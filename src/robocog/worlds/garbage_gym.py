@@ -1,6 +1,6 @@
 """The garbage field as a Gymnasium environment, for learning agents beside the minds.
 
-A thin wrapper: six discrete actions (the operations of seed 000 Section IV), an
+A thin wrapper: six discrete actions (the operations of Hammer et al., Section IV), an
 observation vector built from the same percepts a mind receives, and a reward of 1
 per object dropped into the trailer. Gymnasium is an optional extra
 (``pip install robocog[gym]``); it is imported only when the environment is made.
@@ -59,7 +59,7 @@ def make_env(config: GarbageConfig | None = None, max_steps: int = 2000) -> Any:
         ) from exc
 
     class GarbageEnv(gymnasium.Env):
-        """Seed 000's garbage field: collect the bottles and cups along the route."""
+        """The garbage field of Hammer et al.: collect the bottles and cups along the route."""
 
         metadata = {"render_modes": []}
 

@@ -1,6 +1,6 @@
 """A room whose door opens inward, with a corridor and the opposite room's door beyond.
 
-This is the scene of the Q.bo experiment (seed 001, Sections 2-3): the robot starts
+This is the scene of the Q.bo experiment (Fujita et al., Sections 2-3): the robot starts
 inside a room, must reach the front of the open door leaf and from there find the
 doorway and leave. Through the doorway the door of the room across the corridor can be
 seen, and it looks like a door to the robot's detector, which is how the paper's robot

@@ -1,4 +1,4 @@
-"""A manipulator's tabletop: a table, a workbench, five bins and tagged cubes (seed 004, Ch. 4).
+"""A manipulator's tabletop: a table, a workbench, five bins and tagged cubes (Thiella 2021, Ch. 4).
 
 Every object carries an AprilTag; the tag's name is the part the cube stands for
 (``BettClamp``, ``SnapRing1``...), so the camera "sees" an induction hardened rod where

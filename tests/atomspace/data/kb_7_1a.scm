@@ -1,4 +1,4 @@
-; Seed 004, Appendix 7.1: a table with a screw, a bolt and a toolbox on it.
+; Thiella 2021, Appendix 7.1: a table with a screw, a bolt and a toolbox on it.
 ( InheritanceLink
     ( ConceptNode "screw" )
     ( ConceptNode "object" ))

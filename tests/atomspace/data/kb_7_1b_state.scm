@@ -1,4 +1,4 @@
-; Seed 004, Appendix 7.1, second state: the screw is on the toolbox and the bolt is in
+; Thiella 2021, Appendix 7.1, second state: the screw is on the toolbox and the bolt is in
 ; the hand (the InheritanceLinks and NotLinks of the first example stay as they are).
 ( EvaluationLink
   ( PredicateNode "clear")

@@ -1,4 +1,4 @@
-; Seed 004, Section 3.2: the Pickup rule, first QueryLink (no argument).
+; Thiella 2021, Section 3.2: the Pickup rule, first QueryLink (no argument).
 ; The Scheme procedure pickup-action is registered from Python.
 (QueryLink
   ( VariableList

@@ -1,4 +1,4 @@
-; Seed 004, Section 3.2: the Pickup rule, second QueryLink (one argument, `args`).
+; Thiella 2021, Section 3.2: the Pickup rule, second QueryLink (one argument, `args`).
 (QueryLink
   ( VariableList
     ( TypedVariableLink

@@ -1,4 +1,4 @@
-; Seed 004, Appendix 7.3: the Stack rule, first QueryLink (no arguments).
+; Thiella 2021, Appendix 7.3: the Stack rule, first QueryLink (no arguments).
 (QueryLink
   ( VariableList
     ( TypedVariableLink

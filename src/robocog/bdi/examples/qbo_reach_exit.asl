@@ -1,4 +1,4 @@
-// The Q.bo robot leaving a room: the plans of Figs. 6-8 of the 2014 paper (seed 001),
+// The Q.bo robot leaving a room: the plans of Figs. 6-8 of Fujita et al. (2014),
 // as printed there, followed by the sub-goals the paper does not give.
 //
 // The figures are typeset with "--" where the paper's text names the belief-revision

@@ -1,4 +1,4 @@
-// Seed 000 Section V.C.1's background knowledge, translated to AgentSpeak as the
+// The background knowledge of Hammer et al., Section V.C.1,, translated to AgentSpeak as the
 // paper's BDI baseline (Section V.D). Percepts arrive as beliefs with source(percept):
 //   see(Label)  position(Label, left|center|right)  obstacle(left|front|right|free)
 //   at(Place)   gripper(hold|open)
