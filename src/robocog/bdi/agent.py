@@ -41,7 +41,15 @@ from robocog.bdi.circumstance import (
 )
 from robocog.bdi.logic import ActionError, holds, solve
 from robocog.bdi.messages import Message, handle_message
-from robocog.bdi.parser import ParseError, Program, Rule, parse_literal, parse_program, parse_term
+from robocog.bdi.parser import (
+    ParseError,
+    Program,
+    Rule,
+    parse_literal,
+    parse_program,
+    parse_term,
+    read_source,
+)
 from robocog.bdi.plans import (
     ACHIEVE,
     ACHIEVE_NF,
@@ -135,6 +143,7 @@ class Agent:
         file: str = "",
         printer: Callable[[str, str], None] | None = None,
         warn: Callable[[str, str], None] | None = None,
+        asl_path: Iterable[str | Path] = (),
     ) -> None:
         from robocog.bdi import stdlib
 
@@ -167,6 +176,8 @@ class Agent:
         self._custom_event = type(self).select_event is not Agent.select_event
         self._custom_intention = type(self).select_intention is not Agent.select_intention
         self.file = file
+        #: folders searched for included files after the including file's own
+        self.asl_path = tuple(asl_path)
         if isinstance(source, Program):
             self.load_program(source)
         elif source:
@@ -177,11 +188,11 @@ class Agent:
     def from_file(cls, path: str | Path, name: str | None = None, **kw: Any) -> Agent:
         """Build an agent from an ``.asl`` file, named after the file unless told."""
         p = Path(path)
-        return cls(p.read_text(encoding="utf-8"), name or p.stem, file=str(p), **kw)
+        return cls(read_source(p), name or p.stem, file=str(p), **kw)
 
     def load(self, text: str, source: str = "") -> None:
         """Parse ``text`` and add its beliefs, rules, initial goals and plans."""
-        self.load_program(parse_program(text, source))
+        self.load_program(parse_program(text, source, self.asl_path))
 
     def load_program(self, prog: Program) -> None:
         """Add a parsed program: beliefs (with ``+b`` events), rules, goals, plans."""
@@ -469,6 +480,11 @@ class Agent:
                 self._execute(i)
 
     # ------------------------------------------------------------------ sense
+    def perceive(self) -> None:
+        """Take in the current percepts now rather than at the next cycle (``.perceive``):
+        beliefs with ``source(percept)`` follow them, with their events."""
+        self._buf()
+
     def _buf(self) -> None:
         self._percepts_dirty = False
         new = self._percepts
@@ -1346,6 +1362,46 @@ class Agent:
                 )
             )
         return touched_current
+
+    def intentions_for(self, goal: Literal, extra: Intention | None = None) -> list[Intention]:
+        """The live intentions with ``+!goal`` in their stack (and ``extra`` if it has)."""
+        found = []
+        for i in self.C.intentions() + ([extra] if extra is not None else []):
+            if i.dropped or not i.stack:
+                continue
+            for im in i.stack:
+                t = im.trigger
+                if t.kind == ACHIEVE and t.op == "+" and _unifies(goal, t.literal, {}):
+                    found.append(i)
+                    break
+        return found
+
+    def suspend(self, i: Intention, current: bool) -> None:
+        """Set ``i`` aside until :meth:`resume` (Jason's ``.suspend``). The current
+        intention stops at the ``.suspend`` it runs and goes on after it when resumed;
+        another one is taken off the running queue as it stands."""
+        if not current:
+            self._unschedule(i)
+        self.C.pending[i.id] = (i, "suspend_ia" if current else "suspended")
+
+    def suspension(self, i: Intention) -> str | None:
+        """Why ``i`` is suspended, as ``.suspended`` reports it, or None."""
+        entry = self.C.pending.get(i.id)
+        if entry is None or entry[1] not in ("suspend_ia", "suspended"):
+            return None
+        return "suspend_ia"
+
+    def resume(self, i: Intention) -> bool:
+        """Let an intention set aside by :meth:`suspend` run again; False if it was not."""
+        entry = self.C.pending.get(i.id)
+        if entry is None or entry[1] not in ("suspend_ia", "suspended"):
+            return False
+        del self.C.pending[i.id]
+        if entry[1] == "suspend_ia":
+            self._advance(i)  # past the .suspend that stopped it
+        else:
+            self._requeue(i)
+        return True
 
     def _unschedule(self, i: Intention) -> None:
         C = self.C

@@ -30,14 +30,17 @@ def configure(parser: argparse.ArgumentParser) -> None:
 def run(args: argparse.Namespace) -> int:
     """Parse, run until idle, and report parse errors with line and column."""
     from robocog.bdi.agent import Agent
-    from robocog.bdi.parser import ParseError
+    from robocog.bdi.parser import ParseError, read_source
 
     path = Path(args.file)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except OSError as exc:
-        print(f"robocog agent: cannot read {path}: {exc.strerror}", file=sys.stderr)
+    if not path.is_file():
+        print(f"robocog agent: cannot read {path}: no such file", file=sys.stderr)
         return 2
+    try:
+        text = read_source(path)
+    except ParseError as exc:
+        print(f"robocog agent: {exc}", file=sys.stderr)
+        return 1
     out = sys.stdout
 
     def printer(name: str, line: str) -> None:

@@ -9,7 +9,9 @@ Every failure, whatever the input, is a :class:`ParseError` naming the line and 
 
 from __future__ import annotations
 
+import re
 import threading
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -106,9 +108,10 @@ class _Builder(Transformer):
         self._clause_done()
         return ("goal", items[0])
 
-    def directive(self, items: list) -> tuple:
+    @v_args(meta=True)
+    def directive(self, meta: Meta, items: list) -> tuple:
         self._clause_done()
-        return ("directive", str(items[0]))
+        return ("directive", (str(items[0]), meta.line, meta.column))
 
     def directive_body(self, items: list) -> str:
         return str(items[0])
@@ -335,7 +338,9 @@ class _Builder(Transformer):
             not neg
             and not annots
             and (
-                functor.startswith("math.") or (functor in (".length", ".count") and len(args) == 1)
+                functor.startswith("math.")
+                or (functor in (".length", ".count") and len(args) == 1)
+                or (functor == "system.time" and not args)
             )
         ):
             return Arith("call", lit)
@@ -437,8 +442,21 @@ def _run(start: str, text: str, source: str):  # noqa: ANN202 - parse result
             builder.vars = {}
 
 
-def parse_program(text: str, source: str = "") -> Program:
-    """Parse a whole ``.asl`` program."""
+#: how deep includes may nest before the reader refuses (a file including itself, say)
+MAX_INCLUDE_DEPTH = 32
+_INCLUDE = re.compile(r'\s*include\s*\(\s*"((?:[^"\\]|\\.)*)"\s*(?:,\s*(\w+)\s*)?\)\s*\Z')
+
+
+def parse_program(
+    text: str, source: str = "", search_path: Sequence[str | Path] = (), _depth: int = 0
+) -> Program:
+    """Parse a whole ``.asl`` program.
+
+    ``{ include("f.asl") }`` reads ``f.asl`` where it stands, as Jason does: relative to
+    the including file's folder first, then to each folder of ``search_path`` (a
+    project's ``aslSourcePath``). A file that is not found, or a directive robocog does
+    not know, is an error naming it, so nothing goes missing without a word.
+    """
     items = _run("start", text, source)
     prog = Program()
     for kind, value in items:
@@ -450,13 +468,63 @@ def parse_program(text: str, source: str = "") -> Program:
             prog.goals.append(value)
         elif kind == "plan":
             prog.plans.append(value)
+        elif kind == "directive":
+            body, line, column = value
+            included = _include(body, line, column, source, search_path, _depth)
+            prog.beliefs += included.beliefs
+            prog.goals += included.goals
+            prog.plans += included.plans
     return prog
+
+
+def _include(
+    body: str, line: int, column: int, source: str, search_path: Sequence[str | Path], depth: int
+) -> Program:
+    """The program an ``include`` directive names."""
+    m = _INCLUDE.match(body)
+    if m is None:
+        name = body.strip().split("(")[0].split()[0] if body.strip() else ""
+        raise ParseError(f"not supported: directive {{ {name} }}", line, column, source)
+    if m.group(2):
+        raise ParseError("not supported: include into a namespace", line, column, source)
+    if depth >= MAX_INCLUDE_DEPTH:
+        raise ParseError(f"includes nested deeper than {MAX_INCLUDE_DEPTH}", line, column, source)
+    name = m.group(1).replace('\\"', '"')
+    here = Path(source).parent if source else Path(".")
+    candidates = [here / name, *(Path(d) / name for d in search_path)]
+    if Path(name).is_absolute():
+        candidates = [Path(name)]
+    for path in candidates:
+        if path.is_file():
+            return parse_program(read_source(path), str(path), search_path, depth + 1)
+    looked = ", ".join(str(c) for c in candidates)
+    raise ParseError(f"include: no file {name!r} (looked at {looked})", line, column, source)
+
+
+#: the largest source file the reader takes (a program is text a person wrote)
+MAX_SOURCE_BYTES = 16 * 1024 * 1024
+
+
+def read_source(path: str | Path) -> str:
+    """An ``.asl`` file's text; a file that is too large or not UTF-8 is a ParseError."""
+    p = Path(path)
+    try:
+        data = p.read_bytes()
+    except OSError as exc:
+        raise ParseError(f"cannot read {p}: {exc.strerror}", 1, 1, str(p)) from None
+    if len(data) > MAX_SOURCE_BYTES:
+        raise ParseError(f"larger than {MAX_SOURCE_BYTES} bytes", 1, 1, str(p))
+    try:
+        return data.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        prefix = data[: exc.start].decode("utf-8", "replace")
+        line, col = _position(prefix, len(prefix))
+        raise ParseError("not valid UTF-8", line, col, str(p)) from None
 
 
 def parse_file(path: str | Path) -> Program:
     """Parse a program from a file; the file name is used in error messages."""
-    p = Path(path)
-    return parse_program(p.read_text(encoding="utf-8"), str(p))
+    return parse_program(read_source(path), str(path))
 
 
 def parse_term(text: str) -> Term:

@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING, Any
 
 from robocog.bdi import plans as P
 from robocog.bdi.logic import ActionError, solve
+from robocog.bdi.signals import DONE, SUSPEND
 from robocog.bdi.terms import (
     NIL,
     Body,
@@ -446,8 +447,6 @@ def _end_goal(how: str, ag: Agent, args: tuple, s: dict, ctx: Any) -> Any:
     The calling intention first steps over this formula, so that when the goal it drops
     is not one of its own it simply goes on with its next formula.
     """
-    from robocog.bdi.signals import DONE
-
     _need(args, 1, f"{how}_goal")
     goal = resolve(args[0], s)
     current = ctx[0] if ctx else None
@@ -478,8 +477,6 @@ def _step_over(ag: Agent, ctx: Any) -> None:
 
 @internal("drop_intention")
 def _drop_intention(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Any:
-    from robocog.bdi.signals import DONE
-
     if not args:
         if ctx:
             ag._drop(ctx[0])
@@ -500,8 +497,18 @@ def _drop_desire(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Any:
 
 @internal("drop_all_intentions")
 def _drop_all_intentions(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Any:
-    from robocog.bdi.signals import DONE
+    """Every other intention is dropped; the one running this action goes on, as in
+    Jason 3.3."""
+    current = ctx[0] if ctx else None
+    for i in ag.C.intentions():
+        if i is not current:
+            ag._drop(i)
+    return True
 
+
+@internal("drop_all_desires")
+def _drop_all_desires(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Any:
+    ag.C.keep_events(lambda e: not (e.intention is None and e.trigger.kind == P.ACHIEVE))
     for i in ag.C.intentions():
         ag._drop(i)
     if ctx:
@@ -510,10 +517,56 @@ def _drop_all_intentions(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any)
     return True
 
 
-@internal("drop_all_desires")
-def _drop_all_desires(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Any:
-    ag.C.keep_events(lambda e: not (e.intention is None and e.trigger.kind == P.ACHIEVE))
-    return _drop_all_intentions(ag, args, s, trail, ctx)
+@internal("suspend")
+def _suspend(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Any:
+    """``.suspend``: the running intention waits for ``.resume``; ``.suspend(G)``: so
+    do the intentions pursuing ``G``."""
+    _need(args, 0, "suspend", 1)
+    current = ctx[0] if ctx else None
+    if not args:
+        if current is None:
+            raise ActionError(".suspend can only be used in a plan body")
+        ag.suspend(current, True)
+        return SUSPEND
+    goal = resolve(args[0], s)
+    stop_here = False
+    for i in ag.intentions_for(goal, current):
+        if i is current:
+            stop_here = True
+        else:
+            ag.suspend(i, False)
+    if stop_here and current is not None:
+        ag.suspend(current, True)
+        return SUSPEND
+    return True
+
+
+@internal("resume")
+def _resume(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
+    """``.resume(G)``: the suspended intentions pursuing ``G`` run again."""
+    _need(args, 1, "resume")
+    for i in ag.intentions_for(resolve(args[0], s)):
+        ag.resume(i)
+    return True
+
+
+@internal("suspended")
+def _suspended(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Iterator[None]:
+    """``.suspended(G, R)``: a suspended intention pursues ``G``, for reason ``R``."""
+    _need(args, 2, "suspended")
+    mark = len(trail)
+    for i in ag.C.intentions():
+        why = ag.suspension(i)
+        if why is None:
+            continue
+        for im in i.stack:
+            t = im.trigger
+            if t.kind == P.ACHIEVE and t.op == "+":
+                if unify(args[0], resolve(t.literal, im.s), s, trail) and unify(
+                    args[1], Literal(why), s, trail
+                ):
+                    yield None
+                undo(s, trail, mark)
 
 
 @internal("drop_all_events")
@@ -553,8 +606,6 @@ def _desire(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Iterator[
 # ---------------------------------------------------------------- time
 @internal("wait")
 def _wait(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Any:
-    from robocog.bdi.signals import SUSPEND
-
     _need(args, 1, "wait", 3)
     if ctx is None:
         raise ActionError(".wait can only be used in a plan body")
@@ -610,9 +661,12 @@ def _out_all(values: tuple, args: tuple, s: dict, trail: list) -> bool:
 
 @internal("time")
 def _time(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
-    _need(args, 3, "time")
-    t = time.localtime()
-    return _out_all((t.tm_hour, t.tm_min, t.tm_sec), args, s, trail)
+    """``.time(H, M, S)`` or ``.time(H, M, S, MS)``: the local time of day."""
+    _need(args, 3, "time", 4)
+    now = time.time()
+    t = time.localtime(now)
+    parts = (t.tm_hour, t.tm_min, t.tm_sec, int(now * 1000) % 1000)
+    return _out_all(parts[: len(args)], args, s, trail)
 
 
 @internal("date")
@@ -624,10 +678,21 @@ def _date(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
 
 @internal("random")
 def _random(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
+    """``.random(X)``: a number in [0, 1); ``.random(X, N)``: N of them, one per
+    backtrack; ``.random(List, X)``: a member of the list."""
     _need(args, 1, "random", 2)
     rng = getattr(ag, "rng", None)
     if rng is None:
         rng = ag.rng = random.Random(0)
+    if len(args) == 2:
+        first = resolve(args[0], s)
+        if is_list(first):
+            items = list(iter_list(first))
+            return bool(items) and _out(items[rng.randrange(len(items))], args[1], s, trail)
+        count = _num(args[1], s, "random")
+        if count.__class__ is not int or not 0 <= count <= 10**6:
+            raise ActionError(".random: the count must be an integer from 0 to 1000000")
+        return _each((rng.random() for _ in range(count)), args[0], s, trail)
     return _out(rng.random(), args[0], s, trail)
 
 
@@ -687,10 +752,17 @@ def _all_names(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
     return _out(make_list([Literal(n) for n in names]), args[0], s, trail)
 
 
+@internal("perceive")
+def _perceive(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
+    """``.perceive``: update the beliefs from the percepts now (with no environment
+    there are none, and nothing changes)."""
+    _need(args, 0, "perceive")
+    ag.perceive()
+    return True
+
+
 @internal("stopMAS")
 def _stop_mas(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Any:
-    from robocog.bdi.signals import DONE
-
     if ag.mas is not None:
         ag.mas.stopped = True
     for i in ag.C.intentions():

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import math
 import random
+import time
 
 from robocog.bdi.context import running
 from robocog.bdi.terms import (
@@ -317,6 +318,10 @@ def _apply_op(op: str, x, y):  # noqa: ANN001, ANN202 - numbers
         q = abs(xi) // abs(yi)
         return q if (xi >= 0) == (yi >= 0) else -q
     if op == "mod":
+        if x.__class__ is float or y.__class__ is float:
+            # Java's % on doubles: the remainder takes the dividend's sign, 7.9 mod 2 is
+            # 1.9000000000000004, and a zero divisor gives NaN rather than an error
+            return math.fmod(x, y) if y != 0 else math.nan
         xi, yi = _to_int(x), _to_int(y)
         if yi == 0:
             raise EvalError("division by zero")
@@ -418,6 +423,8 @@ def _call(t: Arith, s: dict, fresh: dict | None, strict: bool) -> Term:
                 v = v.tail
             return n
         raise EvalError(f".length: {v!r} is not a list or a string")
+    if lit.functor == "system.time":  # Java's System.currentTimeMillis()
+        return int(time.time() * 1000)
     name = lit.functor[5:]
     if (
         name in ("sum", "average", "mean", "median", "max", "min", "std_dev")
