@@ -16,7 +16,7 @@ from typing import Any
 from robocog.bdi.logic import solve
 from robocog.bdi.parser import Rule
 from robocog.bdi.terms import Literal, Term, Var, is_ground, sort_annots
-from robocog.bdi.unifier import annots_subset, rename, undo, unify
+from robocog.bdi.unifier import annots_subset, annots_ways, rename, undo, unify
 
 _ids = itertools.count()
 
@@ -32,6 +32,11 @@ class StoredRule:
 
     def __repr__(self) -> str:
         return f"{self.head!r} :- {self.body!r}"
+
+
+def is_ground_annots(annots: tuple) -> bool:
+    """True when no annotation holds a variable."""
+    return all(is_ground(a) for a in annots)
 
 
 class BeliefBase:
@@ -255,12 +260,19 @@ class BeliefBase:
         else:
             cands = tuple(bucket.values())[::-1]
         mark = len(trail)
+        # annotations with variables can match a belief's annotations in several ways
+        # (fact(1)[source(S)] against [source(a),source(b)]): each is a solution
+        several = bool(pattern.annots) and not is_ground_annots(pattern.annots)
+        bare = pattern.without_annots() if several else pattern
         for b in cands:
             if b.__class__ is Literal:
                 if not b.ground:
                     b = rename(b, {})
-                if unify(pattern, b, s, trail):
-                    yield None
+                if unify(bare, b, s, trail):
+                    if several:
+                        yield from annots_ways(pattern.annots, b.annots, s, trail)
+                    else:
+                        yield None
                 undo(s, trail, mark)
             else:
                 m: dict = {}

@@ -1,21 +1,27 @@
-"""``robocog agent FILE.asl``: run one AgentSpeak agent until it is idle.
+"""``robocog agent FILE.asl|PROJECT.mas2j [MORE.asl ...]``: run AgentSpeak until idle.
 
-The agent is named after the file (``hello.asl`` runs as ``hello``). ``.print`` output
-goes to stdout as ``[name] text``, exactly as Jason prints it; warnings and parse
-errors go to stderr, so that stdout holds only what the program printed.
+One ``.asl`` file runs one agent, named after the file (``hello.asl`` runs as
+``hello``); several run as one system of agents; a Jason project (``.mas2j``) runs the
+agents it declares. ``.print`` output goes to stdout as ``[name] text``, exactly as Jason
+prints it; warnings and errors go to stderr, so that stdout holds only what the
+programs printed. ``--max-cycles`` and ``--timeout`` bound a program that never ends.
 """
 
 from __future__ import annotations
 
 import argparse
+import importlib
+import signal
 import sys
 from pathlib import Path
 
 
 def configure(parser: argparse.ArgumentParser) -> None:
     """Declare the arguments of ``robocog agent``."""
-    parser.add_argument("file", help="AgentSpeak program (.asl)")
-    parser.add_argument("--name", help="agent name (default: the file name without .asl)")
+    parser.add_argument(
+        "file", nargs="+", help="AgentSpeak program(s) (.asl), or one Jason project (.mas2j)"
+    )
+    parser.add_argument("--name", help="agent name of a single .asl (default: the file name)")
     parser.add_argument(
         "--max-cycles",
         type=int,
@@ -23,38 +29,84 @@ def configure(parser: argparse.ArgumentParser) -> None:
         help="stop after this many reasoning cycles (default: run until idle)",
     )
     parser.add_argument(
+        "--timeout", type=float, default=None, help="stop after this many seconds of wall time"
+    )
+    parser.add_argument(
+        "--env",
+        metavar="MODULE.CLASS",
+        help="a Python environment class for the agents' actions (see docs/bdi.md)",
+    )
+    parser.add_argument(
         "--beliefs", action="store_true", help="print the final belief base on stderr"
     )
 
 
+def _environment(spec: str):  # noqa: ANN202 - the user's environment object
+    module, _, name = spec.rpartition(".")
+    if not module:
+        raise ValueError(f"--env {spec}: write MODULE.CLASS")
+    return getattr(importlib.import_module(module), name)()
+
+
 def run(args: argparse.Namespace) -> int:
-    """Parse, run until idle, and report parse errors with line and column."""
+    """Parse, run until idle, and report errors with file, line and column."""
     from robocog.bdi.agent import Agent
     from robocog.bdi.parser import ParseError, read_source
+    from robocog.bdi.project import read_project, run_files
 
-    path = Path(args.file)
-    if not path.is_file():
-        print(f"robocog agent: cannot read {path}: no such file", file=sys.stderr)
-        return 2
-    try:
-        text = read_source(path)
-    except ParseError as exc:
-        print(f"robocog agent: {exc}", file=sys.stderr)
-        return 1
+    paths = [Path(f) for f in args.file]
+    for path in paths:
+        if not path.is_file():
+            print(f"robocog agent: cannot read {path}: no such file", file=sys.stderr)
+            return 2
     out = sys.stdout
 
     def printer(name: str, line: str) -> None:
         out.write(f"[{name}] {line}\n")
 
+    environment = None
     try:
-        agent = Agent(text, args.name or path.stem, file=str(path), printer=printer)
+        if args.env:
+            environment = _environment(args.env)
+    except (ImportError, AttributeError, ValueError, TypeError) as exc:
+        print(f"robocog agent: --env {args.env}: {exc}", file=sys.stderr)
+        return 2
+    if args.timeout is not None:
+        signal.signal(signal.SIGALRM, lambda *_: (_ for _ in ()).throw(TimeoutError()))
+        signal.setitimer(signal.ITIMER_REAL, max(0.001, args.timeout))
+    sys.setrecursionlimit(max(sys.getrecursionlimit(), 20000))
+    try:
+        if len(paths) == 1 and paths[0].suffix != ".mas2j":
+            agent = Agent(
+                read_source(paths[0]), args.name or paths[0].stem, file=str(paths[0]),
+                printer=printer,
+            )  # fmt: skip
+            if environment is not None:
+                agent.environment = environment
+            agent.run(args.max_cycles)
+            agents = [agent]
+        else:
+            project = paths[0].suffix == ".mas2j"
+            if project and len(paths) > 1:
+                print("robocog agent: a .mas2j project runs alone", file=sys.stderr)
+                return 2
+            if project:
+                read_project(paths[0])  # errors in the project file come first
+            mas = run_files(paths, printer, args.max_cycles, environment)
+            agents = list(mas.agents.values())
     except ParseError as exc:
         print(f"robocog agent: {exc}", file=sys.stderr)
         return 1
-    sys.setrecursionlimit(max(sys.getrecursionlimit(), 20000))
-    agent.run(args.max_cycles)
+    except TimeoutError:
+        out.flush()
+        print(f"robocog agent: stopped after {args.timeout} s (--timeout)", file=sys.stderr)
+        return 3
+    finally:
+        if args.timeout is not None:
+            signal.setitimer(signal.ITIMER_REAL, 0)
     out.flush()
     if args.beliefs:
-        for b in agent.beliefs():
-            print(repr(b), file=sys.stderr)
+        for agent in agents:
+            for b in agent.beliefs():
+                print(f"{agent.name}: {b!r}", file=sys.stderr)
     return 0

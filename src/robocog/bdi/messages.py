@@ -142,7 +142,13 @@ def handle_message(ag: Agent, msg: Message) -> None:
     perf = msg.performative
     content = msg.content
     if perf == "tell":
-        for c in list(iter_list(content)) if is_list(content) else [content]:
+        items = list(iter_list(content)) if is_list(content) else [content]
+        if len(items) > 1:
+            # Jason adds a told list one belief per reasoning cycle (its default plans
+            # recurse over the list), so each belief's event sees only those before it
+            rest = Message(msg.sender, msg.receiver, perf, make_list(items[1:]), msg.msg_id)
+            ag.mailbox.appendleft(rest)
+        for c in items[:1]:
             if c.__class__ is Literal:
                 lit = _with_sender(c, sender)
                 if ag.bb.add(lit) is not None:

@@ -15,6 +15,7 @@ from __future__ import annotations
 import math
 import random
 import time
+from collections.abc import Iterator
 
 from robocog.bdi.context import running
 from robocog.bdi.terms import (
@@ -145,6 +146,20 @@ def annots_subset(aa: tuple, ba: tuple, s: dict, trail: list) -> bool:
         else:
             return False
     return True
+
+
+def annots_ways(aa: tuple, ba: tuple, s: dict, trail: list, k: int = 0) -> Iterator[None]:
+    """Each way every annotation of ``aa`` unifies with one of ``ba`` (bindings in ``s``,
+    undone between ways): the backtracking form of :func:`annots_subset`."""
+    if k == len(aa):
+        yield None
+        return
+    x = aa[k]
+    for y in ba:
+        mark = len(trail)
+        if unify(x, y, s, trail):
+            yield from annots_ways(aa, ba, s, trail, k + 1)
+        undo(s, trail, mark)
 
 
 def resolve(t: Term, s: dict, fresh: dict | None = None) -> Term:

@@ -1,0 +1,133 @@
+"""Jason projects (.mas2j), includes and the language features Jason 3.3 programs use."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from robocog.bdi.agent import Agent
+from robocog.bdi.parser import ParseError, parse_program, read_source
+from robocog.bdi.project import build, read_project, run_files
+
+
+def _printed(tmp_path: Path, files: dict[str, str], run: str) -> list[str]:
+    for name, text in files.items():
+        (tmp_path / name).parent.mkdir(parents=True, exist_ok=True)
+        (tmp_path / name).write_text(text)
+    lines: list[str] = []
+    run_files([tmp_path / run], lambda n, t: lines.append(f"[{n}] {t}"))
+    return lines
+
+
+def test_a_project_runs_its_agents_with_instances_options_and_source_path(
+    tmp_path: Path,
+) -> None:
+    project = """MAS demo {
+        infrastructure: Local
+        agents: worker [beliefs="size(2), colour(red)", goals="work"] #2;
+                boss boss.asl;
+        aslSourcePath: "asl";
+    }"""
+    files = {
+        "demo.mas2j": project,
+        "asl/worker.asl": "+!work : size(S) & colour(C) <- .my_name(N); .print(N, S, C).",
+        "boss.asl": "!hello. +!hello <- .print(ready).",
+    }
+    lines = _printed(tmp_path, files, "demo.mas2j")
+    assert sorted(lines) == ["[boss] ready", "[worker1] worker12red", "[worker2] worker22red"]
+
+
+def test_a_malformed_project_names_file_line_and_column(tmp_path: Path) -> None:
+    path = tmp_path / "bad.mas2j"
+    path.write_text("MAS bad {\n  agents: a;\n  agents b c;\n}\n")
+    with pytest.raises(ParseError) as err:
+        read_project(path)
+    assert (err.value.line, err.value.source) == (3, str(path))
+    path.write_text("MAS p { infrastructure: Jade agents: a; }")
+    with pytest.raises(ParseError, match="not supported: infrastructure Jade"):
+        read_project(path)
+    path.write_text("MAS p { agents: ghost; }")
+    with pytest.raises(ParseError, match="agent ghost: no file ghost.asl"):
+        build(read_project(path))
+
+
+def test_includes_are_read_where_they_stand_and_a_missing_one_is_an_error(
+    tmp_path: Path,
+) -> None:
+    (tmp_path / "lib").mkdir()
+    (tmp_path / "lib" / "colours.asl").write_text('colour(red).\n{ include("more.asl") }\n')
+    (tmp_path / "lib" / "more.asl").write_text("colour(blue).\n")
+    main = tmp_path / "main.asl"
+    main.write_text(
+        '{ include("lib/colours.asl") }\n!s.\n+!s <- .findall(C, colour(C), L); .print(L).\n'
+    )
+    out: list[str] = []
+    Agent(read_source(main), "main", file=str(main), printer=lambda n, t: out.append(t)).run()
+    assert out == ["[red,blue]"]
+    with pytest.raises(ParseError, match="include: no file 'gone.asl'") as err:
+        parse_program('p.\n  { include("gone.asl") }\n', str(tmp_path / "x.asl"))
+    assert (err.value.line, err.value.column) == (2, 3)
+    with pytest.raises(ParseError, match=r"not supported: directive \{ begin \}"):
+        parse_program("{ begin namespace(n) }\n")
+    (tmp_path / "loop.asl").write_text('{ include("loop.asl") }\n')
+    with pytest.raises(ParseError, match="nested deeper"):
+        parse_program((tmp_path / "loop.asl").read_text(), str(tmp_path / "loop.asl"))
+
+
+def test_a_told_list_arrives_one_belief_per_cycle_and_sources_merge(tmp_path: Path) -> None:
+    files = {
+        "p.mas2j": "MAS p { agents: a; b; c; }",
+        "a.asl": "!s. +!s <- .send(c, tell, [item(1), item(2)]); .send(c, tell, f).",
+        "b.asl": "!s. +!s <- .wait(10); .send(c, tell, f); .wait(10); .send(c, untell, f).",
+        "c.asl": "+item(_) : .count(item(_), N) <- .print(seen(N)).\n"
+        "+f[source(S)] <- .findall(X, f[source(X)], L); .print(L).\n"
+        "-f[source(S)] <- .findall(X, f[source(X)], L); .print(L).",
+    }
+    lines = _printed(tmp_path, files, "p.mas2j")
+    assert lines == ["[c] seen(1)", "[c] seen(2)", "[c] [a]", "[c] [a,b]", "[c] [a]"]
+
+
+def test_suspend_resume_and_drop_all_intentions_keep_jasons_order() -> None:
+    program = """
+    !start.
+    +!start <- !!task; .wait(10); if (.suspended(task, R)) { .print(R) };
+       .resume(task); .wait(10); !!other; .drop_all_intentions; .print(still_here).
+    +!task <- .print(t1); .suspend; .print(t2).
+    +!other <- .print(never).
+    """
+    out: list[str] = []
+    Agent(program, "a", printer=lambda n, t: out.append(t)).run()
+    assert out == ["t1", "suspend_ia", "t2", "still_here"]
+
+
+def test_random_forms_and_remainders_on_doubles() -> None:
+    program = """
+    !s.
+    +!s <- .set_random_seed(3); .findall(X, .random(X, 5), L); .length(L, N); .print(N);
+       .random([a], P); .print(P); .print(7.9 mod 2, " ", -7 mod 2, " ", 7.9 div 2).
+    """
+    out: list[str] = []
+    Agent(program, "a", printer=lambda n, t: out.append(t)).run()
+    assert out == ["5", "a", "1.9000000000000004 -1 3"]
+
+
+def test_the_command_runs_several_files_bounds_time_and_refuses_bad_bytes(
+    tmp_path: Path,
+) -> None:
+    (tmp_path / "a.asl").write_text("!s. +!s <- .send(b, achieve, hi).")
+    (tmp_path / "b.asl").write_text("+!hi[source(A)] <- .print(hi_from(A)).")
+    cmd = [sys.executable, "-m", "robocog.cli", "agent"]
+    done = subprocess.run([*cmd, str(tmp_path / "a.asl"), str(tmp_path / "b.asl")],
+                          capture_output=True, text=True, timeout=60)  # fmt: skip
+    assert done.stdout == "[b] hi_from(a)\n"
+    (tmp_path / "loop.asl").write_text("!l. +!l <- !l.")
+    done = subprocess.run([*cmd, str(tmp_path / "loop.asl"), "--timeout", "0.5"],
+                          capture_output=True, text=True, timeout=60)  # fmt: skip
+    assert done.returncode == 3 and "--timeout" in done.stderr
+    (tmp_path / "bad.asl").write_bytes(b'!s.\n+!s <- .print("\xff").\n')
+    done = subprocess.run([*cmd, str(tmp_path / "bad.asl")], capture_output=True, text=True,
+                          timeout=60)  # fmt: skip
+    assert done.returncode == 1 and "bad.asl:2:16: not valid UTF-8" in done.stderr
