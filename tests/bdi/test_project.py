@@ -131,3 +131,23 @@ def test_the_command_runs_several_files_bounds_time_and_refuses_bad_bytes(
     done = subprocess.run([*cmd, str(tmp_path / "bad.asl")], capture_output=True, text=True,
                           timeout=60)  # fmt: skip
     assert done.returncode == 1 and "bad.asl:2:16: not valid UTF-8" in done.stderr
+
+
+def test_plan_terms_print_as_jason_and_are_added_and_awaited() -> None:
+    program = """
+    !s.
+    +!s <- .print({+!g : c <- .print(x); !h}, " ", {+b}, " ", f('Quoted atom'));
+       .add_plan({+!g(X) : X > 1 <- .print(big(X))}); !g(2);
+       .add_plan({@p +b <- .print(b_added)}); +b;
+       !!later; .wait({+!done}); .print(waited).
+    +!later <- !done.
+    +!done <- true.
+    """
+    out: list[str] = []
+    Agent(program, "a", printer=lambda n, t: out.append(t)).run()
+    assert out == [
+        "{ +!g : c <- .print(x); !h } { +b } f('Quoted atom')",
+        "big(2)",
+        "b_added",
+        "waited",
+    ]

@@ -21,6 +21,7 @@ from robocog.bdi.signals import SUSPEND
 from robocog.bdi.terms import (
     FALSE,
     Literal,
+    PlanTerm,
     Term,
     is_list,
     iter_list,
@@ -187,6 +188,8 @@ def handle_message(ag: Agent, msg: Message) -> None:
     elif perf == "tellHow":
         texts = list(iter_list(content)) if is_list(content) else [content]
         for t in texts:
+            if t.__class__ is PlanTerm:
+                t = t.text
             if t.__class__ is str:
                 try:
                     ag.add_plan(t)

@@ -29,10 +29,12 @@ from robocog.bdi.terms import (
     Literal,
     Not,
     Or,
+    PlanTerm,
     Rel,
     Term,
     Var,
     sort_annots,
+    term_str,
 )
 
 
@@ -309,6 +311,25 @@ class _Builder(Transformer):
 
     def var_annots(self, items: list) -> Var:
         return self._var(str(items[0]))
+
+    def plan_term(self, items: list) -> PlanTerm:
+        label = context = body = trigger = None
+        if isinstance(items[0], str):  # { +!g ... }: the trigger's parts, unassembled
+            items = [self.trigger(items[:3]), *items[3:]]
+        for it in items:
+            if isinstance(it, tuple) and it[0] == "label":
+                label = it[1]
+            elif isinstance(it, tuple) and it[0] == "context":
+                context = it[1]
+            elif isinstance(it, tuple) and it[0] == "body":
+                body = it[1]
+            elif isinstance(it, P.Trigger):
+                trigger = it
+        plan = P.Plan(trigger, context, body, label, self.source, 0)
+        lab = f"@{term_str(label)} " if label is not None else ""
+        ctx = f" : {term_str(context)}" if context is not None else ""
+        steps = "; ".join(repr(st) for st in P.chain_steps(body)) if body is not None else ""
+        return PlanTerm(plan, f"{lab}{trigger!r}{ctx}" + (f" <- {steps}" if steps else ""))
 
     def body_term(self, items: list) -> Body:
         return Body(tuple(P.chain_steps(items[0])))

@@ -25,6 +25,7 @@ from robocog.bdi.terms import (
     Cons,
     Literal,
     Nil,
+    PlanTerm,
     Term,
     Var,
     is_list,
@@ -634,6 +635,8 @@ def _wait(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Any:
 
 
 def _trigger_of(t: Term) -> P.Trigger | None:
+    if t.__class__ is PlanTerm:
+        return t.plan.trigger
     if t.__class__ is str:
         from robocog.bdi.parser import ParseError, parse_plan
 
@@ -706,8 +709,10 @@ def _add_plan(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
         at_end = term_str(resolve(args[2], s)) != "begin"
     texts = list(iter_list(p)) if is_list(p) else [p]
     for t in texts:
+        if t.__class__ is PlanTerm:
+            t = t.text  # read again, so each addition is a plan of its own
         if t.__class__ is not str:
-            raise ActionError(".add_plan expects the plan as a string")
+            raise ActionError(".add_plan expects a plan term or a string")
         from robocog.bdi.parser import ParseError
 
         try:

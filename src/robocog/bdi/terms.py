@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import itertools
 import math
+import re
 from collections.abc import Iterable, Iterator
 from typing import Any
 
@@ -313,6 +314,23 @@ class Body:
         return term_str(self)
 
 
+class PlanTerm:
+    """A plan written as a term, ``{ +!g : c <- body }``: the argument of ``.add_plan``,
+    ``.wait`` or ``tellHow``. It keeps the parsed plan (an object of
+    :mod:`robocog.bdi.plans`, which sits above this module) and its text as Jason prints
+    it."""
+
+    __slots__ = ("plan", "text")
+    ground = False
+
+    def __init__(self, plan: Any, text: str) -> None:
+        self.plan = plan
+        self.text = text
+
+    def __repr__(self) -> str:
+        return term_str(self)
+
+
 def is_ground(t: Term) -> bool:
     """True if ``t`` contains no variables (and no unevaluated expression)."""
     c = t.__class__
@@ -489,12 +507,17 @@ def term_str(t: Term) -> str:
     return "".join(out)
 
 
+#: functors written as they are; any other (``'Quoted atom'``) is written in quotes
+_PLAIN_FUNCTOR = re.compile(r"\.?[a-z~][a-zA-Z0-9_]*(\.[a-zA-Z_][a-zA-Z0-9_]*)*\Z|[+\-*/<>=\\]+\Z")
+
+
 def _write(t: Term, out: list[str]) -> None:
     c = t.__class__
     if c is Literal:
         if t.neg:
             out.append("~")
-        out.append(t.functor)
+        f = t.functor
+        out.append(f if _PLAIN_FUNCTOR.match(f) else "'" + f + "'")
         if t.args:
             out.append("(")
             first = True
@@ -569,6 +592,8 @@ def _write(t: Term, out: list[str]) -> None:
         out.append(")")
     elif c is Body:
         out.append("{ " + "; ".join(str(s) for s in t.steps) + " }")
+    elif c is PlanTerm:
+        out.append("{ " + t.text + " }")
     else:
         out.append(str(t))
 
