@@ -151,3 +151,21 @@ def test_plan_terms_print_as_jason_and_are_added_and_awaited() -> None:
         "b_added",
         "waited",
     ]
+
+
+def test_one_formula_cannot_take_gigabytes_or_hang_the_agent() -> None:
+    program = """
+    !s.
+    +!s <- .printf("%1000000000d", 1).
+    -!s[error_msg(M)] <- .print(M); !r.
+    +!r <- .replace("aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaab", "(a|a)+$", "x", R).
+    -!r[error_msg(M)] <- .print(M).
+    """
+    out: list[str] = []
+    Agent(program, "a", printer=lambda n, t: out.append(t)).run()
+    assert "width or precision over 10000" in out[0]
+    assert "ran longer than" in out[1]
+    huge = '!s.\n+!s <- .print("' + "x" * (2 * 1024 * 1024) + '").\n'
+    with pytest.raises(ParseError, match="line longer than") as err:
+        parse_program(huge)
+    assert err.value.line == 2

@@ -41,6 +41,15 @@ def configure(parser: argparse.ArgumentParser) -> None:
     )
 
 
+class _OutOfTime(BaseException):
+    """Raised by the --timeout alarm; a BaseException, so no handler of the agent's own
+    (which turns errors of a plan into failure events) can swallow it."""
+
+
+def _out_of_time(*_: object) -> None:
+    raise _OutOfTime
+
+
 def _environment(spec: str):  # noqa: ANN202 - the user's environment object
     module, _, name = spec.rpartition(".")
     if not module:
@@ -72,7 +81,7 @@ def run(args: argparse.Namespace) -> int:
         print(f"robocog agent: --env {args.env}: {exc}", file=sys.stderr)
         return 2
     if args.timeout is not None:
-        signal.signal(signal.SIGALRM, lambda *_: (_ for _ in ()).throw(TimeoutError()))
+        signal.signal(signal.SIGALRM, _out_of_time)
         signal.setitimer(signal.ITIMER_REAL, max(0.001, args.timeout))
     sys.setrecursionlimit(max(sys.getrecursionlimit(), 20000))
     try:
@@ -97,7 +106,7 @@ def run(args: argparse.Namespace) -> int:
     except ParseError as exc:
         print(f"robocog agent: {exc}", file=sys.stderr)
         return 1
-    except TimeoutError:
+    except _OutOfTime:
         out.flush()
         print(f"robocog agent: stopped after {args.timeout} s (--timeout)", file=sys.stderr)
         return 3

@@ -430,9 +430,18 @@ def _describe(exc: lark.exceptions.UnexpectedInput) -> str:
     return "syntax error"
 
 
+#: the longest line the reader takes; a string literal cannot span lines, so this bounds
+#: every literal (a 10 MB one would otherwise take gigabytes in the lexer)
+MAX_LINE_CHARS = 1024 * 1024
+
+
 def _run(start: str, text: str, source: str):  # noqa: ANN202 - parse result
     if not isinstance(text, str):
         raise ParseError("source text must be a string", 1, 1, source)
+    if len(text) > MAX_LINE_CHARS:
+        for number, line in enumerate(text.split("\n"), start=1):
+            if len(line) > MAX_LINE_CHARS:
+                raise ParseError(f"line longer than {MAX_LINE_CHARS} characters", number, 1, source)
     with _lock:
         parser, builder = _parser()
         builder.vars = {}

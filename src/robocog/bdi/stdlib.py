@@ -838,6 +838,12 @@ def _puts(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
     return True
 
 
+#: the widest field .printf pads to (a huge width would allocate gigabytes)
+MAX_FORMAT_WIDTH = 10_000
+#: how long a regular expression of .replace may run before it is stopped
+REGEX_SECONDS = 1.0
+
+
 @internal("printf")
 def _printf(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
     import re
@@ -862,6 +868,9 @@ def _printf(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
         v = vals[k]
         k += 1
         conv = spec[-1]
+        sizes = [int(n) for n in re.findall(r"\d+", spec)]
+        if any(n > MAX_FORMAT_WIDTH for n in sizes):
+            raise ActionError(f".printf: a width or precision over {MAX_FORMAT_WIDTH} in {spec}")
         try:
             if conv == "s":
                 return spec % print_str(v)
@@ -912,16 +921,20 @@ def _sublist(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Iterator
 
 @internal("replace")
 def _replace(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
-    import re
+    """``.replace(S, Regex, New, R)``, with Java's regular expressions; a pattern that
+    backtracks for longer than REGEX_SECONDS is stopped with an error."""
+    import regex
 
     _need(args, 4, "replace")
     text = _text(args[0], s)
     pattern = _text(args[1], s)
     repl = _text(args[2], s)
     try:
-        out = re.sub(pattern, repl.replace("\\", "\\\\"), text)
-    except re.error as exc:
+        out = regex.sub(pattern, repl.replace("\\", "\\\\"), text, timeout=REGEX_SECONDS)
+    except regex.error as exc:
         raise ActionError(f".replace: {exc}") from exc
+    except TimeoutError as exc:
+        raise ActionError(f".replace: the pattern ran longer than {REGEX_SECONDS} s") from exc
     return _out(out, args[3], s, trail)
 
 
