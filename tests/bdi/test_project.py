@@ -169,3 +169,18 @@ def test_one_formula_cannot_take_gigabytes_or_hang_the_agent() -> None:
     with pytest.raises(ParseError, match="line longer than") as err:
         parse_program(huge)
     assert err.value.line == 2
+
+
+def test_jasons_actions_robocog_lacks_fail_saying_so() -> None:
+    program = """
+    !s.
+    +!s <- .relevant_plans({+!s}, L).
+    -!s[error_msg(M)] <- .print(M); .nonesuch(1).
+    """
+    out: list[str] = []
+    warnings: list[str] = []
+    Agent(
+        program, "a", printer=lambda n, t: out.append(t), warn=lambda n, t: warnings.append(t)
+    ).run()
+    assert out == ["not supported: .relevant_plans/2"]
+    assert any("unknown internal action .nonesuch/1" in w for w in warnings)

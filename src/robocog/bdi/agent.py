@@ -39,7 +39,7 @@ from robocog.bdi.circumstance import (
     new_event,
     new_im,
 )
-from robocog.bdi.logic import ActionError, holds, solve
+from robocog.bdi.logic import ActionError, holds, solve, unknown_action
 from robocog.bdi.messages import Message, handle_message
 from robocog.bdi.parser import (
     ParseError,
@@ -1063,7 +1063,7 @@ class Agent:
                 if lit.functor[0] == ".":
                     fn = self._internal.get(lit.functor)
                     if fn is None:
-                        raise ActionError(f"unknown internal action {lit.functor}")
+                        raise ActionError(unknown_action(lit))
                     r = fn(self, lit.args, s, [], (i, im, step))
                     if r is False:
                         self.fail_intention(i, "ia_failed", "")
@@ -1080,7 +1080,7 @@ class Agent:
                 lit = step.term
                 fn = self._internal.get(lit.functor)
                 if fn is None:
-                    raise ActionError(f"unknown internal action {lit.functor}")
+                    raise ActionError(unknown_action(lit))
                 r = fn(self, lit.args, s, [], (i, im, step))
                 if r is True or r is None:
                     self._advance(i)

@@ -396,7 +396,7 @@ def _internal(agent: Agent, lit: Literal, s: dict, trail: list) -> Iterator[None
     """An internal action used as a formula (in a context, condition or rule)."""
     fn = agent.internal_action(lit.functor)
     if fn is None:
-        raise ActionError(f"unknown internal action {lit.functor}")
+        raise ActionError(unknown_action(lit))
     result = fn(agent, lit.args, s, trail, None)
     if result is True:
         yield None
@@ -404,3 +404,23 @@ def _internal(agent: Agent, lit: Literal, s: dict, trail: list) -> Iterator[None
         return
     else:
         yield from result
+
+
+#: internal actions of Jason 3.3's standard library that robocog does not have
+NOT_SUPPORTED = frozenset(
+    {
+        ".relevant_plans", ".relevant_rules", ".plan_label", ".list_plans", ".list_rules",
+        ".create_agent", ".kill_agent", ".save_agent", ".clone", ".namespace", ".at",
+        ".df_register", ".df_deregister", ".df_search", ".df_subscribe", ".print_unifier",
+        ".verbose", ".add_nested_source", ".current_intention", ".intention", ".signal",
+    }
+)  # fmt: skip
+
+
+def unknown_action(lit: Literal) -> str:
+    """The error of an internal action robocog does not run: Jason's own ones are named
+    as not supported, anything else as unknown."""
+    name = f"{lit.functor}/{len(lit.args)}"
+    if lit.functor in NOT_SUPPORTED:
+        return f"not supported: {name}"
+    return f"unknown internal action {name}"

@@ -117,12 +117,18 @@ def unify(a: Term, b: Term, s: dict, trail: list) -> bool:
             b = b.tail
             continue
         if ca is Arith:
-            a = evaluate(a, s)
+            try:
+                a = evaluate(a, s)
+            except EvalError:  # 1 div 0 equals nothing
+                return False
             if a.__class__ is Arith:
                 return False
             continue
         if cb is Arith:
-            b = evaluate(b, s)
+            try:
+                b = evaluate(b, s)
+            except EvalError:  # 1 div 0 equals nothing
+                return False
             if b.__class__ is Arith:
                 return False
             continue
