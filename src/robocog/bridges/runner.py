@@ -71,18 +71,30 @@ class BridgeRunner:
         watchdog.start()
         failures = 0
         code = 0
+        frames, decided = 0, -1.0
         try:
             while not self._stop.is_set():
                 if deadline is not None and time.monotonic() >= deadline:
                     break
                 if max_cycles is not None and self.cycles >= max_cycles:
                     break
-                self.body.wait_for_readings(self.config.cycle_period)
+                if self.config.lockstep:
+                    frames, stamp = self.body.wait_for_frame(frames, self.config.cycle_period)
+                    if stamp <= decided:  # no new frame, or a frame sent again: acknowledge
+                        if decided >= 0 and stamp == decided:
+                            self.body.frame_done(stamp)
+                        continue
+                else:
+                    self.body.wait_for_readings(self.config.cycle_period)
                 if self._trip == "percepts":
                     continue
                 if self.body.percept_age() > self.config.watchdog_seconds:
                     continue  # nothing (fresh) to decide on yet; the watchdog will act
-                if self._cycle():
+                ok = self._cycle()
+                if self.config.lockstep:
+                    decided = stamp
+                    self.body.frame_done(stamp)
+                if ok:
                     failures = 0
                 else:
                     failures += 1
