@@ -212,6 +212,12 @@ class RobotBody:
             seen = self._generation
             return self._lock.wait_for(lambda: self._generation != seen, timeout)
 
+    @property
+    def scans(self) -> int:
+        """How many laser scans have arrived (the frames of ``lockstep`` operation)."""
+        with self._lock:
+            return self._scans
+
     def wait_for_frame(self, seen: int, timeout: float) -> tuple[int, float]:
         """Block until a scan newer than the ``seen``-th arrives or ``timeout`` passes;
         returns the count of scans and the latest one's stamp."""

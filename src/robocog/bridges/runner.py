@@ -93,6 +93,9 @@ class BridgeRunner:
                 ok = self._cycle()
                 if self.config.lockstep:
                     decided = stamp
+                    # the next decision is on a scan taken after this cycle's commands
+                    # ended, never on one sent while the robot was still carrying them out
+                    frames = self.body.scans
                     self.body.frame_done(stamp)
                 if ok:
                     failures = 0

@@ -21,7 +21,7 @@ action then plays its duration back at ``rate`` times real time with feedback
 publishes a frame and waits until the controller acknowledges it on
 ``/sim/frame_done`` (builtin_interfaces/Time, the frame's stamp), as a simulator in
 synchronous mode waits for its controller; goals then answer at once. A frame not
-acknowledged is sent again (the same messages) so that a lost sample or a slow
+acknowledged has its scan sent again (the same message) so that a lost scan or a slow
 controller never stalls the mission, and the controller's watchdog stays fed.
 """
 
@@ -180,12 +180,22 @@ class GarbageRobot:
         if not self._listener.is_alive():
             self._listener.start()
         c = self.world.config
+        # the mission's clock starts when a controller listens to the scan: a mind that
+        # takes a while to start does not find its battery half spent
+        waited = False
+        while not self._stop.is_set() and not self.w_scan.get_matched_subscriptions():
+            if not waited:
+                log.info("waiting for a controller to subscribe to the scan")
+                waited = True
+            if until is not None and until():
+                return
+            self._stop.wait(0.05)
         while not self._stop.is_set():
             if self.world.done or (until is not None and until()):
                 break
             if self.max_frames is not None and self.frames >= self.max_frames:
                 break
-            with self.lock:
+            with self.lock:  # sent under the lock: a result sent after it is seen after it
                 if self._busy:
                     # a goal plays back a move that already happened: the clock has
                     # moved on, so no camera frame is taken, only the base reports
@@ -195,7 +205,7 @@ class GarbageRobot:
                     self._drive()
                     frame = self._frame(self.world.percepts())
                     self.frames += 1
-            self._send(frame)
+                self._send(frame)
             if self.lockstep:
                 self._wait_for_ack(frame)
             else:
@@ -220,7 +230,10 @@ class GarbageRobot:
                     lambda: self._ack >= frame.seconds - 1e-6 or self._stop.is_set(), RESEND
                 ):
                     return
-            self._send(frame)  # again, unchanged: a lost sample or a slow controller
+            # the scan again, unchanged: it may have been lost (best effort), and it keeps
+            # a slow controller's watchdog fed; the reliable rest of the frame arrived, and
+            # sent again after the controller acted it would tell of a world gone by
+            self._send(Frame(frame.seconds, frame.messages[-1:]))
 
     # -- frames --------------------------------------------------------------------
 
@@ -406,25 +419,29 @@ class GarbageRobot:
             took = w.time() - began
             distance = math.hypot(w.x - x0, w.y - y0)
         if not self.lockstep:
-            self._play_back(goal, server, took, distance)
-        if goal.cancel_requested:
-            server.finish(goal, m.STATUS_CANCELED, m.NavigateToPoseResult())
-        elif outcome.ok:
-            server.finish(goal, m.STATUS_SUCCEEDED, m.NavigateToPoseResult())
-        else:
-            server.finish(goal, m.STATUS_ABORTED, m.NavigateToPoseResult(1, outcome.reason))
+            self._busy_while(lambda: self._feed_back(goal, server, took, distance))
 
-    def _play_back(self, goal: ServerGoal, server: ActionServer, took: float, dist: float) -> None:
-        """Let the move's simulated duration pass at ``rate``, with feedback."""
+        def finish() -> None:
+            if goal.cancel_requested:
+                server.finish(goal, m.STATUS_CANCELED, m.NavigateToPoseResult())
+            elif outcome.ok:
+                server.finish(goal, m.STATUS_SUCCEEDED, m.NavigateToPoseResult())
+            else:
+                server.finish(goal, m.STATUS_ABORTED, m.NavigateToPoseResult(1, outcome.reason))
+
+        with self.lock:  # no frame of the playback can be sent after the result
+            self._busy -= 0 if self.lockstep else 1
+            finish()
+
+    def _busy_while(self, wait: Callable[[], None]) -> None:
+        """Mark a playback under way (its frames take no camera image) while ``wait``
+        runs; the caller ends it, under the lock, with the result."""
         with self.lock:
             self._busy += 1
-        try:
-            self._feed_back(goal, server, took, dist)
-        finally:
-            with self.lock:
-                self._busy -= 1
+        wait()
 
     def _feed_back(self, goal: ServerGoal, server: ActionServer, took: float, dist: float) -> None:
+        """Let the move's simulated duration pass at ``rate``, with feedback."""
         wall = took / self.rate
         end = time.monotonic() + wall
         while not goal.cancel_requested and not self._stop.is_set():
@@ -456,18 +473,12 @@ class GarbageRobot:
             took = self.world.time() - began
             holding = self.world.holding.instance if self.world.holding else ""
         if not self.lockstep:
-            with self.lock:
-                self._busy += 1
-            try:
-                self._stop.wait(took / self.rate)
-            finally:
-                with self.lock:
-                    self._busy -= 1
-        server.finish(
-            goal,
-            m.STATUS_SUCCEEDED,
-            m.GraspResult(outcome.ok, outcome.reason, holding),
-        )
+            self._busy_while(lambda: self._stop.wait(took / self.rate))
+        with self.lock:
+            self._busy -= 0 if self.lockstep else 1
+            server.finish(
+                goal, m.STATUS_SUCCEEDED, m.GraspResult(outcome.ok, outcome.reason, holding)
+            )
 
 
 def _duration(seconds: float) -> m.Duration:
