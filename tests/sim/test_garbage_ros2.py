@@ -9,6 +9,7 @@ import sys
 import threading
 import time
 from collections.abc import Iterator
+from pathlib import Path
 from typing import Any
 
 import pytest
@@ -173,3 +174,38 @@ def test_the_two_commands_of_the_readme_collect_trash() -> None:
     assert collected >= 1, out + bridge_err[-3000:]
     assert "GoTo(place='next') -> succeeded" in bridge_err
     assert "unknown place" not in bridge_err
+
+
+def test_a_recorded_mission_replays_to_the_same_decisions(tmp_path: Path) -> None:
+    """``robocog replay``: the recorded percepts, fed to a fresh mind of the same seed,
+    give the decisions recorded in every frame."""
+    pytest.importorskip("mcap", reason="recording needs the ros2 extra (mcap)")
+    from robocog.bridges.replay import read_frames, replay
+    from robocog.experiments.garbage import default_minds
+    from robocog.experiments.over_ros2 import run_mission
+    from robocog.minds.bdi_mind import BdiMind
+
+    [spec] = default_minds(["bdi"])
+    if spec.probe():
+        pytest.skip(spec.probe() or "")
+    use_loopback()
+    path = tmp_path / "bdi-3.mcap"
+    run = run_mission("bdi", GarbageConfig(), 3, domain=random_domain(), record=path, timeout=240)
+    assert run.error is None, run.error
+    config = BridgeConfig.preset("garbage")
+    frames = read_frames(path, config)
+    assert len(frames) == run.frames
+    decided = replay(frames, config, BdiMind())
+    recorded = [[type(c).__name__ for c in f.recorded] for f, _ in decided]
+    replayed = [[type(c).__name__ for c in commands] for _, commands in decided]
+    assert sum(map(len, recorded)) >= 5
+    assert replayed == recorded
+    result = subprocess.run(
+        [sys.executable, "-m", "robocog.cli", "replay", str(path), "--mind", "bdi"],
+        capture_output=True,
+        text=True,
+        env=child_env(),
+        timeout=120,
+    )
+    assert result.returncode == 0, result.stderr
+    assert "0 different" in result.stdout

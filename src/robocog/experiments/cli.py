@@ -230,6 +230,7 @@ def run_garbage_over_ros2(args: argparse.Namespace, specs: list[MindSpec]) -> in
                 "frames": [r.frames for r in remote],
                 "wall_seconds": [round(r.wall_seconds, 2) for r in remote],
                 "errors": [r.error for r in remote if r.error],
+                "watchdog_trips": sum(r.watchdog_trips for r in remote),
             },
         }
     if args.json is not None:

@@ -38,6 +38,8 @@ class RemoteRun:
     wall_seconds: float
     bridge_exit: int | None
     error: str | None = None
+    #: the bridge's watchdog events (a run they touched is no longer the same run)
+    watchdog_trips: int = 0
 
     @property
     def rate(self) -> float:
@@ -97,8 +99,10 @@ def run_mission(
         "--robot",
         "garbage",
         "--lockstep",
+        # lock-step: the field waits for the mind, so a long silence means a machine
+        # too busy to schedule the bridge, not a lost robot; a trip would change the run
         "--watchdog",
-        "5",
+        "30",
     ]
     started = time.monotonic()
     bridge = subprocess.Popen(
@@ -125,6 +129,12 @@ def run_mission(
         stderr = bridge.stderr.read() if bridge.stderr is not None else ""
     if error and stderr:
         error += ": " + stderr.strip().splitlines()[-1][:300]
+    # before the first frame the bridge's watchdog always holds the robot: not counted
+    trips = [
+        ln
+        for ln in stderr.splitlines()
+        if "watchdog: robot stopped" in ln and "no percepts from the robot yet" not in ln
+    ]
     return RemoteRun(
         seed=seed,
         objects=len(world.objects()),
@@ -135,6 +145,7 @@ def run_mission(
         wall_seconds=time.monotonic() - started,
         bridge_exit=bridge.returncode,
         error=error,
+        watchdog_trips=len(trips),
     )
 
 

@@ -396,6 +396,7 @@ class GarbageRobot:
 
     def _navigate(self, goal: ServerGoal, server: ActionServer) -> None:
         self.goals += 1
+        self._heard(server, "send_goal", goal)
         p = goal.goal.pose.pose
         x, y = p.position.x, p.position.y
         q = p.orientation
@@ -460,7 +461,14 @@ class GarbageRobot:
             )
             self._stop.wait(min(left, 0.1))
 
+    def _heard(self, server: ActionServer, service: str, goal: ServerGoal) -> None:
+        """Tell ``on_message`` of a goal received (recorded as the action's goal)."""
+        if self.on_message is not None:
+            topic = "rq" + m.topic_name(server.action + f"/_action/{service}", "") + "Request"
+            self.on_message(topic, "goal", _GoalRequest(goal.goal))
+
     def _grasp(self, goal: ServerGoal, server: ActionServer) -> None:
+        self._heard(server, "send_goal", goal)
         command, target = goal.goal.command.strip(), goal.goal.target.strip()
         with self.lock:
             began = self.world.time()
@@ -479,6 +487,13 @@ class GarbageRobot:
             server.finish(
                 goal, m.STATUS_SUCCEEDED, m.GraspResult(outcome.ok, outcome.reason, holding)
             )
+
+
+@dataclass
+class _GoalRequest:
+    """A received goal in the shape of a send_goal request (its ``goal`` part)."""
+
+    goal: Any
 
 
 def _duration(seconds: float) -> m.Duration:

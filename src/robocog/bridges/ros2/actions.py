@@ -81,10 +81,19 @@ class _ClientGoal:
 class ActionClient:
     """The client side of one action."""
 
-    def __init__(self, dp: DomainParticipant, action: str, types: m.ActionTypes, qos: Qos) -> None:
+    def __init__(
+        self,
+        dp: DomainParticipant,
+        action: str,
+        types: m.ActionTypes,
+        qos: Qos,
+        on_write: Callable[[str, Any], None] | None = None,
+    ) -> None:
         names = _names(action)
         e = _Entities(dp, qos)
         self.action = action
+        #: told (DDS topic, request) of every goal sent, to record a run
+        self.on_write = on_write
         self.types = types
         self.guid = random.getrandbits(63)
         self._seq = itertools.count(1)
@@ -146,6 +155,8 @@ class ActionClient:
             self._send_seq[seq] = goal_id
         request = self.types.send_goal_request(self.guid, seq, m.UUID(_uuid_list(goal_id)), goal)
         self._send.write(request)
+        if self.on_write is not None:
+            self.on_write(self._send.topic.name, request)
         return goal_id
 
     def forget(self, goal_id: bytes) -> None:

@@ -89,8 +89,11 @@ class Ros2Link:
         self._cmd_vel = DataWriter(dp, topic(tp.cmd_vel, m.Twist), qos=RELIABLE)
         self._gripper = DataWriter(dp, topic(tp.gripper_command, m.String), qos=RELIABLE)
         self._frame_done = DataWriter(dp, topic(tp.frame_done, m.Time), qos=RELIABLE)
-        self._navigate = ActionClient(dp, tp.navigate_action, m.NAVIGATE_TO_POSE, RELIABLE)
-        self._grasp = ActionClient(dp, tp.grasp_action, m.GRASP, RELIABLE)
+        record = self.recorder.write if self.recorder is not None else None
+        self._navigate = ActionClient(
+            dp, tp.navigate_action, m.NAVIGATE_TO_POSE, RELIABLE, on_write=record
+        )
+        self._grasp = ActionClient(dp, tp.grasp_action, m.GRASP, RELIABLE, on_write=record)
         # the scan is read last: a robot (or a lock-step simulator) that sends a frame's
         # pose and detections before its scan has them all read when the scan is
         readers: list[tuple[DataReader, Any]] = [
@@ -125,13 +128,15 @@ class Ros2Link:
         if self._thread is not None:
             self._thread.join(timeout=2.0)
             self._thread = None
+        if self.recorder is not None:
+            self.recorder.close()
         self._dp = None
 
     # -- requests ------------------------------------------------------------------
 
     def send_velocity(self, linear: float, angular: float) -> None:
         """Publish a Twist on ``cmd_vel``."""
-        self._cmd_vel.write(m.Twist(m.Vector3(x=linear), m.Vector3(z=angular)))
+        self._write(self._cmd_vel, m.Twist(m.Vector3(x=linear), m.Vector3(z=angular)))
 
     def send_goal(self, x: float, y: float, yaw: float) -> int:
         """Send a NavigateToPose goal in the map frame; its result ends the token."""
@@ -158,7 +163,7 @@ class Ros2Link:
         """A Grasp goal when the robot serves the gripper action, else a
         std_msgs/String request on ``gripper_command`` (the state then tells)."""
         if not self._grasp.server_ready():
-            self._gripper.write(m.String(text))
+            self._write(self._gripper, m.String(text))
             return None
         token = next(self._tokens)
         command, _, target = text.partition(" ")
@@ -175,7 +180,12 @@ class Ros2Link:
 
     def frame_done(self, stamp: float) -> None:
         """Acknowledge the frame stamped ``stamp`` (a lock-step simulator steps on)."""
-        self._frame_done.write(m.stamp_now(stamp))
+        self._write(self._frame_done, m.stamp_now(stamp))
+
+    def _write(self, writer: DataWriter, message: Any) -> None:
+        writer.write(message)
+        if self.recorder is not None:
+            self.recorder.write(writer.topic.name, message)
 
     def _drop(self, sensor: str) -> None:
         self._body.drop_reading(sensor)
@@ -198,6 +208,8 @@ class Ros2Link:
                 for sample in samples:
                     if isinstance(sample, InvalidSample):
                         continue  # a writer left or an instance was disposed: no data
+                    if self.recorder is not None:
+                        self.recorder.write(reader.topic.name, sample)
                     try:
                         handler(sample)
                     except Exception as exc:  # noqa: BLE001 - a bad message must not stop the link
