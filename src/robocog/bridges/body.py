@@ -98,6 +98,7 @@ class RobotBody:
         self._last_place: str | None = None  # the last route place reached
         self._warned_places: set[str] = set()
         self._scans = 0  # laser scans received: the frames of lock-step operation
+        self._heard: dict[str, float] = {}  # sensor -> when it last reported
         self._scan_stamp = 0.0
         #: readings dropped because they held NaN or infinite values, by sensor
         self.dropped: dict[str, int] = {}
@@ -133,24 +134,42 @@ class RobotBody:
     # -- readings, from the link's thread -------------------------------------
 
     def on_scan(self, scan: ScanReading, stamp: float = 0.0) -> None:
-        """A laser scan arrived (``stamp``: its header time, which names the frame)."""
+        """A laser scan arrived (``stamp``: its header time, which names the frame).
+
+        A scan whose angles or limits are not finite, or with a NaN range, is dropped
+        and counted: it cannot say where an obstacle is (+inf ranges are ROS's "no
+        return" and stay)."""
+        numbers = (scan.angle_min, scan.angle_increment, scan.range_min, scan.range_max)
+        if not all(math.isfinite(v) for v in numbers) or any(math.isnan(r) for r in scan.ranges):
+            self.drop_reading("scan")
+            return
         with self._lock:
             self._scan = scan
             self._scans += 1
             self._scan_stamp = stamp
+            self._heard["scan"] = time.monotonic()
             self._touch()
 
     def on_boxes(self, boxes: list[BoxReading]) -> None:
-        """A detection array arrived (possibly empty: nothing seen)."""
+        """A detection array arrived (possibly empty: nothing seen); a box with a value
+        that is not finite is dropped and counted."""
+        kept = [b for b in boxes if _finite_box(b)]
+        for _ in range(len(boxes) - len(kept)):
+            self.drop_reading("detection")
         with self._lock:
-            self._boxes = list(boxes)
+            self._boxes = kept
             self._boxes_at = time.monotonic()
+            self._heard["detections"] = self._boxes_at
             self._touch()
 
     def on_pose(self, pose: PoseReading) -> None:
-        """The robot's pose arrived."""
+        """The robot's pose arrived; one that is not finite is dropped and counted."""
+        if not all(math.isfinite(v) for v in (pose.x, pose.y, pose.yaw)):
+            self.drop_reading("pose")
+            return
         with self._lock:
             self._pose = pose
+            self._heard["pose"] = time.monotonic()
             self._touch()
 
     def on_gripper(self, state: str) -> None:
@@ -205,6 +224,32 @@ class RobotBody:
         """Seconds since the robot last sent anything (infinite before the first)."""
         with self._lock:
             return time.monotonic() - self._last_reading
+
+    def stale(self) -> str | None:
+        """Why the robot's readings are too old to act on, or None while they are fresh.
+
+        Every sensor that has reported once must keep reporting within its own limit
+        (``scan_timeout``, ``pose_timeout``, ``detections_timeout``; 0 watches it not):
+        a scan that stops while poses still arrive stops the robot all the same.
+        """
+        c = self.config
+        now = time.monotonic()
+        with self._lock:
+            age = now - self._last_reading
+            heard = dict(self._heard)
+        if age > c.watchdog_seconds:
+            if math.isinf(age):
+                return "no percepts from the robot yet"
+            return f"no percepts for {c.watchdog_seconds:g} s (last {age:.2f} s ago)"
+        limits = {
+            "scan": c.watchdog_seconds if c.scan_timeout is None else c.scan_timeout,
+            "pose": c.pose_timeout,
+            "detections": c.detections_timeout,
+        }
+        for sensor, limit in limits.items():
+            if limit > 0 and sensor in heard and now - heard[sensor] > limit:
+                return f"no {sensor} for {limit:g} s (last {now - heard[sensor]:.2f} s ago)"
+        return None
 
     def wait_for_readings(self, timeout: float) -> bool:
         """Block until a new reading arrives or ``timeout`` passes; True if one came."""
@@ -396,6 +441,10 @@ class RobotBody:
         if ok and token is None:
             return Outcome.success()
         return Outcome.failure(f"the gripper did not confirm {text!r}")
+
+
+def _finite_box(box: BoxReading) -> bool:
+    return all(math.isfinite(v) for v in (box.score, box.center_x, *box.position))
 
 
 def _goal_outcome(status: str) -> Outcome:

@@ -85,6 +85,11 @@ class BridgeConfig:
     goto_timeout: float = 120.0
     #: percepts older than this (s) trip the watchdog and stop the robot
     watchdog_seconds: float = 1.0
+    #: a sensor that has reported must report again within its limit (s), else the
+    #: watchdog stops the robot; None: ``watchdog_seconds``; 0: not watched
+    scan_timeout: float | None = None
+    pose_timeout: float = 0.0
+    detections_timeout: float = 0.0
     #: a mind that takes longer than this (s) for one cycle trips the watchdog
     mind_timeout: float = 5.0
     #: this many mind failures in a row end the run (the robot stays stopped)

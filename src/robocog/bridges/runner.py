@@ -11,7 +11,6 @@ stops the robot the same way; after ``max_mind_failures`` failures in a row the 
 from __future__ import annotations
 
 import logging
-import math
 import threading
 import time
 from collections import deque
@@ -88,7 +87,7 @@ class BridgeRunner:
                     self.body.wait_for_readings(self.config.cycle_period)
                 if self._trip == "percepts":
                     continue
-                if self.body.percept_age() > self.config.watchdog_seconds:
+                if self.body.stale() is not None:
                     continue  # nothing (fresh) to decide on yet; the watchdog will act
                 ok = self._cycle()
                 if self.config.lockstep:
@@ -158,18 +157,14 @@ class BridgeRunner:
     def _watch(self) -> None:
         period = min(0.05, self.config.watchdog_seconds / 4)
         while not self._stop.wait(period):
-            age = self.body.percept_age()
             since = self._mind_since
             if since is not None and time.monotonic() - since > self.config.mind_timeout:
                 if self._trip is None:
                     self._halt("mind", f"the mind took longer than {self.config.mind_timeout:g} s")
-            elif age > self.config.watchdog_seconds:
+                continue
+            reason = self.body.stale()
+            if reason is not None:
                 if self._trip != "percepts":
-                    if math.isinf(age):
-                        reason = "no percepts from the robot yet"
-                    else:
-                        limit = self.config.watchdog_seconds
-                        reason = f"no percepts for {limit:g} s (last {age:.2f} s ago)"
                     self._halt("percepts", reason)
             elif self._trip == "percepts":
                 self._clear("percepts are back; resuming")

@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import itertools
 import logging
-import math
 import os
 import threading
 import time
@@ -115,10 +114,12 @@ class Ros2Link:
             )
         readers += self._navigate.handlers + self._grasp.handlers
         readers.append((DataReader(dp, topic(tp.scan, m.LaserScan), qos=SENSOR), self._on_scan))
+        #: (reader, handler) pairs the reading thread serves, scan last
+        self.readers = readers
         self._body = body
         self._stop.clear()
         self._thread = threading.Thread(
-            target=self._read, args=(dp, readers), name="ros2-link", daemon=True
+            target=self._read, args=(dp, self.readers), name="ros2-link", daemon=True
         )
         self._thread.start()
 
@@ -187,9 +188,6 @@ class Ros2Link:
         if self.recorder is not None:
             self.recorder.write(writer.topic.name, message)
 
-    def _drop(self, sensor: str) -> None:
-        self._body.drop_reading(sensor)
-
     # -- readings ------------------------------------------------------------------
 
     def _read(self, dp: DomainParticipant, readers: list[tuple[DataReader, Any]]) -> None:
@@ -222,10 +220,6 @@ class Ros2Link:
             log.warning(message, key, exc)
 
     def _on_scan(self, s: m.LaserScan) -> None:
-        numbers = (s.angle_min, s.angle_increment, s.range_min, s.range_max)
-        if not all(math.isfinite(v) for v in numbers) or any(math.isnan(r) for r in s.ranges):
-            self._drop("scan")  # +inf ranges are allowed: ROS's "no return"
-            return
         self._body.on_scan(
             ScanReading(s.angle_min, s.angle_increment, s.range_min, s.range_max, list(s.ranges)),
             m.seconds_of(s.header.stamp),
@@ -238,10 +232,6 @@ class Ros2Link:
                 continue
             best = max(d.results, key=lambda r: r.hypothesis.score)
             p = best.pose.pose.position
-            numbers = (best.hypothesis.score, d.bbox.center.position.x, p.x, p.y, p.z)
-            if not all(math.isfinite(v) for v in numbers):
-                self._drop("detections")
-                continue
             boxes.append(
                 BoxReading(
                     best.hypothesis.class_id,
@@ -261,10 +251,6 @@ class Ros2Link:
 
     def _on_pose(self, pose: m.Pose) -> None:
         q = pose.orientation
-        numbers = (pose.position.x, pose.position.y, q.x, q.y, q.z, q.w)
-        if not all(math.isfinite(v) for v in numbers):
-            self._drop("pose")
-            return
         self._body.on_pose(
             PoseReading(pose.position.x, pose.position.y, yaw_of(q.x, q.y, q.z, q.w))
         )
