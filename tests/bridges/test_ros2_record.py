@@ -202,3 +202,17 @@ def _deps_of(schema_name: str) -> dict[str, Any]:
     for dep in dependencies(schema_name):
         types.update(get_types_from_msg(_without_deps(dep), dep))
     return types
+
+
+def test_endpoints_announce_their_type_hash_in_user_data() -> None:
+    from cyclonedds.core import Policy
+
+    from robocog.bridges.ros2 import messages as m
+    from robocog.bridges.ros2.link import RELIABLE, typed
+
+    qos = typed(RELIABLE, m.Twist)
+    [userdata] = [p for p in qos if isinstance(p, Policy.Userdata)]
+    assert userdata.data == (
+        b"typehash=RIHS01_9c45bf16fe0983d80e3cfe750d6835843d265a9a6c46bd2e609fcddde6fb8d2a;"
+    )
+    assert typed(RELIABLE, m.NavigateToPoseSendGoalRequest) == RELIABLE  # service plumbing

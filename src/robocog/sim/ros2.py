@@ -46,7 +46,7 @@ from robocog.bridges.config import Topics
 from robocog.bridges.perception import quaternion_of
 from robocog.bridges.ros2 import messages as m
 from robocog.bridges.ros2.actions import ActionServer, ServerGoal
-from robocog.bridges.ros2.link import RELIABLE, SENSOR
+from robocog.bridges.ros2.link import RELIABLE, SENSOR, typed
 from robocog.robot.commands import Drop, Forward, GoTo, Outcome, Pick, Turn
 from robocog.robot.percepts import Detection, Gripper, Percept, Pose
 from robocog.worlds.garbage import GarbageField
@@ -139,11 +139,11 @@ class GarbageRobot:
 
         def writer(ros: str, kind: type, qos: Any = RELIABLE) -> DataWriter:
             topic = Topic(dp, m.topic_name(name(ros)), kind, qos=RELIABLE)
-            return DataWriter(dp, topic, qos=qos)
+            return DataWriter(dp, topic, qos=typed(qos, kind))
 
         def reader(ros: str, kind: type) -> DataReader:
             topic = Topic(dp, m.topic_name(name(ros)), kind, qos=RELIABLE)
-            return DataReader(dp, topic, qos=RELIABLE)
+            return DataReader(dp, topic, qos=typed(RELIABLE, kind))
 
         self.w_scan = writer(tp.scan, m.LaserScan, SENSOR)
         self.w_dets = writer(tp.detections, m.Detection2DArray)

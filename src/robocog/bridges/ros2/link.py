@@ -57,6 +57,17 @@ SENSOR = Qos(
 )
 
 
+def typed(qos: Qos, kind: type) -> Qos:
+    """``qos`` with the type's hash in USER_DATA (``typehash=RIHS01_...;``), as
+    rmw_cyclonedds announces each endpoint since ROS 2 Iron."""
+    from robocog.bridges.ros2.definitions import DEFINITIONS, ros_type_of, type_hash
+
+    name = ros_type_of(kind.__idl_typename__)
+    if name not in DEFINITIONS:
+        return qos
+    return Qos(*qos, Policy.Userdata(f"typehash={type_hash(name)};".encode()))
+
+
 class Ros2Link:
     """A ``Link`` speaking ROS 2 over Cyclone DDS on one domain."""
 
@@ -85,9 +96,11 @@ class Ros2Link:
         def topic(name: str, kind: type, prefix: str = "rt", suffix: str = "") -> Topic:
             return Topic(dp, m.topic_name(name, prefix) + suffix, kind, qos=RELIABLE)
 
-        self._cmd_vel = DataWriter(dp, topic(tp.cmd_vel, m.Twist), qos=RELIABLE)
-        self._gripper = DataWriter(dp, topic(tp.gripper_command, m.String), qos=RELIABLE)
-        self._frame_done = DataWriter(dp, topic(tp.frame_done, m.Time), qos=RELIABLE)
+        self._cmd_vel = DataWriter(dp, topic(tp.cmd_vel, m.Twist), qos=typed(RELIABLE, m.Twist))
+        self._gripper = DataWriter(
+            dp, topic(tp.gripper_command, m.String), qos=typed(RELIABLE, m.String)
+        )
+        self._frame_done = DataWriter(dp, topic(tp.frame_done, m.Time), qos=typed(RELIABLE, m.Time))
         record = self.recorder.write if self.recorder is not None else None
         self._navigate = ActionClient(
             dp, tp.navigate_action, m.NAVIGATE_TO_POSE, RELIABLE, on_write=record
@@ -96,24 +109,50 @@ class Ros2Link:
         # the scan is read last: a robot (or a lock-step simulator) that sends a frame's
         # pose and detections before its scan has them all read when the scan is
         readers: list[tuple[DataReader, Any]] = [
-            (DataReader(dp, topic(tp.detections, m.Detection2DArray), qos=RELIABLE), self._on_dets),
-            (DataReader(dp, topic(tp.gripper_state, m.String), qos=RELIABLE), self._on_gripper),
-            (DataReader(dp, topic(tp.narsese, m.String), qos=RELIABLE), self._on_text),
+            (
+                DataReader(
+                    dp,
+                    topic(tp.detections, m.Detection2DArray),
+                    qos=typed(RELIABLE, m.Detection2DArray),
+                ),
+                self._on_dets,
+            ),
+            (
+                DataReader(dp, topic(tp.gripper_state, m.String), qos=typed(RELIABLE, m.String)),
+                self._on_gripper,
+            ),
+            (
+                DataReader(dp, topic(tp.narsese, m.String), qos=typed(RELIABLE, m.String)),
+                self._on_text,
+            ),
         ]
         if self.config.pose_source == "odom":
             readers.append(
-                (DataReader(dp, topic(tp.odom, m.Odometry), qos=RELIABLE), self._on_odom)
+                (
+                    DataReader(dp, topic(tp.odom, m.Odometry), qos=typed(RELIABLE, m.Odometry)),
+                    self._on_odom,
+                )
             )
         elif self.config.pose_source == "amcl":
             pose_qos = RELIABLE  # amcl publishes transient-local; volatile readers match it
             kind = m.PoseWithCovarianceStamped
-            readers.append((DataReader(dp, topic(tp.amcl_pose, kind), qos=pose_qos), self._on_amcl))
+            readers.append(
+                (
+                    DataReader(dp, topic(tp.amcl_pose, kind), qos=typed(pose_qos, kind)),
+                    self._on_amcl,
+                )
+            )
         else:
             raise ValueError(
                 f"pose_source must be 'amcl' or 'odom', not {self.config.pose_source!r}"
             )
         readers += self._navigate.handlers + self._grasp.handlers
-        readers.append((DataReader(dp, topic(tp.scan, m.LaserScan), qos=SENSOR), self._on_scan))
+        readers.append(
+            (
+                DataReader(dp, topic(tp.scan, m.LaserScan), qos=typed(SENSOR, m.LaserScan)),
+                self._on_scan,
+            )
+        )
         #: (reader, handler) pairs the reading thread serves, scan last
         self.readers = readers
         self._body = body
