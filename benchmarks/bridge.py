@@ -91,7 +91,7 @@ def run_echo(domain: int, seconds: float) -> None:
 
 def measure(kind: str, domain: int, trials: int) -> list[float]:
     """Start the process under test, then time ``trials`` scan-to-twist round trips."""
-    from robocog.bridges.ros2.standin import StandInRobot, scan_of
+    from robocog.testing.ros2_standin import StandInRobot, scan_of
 
     target = run_bridge if kind == "robocog" else run_echo
     ctx = multiprocessing.get_context("spawn")

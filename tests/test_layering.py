@@ -7,7 +7,7 @@ from pathlib import Path
 
 SRC = Path(__file__).resolve().parents[1] / "src" / "robocog"
 ENGINES = {"nars", "bdi", "atomspace", "planning"}
-ROBOT_SIDE = {"robot", "minds", "worlds", "bridges", "experiments"}
+ROBOT_SIDE = {"robot", "minds", "worlds", "bridges", "experiments", "sim", "testing"}
 
 #: package -> the robocog packages it must not import
 FORBIDDEN: dict[str, set[str]] = {
@@ -17,7 +17,9 @@ FORBIDDEN: dict[str, set[str]] = {
     "planning": ROBOT_SIDE | {"nars", "bdi"},
     "robot": ENGINES | {"minds", "worlds", "bridges", "experiments"},
     "worlds": ENGINES | {"minds", "bridges", "experiments"},
-    "bridges": ENGINES | {"minds", "worlds", "experiments"},
+    "bridges": ENGINES | {"minds", "worlds", "experiments", "sim", "testing"},
+    "sim": ENGINES | {"minds", "experiments", "testing"},
+    "testing": ENGINES | {"minds", "experiments", "sim"},
 }
 
 

@@ -23,6 +23,8 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "atomese": ("robocog.atomspace.cli", "load Atomese files and evaluate queries"),
     "plan": ("robocog.planning.cli", "plan pick/place/stack/unstack tasks"),
     "bridge": ("robocog.bridges.cli", "drive a real robot over ROS 2 or ROS 1"),
+    "sim": ("robocog.sim.cli", "serve an embedded world as a ROS 2 robot"),
+    "replay": ("robocog.bridges.replay", "feed a recorded run's percepts to a mind"),
 }
 
 

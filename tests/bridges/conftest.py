@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import itertools
 import os
+import random
 import shutil
 import subprocess
 import time
@@ -17,6 +18,13 @@ import pytest
 from tests.bridges.procs import SYSTEM_PYTHON, Child, child_env, free_port
 
 _domains = itertools.count(0)
+#: a random start per test run: several people run these tests on one machine at once
+_FIRST = random.SystemRandom().randrange(230)
+
+
+def random_domain() -> int:
+    """A DDS domain id (1..230) unlikely to be in use by another run on this machine."""
+    return 1 + (_FIRST + 37 * next(_domains)) % 230
 
 
 @pytest.fixture
@@ -40,7 +48,7 @@ def dds() -> tuple[int, dict[str, str]]:
     pytest.importorskip("cyclonedds", reason="the ROS 2 bridge needs the ros2 extra (cyclonedds)")
     from robocog.bridges.ros2.loopback import LOOPBACK_URI
 
-    domain = 1 + (os.getpid() * 7 + next(_domains)) % 200
+    domain = random_domain()
     env = child_env({"CYCLONEDDS_URI": LOOPBACK_URI, "ROS_DOMAIN_ID": str(domain)})
     return domain, env
 

@@ -18,6 +18,8 @@ class FakeLink:
         self.lock = threading.Lock()
         self.tokens = 0
         self.on_gripper_request: str | None = None
+        #: when set, every goal ends with this status shortly after it is sent
+        self.goal_status: str | None = None
 
     def start(self, body: RobotBody) -> None:
         self.body = body
@@ -35,15 +37,19 @@ class FakeLink:
     def send_goal(self, x: float, y: float, yaw: float) -> int:
         self.tokens += 1
         self._record("goal", x, y, yaw, self.tokens)
+        if self.goal_status is not None and self.body is not None:
+            timer = threading.Timer(0.01, self.body.on_goal_result, (self.tokens, self.goal_status))
+            timer.start()
         return self.tokens
 
     def cancel_goals(self) -> None:
         self._record("cancel")
 
-    def send_gripper(self, text: str) -> None:
+    def send_gripper(self, text: str) -> int | None:
         self._record("gripper", text)
         if self.on_gripper_request is not None and self.body is not None:
             self.body.on_gripper(self.on_gripper_request)
+        return None
 
     def of(self, kind: str) -> list[tuple[object, ...]]:
         with self.lock:

@@ -2,9 +2,13 @@
 
 from __future__ import annotations
 
+import logging
 import math
 import threading
 import time
+from dataclasses import replace
+
+import pytest
 
 from robocog.bridges.body import RobotBody
 from robocog.bridges.config import BridgeConfig
@@ -93,30 +97,89 @@ def test_a_halt_cancels_a_motion_under_way_and_refuses_new_ones() -> None:
     assert body.execute(Forward(0.01)).ok
 
 
-def test_goto_sends_the_places_coordinates() -> None:
-    body, link = body_with()
+def test_goto_sends_the_places_coordinates_and_ends_with_the_navigators_result() -> None:
+    body, link = body_with(replace(FAST, goto_timeout=5.0))
+    link.goal_status = "succeeded"
     assert body.execute(GoTo("bin")).ok
     assert link.of("goal") == [(2.0, 1.0, 0.5, 1)]
-    unknown = body.execute(GoTo("moon"))
-    assert unknown.status is Status.FAILED and "moon" in unknown.reason
 
 
-def test_goto_waits_for_the_goal_result_when_asked() -> None:
-    config = BridgeConfig(places={"bin": (2.0, 1.0, 0.0)}, goto_wait=2.0)
-    body, _link = body_with(config)
-    threading.Timer(0.1, body.on_goal_result, args=(1, "aborted")).start()
+@pytest.mark.parametrize(
+    ("status", "expected"),
+    [("aborted", Status.FAILED), ("canceled", Status.CANCELLED), ("rejected", Status.FAILED)],
+)
+def test_a_goal_that_does_not_arrive_is_no_success(status: str, expected: Status) -> None:
+    body, link = body_with(replace(FAST, goto_timeout=5.0))
+    link.goal_status = status
     outcome = body.execute(GoTo("bin"))
-    assert outcome.status is Status.FAILED and "aborted" in outcome.reason
-    threading.Timer(0.1, body.on_pose, args=(PoseReading(2.1, 1.0, 0.0),)).start()
-    assert body.execute(GoTo("bin")).ok  # arrival seen in the pose
+    assert outcome.status is expected and status in outcome.reason
 
 
-def test_goto_gives_up_and_cancels_after_the_wait() -> None:
-    config = BridgeConfig(places={"bin": (2.0, 1.0, 0.0)}, goto_wait=0.2)
-    body, link = body_with(config)
+def test_goto_never_succeeds_before_the_result_even_when_the_pose_is_there() -> None:
+    body, link = body_with(replace(FAST, goto_timeout=0.3))
+    body.on_pose(PoseReading(2.0, 1.0, 0.0))  # already there, by the pose
+    started = time.monotonic()
     outcome = body.execute(GoTo("bin"))
-    assert outcome.status is Status.FAILED
-    assert link.of("cancel")
+    assert outcome.status is Status.FAILED and "no navigation result" in outcome.reason
+    assert time.monotonic() - started >= 0.3
+    assert link.of("cancel")  # the goal is cancelled on the time-out
+
+
+def test_an_unknown_place_fails_and_is_warned_once_with_the_known_names(
+    caplog: pytest.LogCaptureFixture,
+) -> None:
+    body, link = body_with()
+    with caplog.at_level(logging.WARNING, logger="robocog.bridges"):
+        for _ in range(3):
+            outcome = body.execute(GoTo("moon"))
+            assert outcome.status is Status.FAILED and "moon" in outcome.reason
+    warnings = [r.getMessage() for r in caplog.records if "moon" in r.getMessage()]
+    assert len(warnings) == 1 and "bin" in warnings[0]
+    assert link.of("goal") == []
+
+
+ROUTE = BridgeConfig(
+    places={"a": (1.0, 0.0, 0.0), "b": (2.0, 0.0, 0.0), "c": (3.0, 0.0, 0.0)},
+    route=("a", "b", "c"),
+    start=(0.0, 0.0, 0.0),
+    goto_timeout=5.0,
+)
+
+
+def test_next_follows_the_route_and_ends_at_the_start() -> None:
+    body, link = body_with(ROUTE)
+    link.goal_status = "succeeded"
+    for _ in range(5):
+        assert body.execute(GoTo("next")).ok
+    xs = [goal[0] for goal in link.of("goal")]
+    assert xs == [1.0, 2.0, 3.0, 0.0, 1.0]  # a, b, c, the start, and round again
+
+
+def test_start_is_the_configured_start_else_the_routes_first_place() -> None:
+    body, link = body_with(ROUTE)
+    link.goal_status = "succeeded"
+    assert body.execute(GoTo("start")).ok
+    assert link.of("goal")[-1][:2] == (0.0, 0.0)
+    body, link = body_with(replace(ROUTE, start=None))
+    link.goal_status = "succeeded"
+    assert body.execute(GoTo("start")).ok
+    assert link.of("goal")[-1][:2] == (1.0, 0.0)
+    for _ in range(3):
+        body.execute(GoTo("next"))
+    assert [g[0] for g in link.of("goal")][1:] == [2.0, 3.0, 1.0]  # wraps to the first
+
+
+def test_a_failed_goal_does_not_advance_the_route_but_the_pose_does() -> None:
+    body, link = body_with(replace(ROUTE, place_radius=0.3))
+    link.goal_status = "aborted"
+    assert not body.execute(GoTo("next")).ok
+    link.goal_status = "succeeded"
+    assert body.execute(GoTo("next")).ok
+    assert [g[0] for g in link.of("goal")] == [1.0, 1.0]
+    body.on_pose(PoseReading(3.0, 0.1, 0.0))  # driven to c by hand
+    body.percepts()
+    assert body.execute(GoTo("next")).ok
+    assert link.of("goal")[-1][:2] == (0.0, 0.0)  # after c: the start
 
 
 def test_pick_succeeds_when_the_gripper_reports_a_hold() -> None:

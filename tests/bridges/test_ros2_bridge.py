@@ -22,7 +22,7 @@ def standin(domain: int, scene: dict[str, Any] | None = None) -> list[str]:
     return [
         sys.executable,
         "-m",
-        "robocog.bridges.ros2.standin",
+        "robocog.testing.ros2_standin",
         "--domain",
         str(domain),
         "--scene",
@@ -83,7 +83,7 @@ def test_an_obstacle_on_the_left_turns_the_robot_right_and_a_bottle_is_picked(
     assert run.wait_for(lambda: "Pick(target='bottle') -> succeeded" in "".join(run.errors), 10)
 
 
-def test_narsese_text_reaches_the_mind_and_goals_go_to_goal_pose_and_cancel(
+def test_narsese_text_reaches_the_mind_and_goals_go_to_navigate_to_pose_and_cancel(
     spawn: Callable[..., Child], dds: tuple[int, dict[str, str]]
 ) -> None:
     domain, env = dds

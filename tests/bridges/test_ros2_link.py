@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import math
-import os
 from collections.abc import Iterator
 
 import pytest
@@ -19,8 +18,9 @@ from robocog.bridges.config import BridgeConfig, Topics  # noqa: E402
 from robocog.bridges.ros2 import messages as m  # noqa: E402
 from robocog.bridges.ros2.link import RELIABLE, Ros2Link  # noqa: E402
 from robocog.bridges.ros2.loopback import use_loopback  # noqa: E402
-from robocog.bridges.ros2.standin import StandInRobot  # noqa: E402
 from robocog.robot import Detection, Gripper, Obstacle, Pick, Pose, Turn  # noqa: E402
+from robocog.testing.ros2_standin import StandInRobot  # noqa: E402
+from tests.bridges.conftest import random_domain  # noqa: E402
 from tests.bridges.procs import wait_until  # noqa: E402
 
 RENAMED = Topics(
@@ -39,7 +39,7 @@ RENAMED = Topics(
 @pytest.fixture
 def domain() -> int:
     use_loopback()  # this process's participants stay on 127.0.0.1
-    return 1 + (os.getpid() * 11 + 5) % 200
+    return random_domain()
 
 
 @pytest.fixture

@@ -60,15 +60,18 @@ class Link(Protocol):
         ...
 
     def send_goal(self, x: float, y: float, yaw: float) -> int:
-        """Send a navigation goal in the map frame; returns a token for its result."""
+        """Send a navigation goal in the map frame; returns a token for its result,
+        which the link hands to ``RobotBody.on_goal_result`` when the goal ends."""
         ...
 
     def cancel_goals(self) -> None:
         """Cancel every navigation goal under way."""
         ...
 
-    def send_gripper(self, text: str) -> None:
-        """Send a gripper request: ``pick <target>`` or ``drop``."""
+    def send_gripper(self, text: str) -> int | None:
+        """Send a gripper request: ``pick <target>`` or ``drop``. Returns a token when
+        the link reports the request's result (``RobotBody.on_gripper_result``), None
+        when only the gripper's state tells."""
         ...
 
 
@@ -91,6 +94,14 @@ class RobotBody:
         self._gripper: str | None = None
         self._texts: deque[str] = deque(maxlen=1000)
         self._goal_results: dict[int, str] = {}
+        self._gripper_results: dict[int, tuple[bool, str]] = {}
+        self._last_place: str | None = None  # the last route place reached
+        self._warned_places: set[str] = set()
+        self._scans = 0  # laser scans received: the frames of lock-step operation
+        self._heard: dict[str, float] = {}  # sensor -> when it last reported
+        self._scan_stamp = 0.0
+        #: readings dropped because they held NaN or infinite values, by sensor
+        self.dropped: dict[str, int] = {}
         self._last_reading = -math.inf
         self._generation = 0
         self._halted: str | None = None
@@ -122,23 +133,43 @@ class RobotBody:
 
     # -- readings, from the link's thread -------------------------------------
 
-    def on_scan(self, scan: ScanReading) -> None:
-        """A laser scan arrived."""
+    def on_scan(self, scan: ScanReading, stamp: float = 0.0) -> None:
+        """A laser scan arrived (``stamp``: its header time, which names the frame).
+
+        A scan whose angles or limits are not finite, or with a NaN range, is dropped
+        and counted: it cannot say where an obstacle is (+inf ranges are ROS's "no
+        return" and stay)."""
+        numbers = (scan.angle_min, scan.angle_increment, scan.range_min, scan.range_max)
+        if not all(math.isfinite(v) for v in numbers) or any(math.isnan(r) for r in scan.ranges):
+            self.drop_reading("scan")
+            return
         with self._lock:
             self._scan = scan
+            self._scans += 1
+            self._scan_stamp = stamp
+            self._heard["scan"] = time.monotonic()
             self._touch()
 
     def on_boxes(self, boxes: list[BoxReading]) -> None:
-        """A detection array arrived (possibly empty: nothing seen)."""
+        """A detection array arrived (possibly empty: nothing seen); a box with a value
+        that is not finite is dropped and counted."""
+        kept = [b for b in boxes if _finite_box(b)]
+        for _ in range(len(boxes) - len(kept)):
+            self.drop_reading("detection")
         with self._lock:
-            self._boxes = list(boxes)
+            self._boxes = kept
             self._boxes_at = time.monotonic()
+            self._heard["detections"] = self._boxes_at
             self._touch()
 
     def on_pose(self, pose: PoseReading) -> None:
-        """The robot's pose arrived."""
+        """The robot's pose arrived; one that is not finite is dropped and counted."""
+        if not all(math.isfinite(v) for v in (pose.x, pose.y, pose.yaw)):
+            self.drop_reading("pose")
+            return
         with self._lock:
             self._pose = pose
+            self._heard["pose"] = time.monotonic()
             self._touch()
 
     def on_gripper(self, state: str) -> None:
@@ -157,10 +188,26 @@ class RobotBody:
             self._lock.notify_all()
 
     def on_goal_result(self, token: int, status: str) -> None:
-        """A navigation goal ended: ``succeeded``, ``aborted``, ``preempted``, ..."""
+        """A navigation goal ended: ``succeeded``, ``aborted``, ``canceled``, ..."""
         with self._lock:
             self._goal_results[token] = status
             self._lock.notify_all()
+
+    def on_gripper_result(self, token: int, ok: bool, reason: str, holding: str | None) -> None:
+        """A gripper request ended; ``holding`` is what the gripper holds now."""
+        with self._lock:
+            self._gripper_results[token] = (ok, reason)
+            state = (holding or "").strip()
+            self._gripper = None if state.lower() in EMPTY_GRIPPER else state
+            self._lock.notify_all()
+
+    def drop_reading(self, sensor: str) -> None:
+        """Count a reading refused for NaN or infinite values (it never reaches a mind)."""
+        with self._lock:
+            count = self.dropped.get(sensor, 0) + 1
+            self.dropped[sensor] = count
+        if count == 1:
+            log.warning("dropped a %s reading with NaN or infinite values (counted)", sensor)
 
     def _touch(self) -> None:
         self._last_reading = time.monotonic()
@@ -178,11 +225,56 @@ class RobotBody:
         with self._lock:
             return time.monotonic() - self._last_reading
 
+    def stale(self) -> str | None:
+        """Why the robot's readings are too old to act on, or None while they are fresh.
+
+        Every sensor that has reported once must keep reporting within its own limit
+        (``scan_timeout``, ``pose_timeout``, ``detections_timeout``; 0 watches it not):
+        a scan that stops while poses still arrive stops the robot all the same.
+        """
+        c = self.config
+        now = time.monotonic()
+        with self._lock:
+            age = now - self._last_reading
+            heard = dict(self._heard)
+        if age > c.watchdog_seconds:
+            if math.isinf(age):
+                return "no percepts from the robot yet"
+            return f"no percepts for {c.watchdog_seconds:g} s (last {age:.2f} s ago)"
+        limits = {
+            "scan": c.watchdog_seconds if c.scan_timeout is None else c.scan_timeout,
+            "pose": c.pose_timeout,
+            "detections": c.detections_timeout,
+        }
+        for sensor, limit in limits.items():
+            if limit > 0 and sensor in heard and now - heard[sensor] > limit:
+                return f"no {sensor} for {limit:g} s (last {now - heard[sensor]:.2f} s ago)"
+        return None
+
     def wait_for_readings(self, timeout: float) -> bool:
         """Block until a new reading arrives or ``timeout`` passes; True if one came."""
         with self._lock:
             seen = self._generation
             return self._lock.wait_for(lambda: self._generation != seen, timeout)
+
+    @property
+    def scans(self) -> int:
+        """How many laser scans have arrived (the frames of ``lockstep`` operation)."""
+        with self._lock:
+            return self._scans
+
+    def wait_for_frame(self, seen: int, timeout: float) -> tuple[int, float]:
+        """Block until a scan newer than the ``seen``-th arrives or ``timeout`` passes;
+        returns the count of scans and the latest one's stamp."""
+        with self._lock:
+            self._lock.wait_for(lambda: self._scans != seen, timeout)
+            return self._scans, self._scan_stamp
+
+    def frame_done(self, stamp: float) -> None:
+        """Tell the robot the frame stamped ``stamp`` is decided (if its link can)."""
+        send = getattr(self.link, "frame_done", None)
+        if callable(send):
+            send(stamp)
 
     def texts(self) -> list[str]:
         """The text lines received since the last call, oldest first."""
@@ -192,19 +284,28 @@ class RobotBody:
             return lines
 
     def percepts(self) -> list[Percept]:
-        """The latest obstacle, the detections still fresh, the pose and the gripper."""
+        """The detections still fresh, the latest obstacle, the gripper and the pose,
+        in the order the embedded worlds give them."""
         c = self.config
         with self._lock:
             scan, pose, gripper = self._scan, self._pose, self._gripper
+            if c.pose_on_arrival:
+                pose, self._pose = self._pose, None
             fresh = time.monotonic() - self._boxes_at <= c.detection_ttl
             boxes = list(self._boxes) if fresh else []
         out: list[Percept] = []
-        if scan is not None:
-            out.append(nearest_obstacle(scan, c.obstacle_range, c.front_half_width))
         out.extend(detection_of(b, c.image_width, c.horizontal_fov) for b in boxes)
-        if pose is not None:
-            out.append(pose_of(pose, c.places, c.place_radius))
+        if scan is not None:
+            out.append(
+                nearest_obstacle(scan, c.obstacle_range, c.front_half_width, c.obstacle_half_width)
+            )
         out.append(Gripper(gripper))
+        if pose is not None:
+            percept = pose_of(pose, c.places, c.place_radius)
+            if percept.place in c.route_places:
+                with self._lock:
+                    self._last_place = percept.place
+            out.append(percept)
         return out
 
     def execute(self, command: Command) -> Outcome:
@@ -286,21 +387,28 @@ class RobotBody:
             self.link.send_velocity(0.0, 0.0)
 
     def _goto(self, place: str) -> Outcome:
-        target = self.config.places.get(place)
+        """Send the place's pose as a navigation goal and wait for the goal's result:
+        a GoTo never succeeds before the navigator says the robot arrived."""
+        with self._lock:
+            last = self._last_place
+        target = self.config.resolve(place, last)
         if target is None:
+            if place not in self._warned_places:
+                self._warned_places.add(place)
+                known = ", ".join([*self.config.places, "next", "start"])
+                log.warning("GoTo(%r): unknown place; known places: %s", place, known)
             return Outcome.failure(f"unknown place {place!r}")
-        x, y, yaw = target
+        name, (x, y, yaw) = target
         token = self.link.send_goal(x, y, yaw)
-        if self.config.goto_wait <= 0:
-            return Outcome.success()
-        deadline = time.monotonic() + self.config.goto_wait
+        deadline = time.monotonic() + self.config.goto_timeout
         with self._lock:
             while True:
                 status = self._goal_results.pop(token, None)
                 if status is not None:
-                    return _goal_outcome(status)
-                if self._pose is not None and self._at(self._pose, x, y):
-                    return Outcome.success()
+                    outcome = _goal_outcome(status)
+                    if outcome.ok:
+                        self._last_place = name if name in self.config.route_places else None
+                    return outcome
                 if self._halted is not None:
                     return self._halted_outcome()
                 left = deadline - time.monotonic()
@@ -308,28 +416,40 @@ class RobotBody:
                     break
                 self._lock.wait(min(left, 0.1))
         self.link.cancel_goals()
-        return Outcome.failure(f"did not reach {place} within {self.config.goto_wait:g} s")
-
-    def _at(self, pose: PoseReading, x: float, y: float) -> bool:
-        return math.hypot(pose.x - x, pose.y - y) <= self.config.place_radius
+        limit = self.config.goto_timeout
+        return Outcome.failure(f"no navigation result for {name} within {limit:g} s")
 
     def _gripper_request(self, text: str, done: Callable[[str | None], bool]) -> Outcome:
-        self.link.send_gripper(text)
+        token = self.link.send_gripper(text)
         with self._lock:
-            ok = self._lock.wait_for(
-                lambda: done(self._gripper) or self._halted is not None,
-                self.config.gripper_timeout,
-            )
+            if token is not None:  # the link reports the request's own result
+                ok = self._lock.wait_for(
+                    lambda: token in self._gripper_results or self._halted is not None,
+                    self.config.grasp_timeout,
+                )
+                result = self._gripper_results.pop(token, None)
+                if result is not None:
+                    success, reason = result
+                    return Outcome.success() if success else Outcome.failure(reason or text)
+            else:
+                ok = self._lock.wait_for(
+                    lambda: done(self._gripper) or self._halted is not None,
+                    self.config.gripper_timeout,
+                )
             if self._halted is not None:
                 return self._halted_outcome()
-        if ok:
+        if ok and token is None:
             return Outcome.success()
         return Outcome.failure(f"the gripper did not confirm {text!r}")
+
+
+def _finite_box(box: BoxReading) -> bool:
+    return all(math.isfinite(v) for v in (box.score, box.center_x, *box.position))
 
 
 def _goal_outcome(status: str) -> Outcome:
     if status == "succeeded":
         return Outcome.success()
-    if status in ("preempted", "recalled", "cancelled"):
+    if status in ("preempted", "recalled", "cancelled", "canceled"):
         return Outcome.cancelled(f"navigation goal {status}")
     return Outcome.failure(f"navigation goal {status}")

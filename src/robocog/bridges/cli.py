@@ -50,6 +50,11 @@ def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--program", type=Path, help="AgentSpeak (.asl) program of a BDI mind")
     parser.add_argument("--config", type=Path, help="TOML file: topics, places, speeds, limits")
     parser.add_argument(
+        "--robot",
+        help="a robot configuration shipped with robocog (default: garbage, the field "
+        "`robocog sim garbage --ros2` serves, when neither --config nor --place is given)",
+    )
+    parser.add_argument(
         "--place",
         action="append",
         default=[],
@@ -67,8 +72,18 @@ def configure(parser: argparse.ArgumentParser) -> None:
         "--watchdog", type=float, help="stop the robot after this many seconds without percepts"
     )
     parser.add_argument(
-        "--goto-wait", type=float, help="seconds a GoTo waits for arrival (0: do not wait)"
+        "--goto-timeout",
+        type=float,
+        help="seconds a GoTo waits for the navigation result before it cancels and fails",
     )
+    parser.add_argument("--seed", type=int, default=0, help="the mind's seed (default 0)")
+    parser.add_argument(
+        "--lockstep",
+        action="store_true",
+        help="decide once per scan and acknowledge it on /sim/frame_done (a lock-step sim)",
+    )
+    parser.add_argument("--namespace", default="", help="prefix of every topic and action")
+    parser.add_argument("--record", type=Path, metavar="FILE.mcap", help="record every message")
     parser.add_argument("--duration", type=float, help="end after this many seconds")
     parser.add_argument(
         "--domain", type=int, help="ROS 2: the DDS domain (default ROS_DOMAIN_ID or 0)"
@@ -95,7 +110,7 @@ def run(args: argparse.Namespace) -> int:
     )
     try:
         config = build_config(args)
-        mind = build_mind(args.mind, args.knowledge or args.program, list(config.places))
+        mind = make_mind(args.mind, config, args.knowledge or args.program, args.seed)
     except (MindUnavailable, ValueError, OSError) as exc:
         print(f"robocog bridge: {exc}", file=sys.stderr)
         return 2
@@ -148,15 +163,29 @@ def _make_link(args: argparse.Namespace, config: BridgeConfig) -> Any:
             raise ImportError(
                 "ROS 2 needs the cyclonedds package: pip install 'robocog[ros2]'"
             ) from exc
-        return Ros2Link(config, args.domain)
+        recorder = None
+        if args.record is not None:
+            from robocog.bridges.ros2.record import Recorder
+
+            recorder = Recorder(args.record)
+        return Ros2Link(config, args.domain, recorder=recorder)
     from robocog.bridges.ros1.link import Ros1Link
 
     return Ros1Link(config, python=args.ros1_python)
 
 
 def build_config(args: argparse.Namespace) -> BridgeConfig:
-    """The configuration file, then the command line's places, topics and limits on top."""
-    config = BridgeConfig.from_toml(args.config) if args.config else BridgeConfig()
+    """The configuration file (or a shipped robot's), then the command line's places,
+    topics and limits on top."""
+    robot = getattr(args, "robot", None)
+    if args.config:
+        config = BridgeConfig.from_toml(args.config)
+    elif robot or not args.place:
+        config = BridgeConfig.preset(robot or "garbage")
+        if not robot:
+            log.info("no places configured: using the garbage field's (--robot garbage)")
+    else:
+        config = BridgeConfig()
     places = dict(config.places)
     for item in args.place:
         name, _, coords = item.partition("=")
@@ -175,11 +204,59 @@ def build_config(args: argparse.Namespace) -> BridgeConfig:
             raise ValueError(f"--topic {item!r}: expected KEY=NAME with KEY one of {known}")
         topics = replace(topics, **{key: name})
     changes: dict[str, Any] = {"places": places, "topics": topics}
+    namespace = getattr(args, "namespace", "").strip("/")
+    if namespace:
+        changes["topics"] = Topics(
+            **{
+                key: f"/{namespace}/{value.lstrip('/')}" if value.startswith("/") else value
+                for key, value in vars(topics).items()
+            }
+        )
     if args.watchdog is not None:
         changes["watchdog_seconds"] = args.watchdog
-    if args.goto_wait is not None:
-        changes["goto_wait"] = args.goto_wait
+    if getattr(args, "goto_timeout", None) is not None:
+        changes["goto_timeout"] = args.goto_timeout
+    if getattr(args, "lockstep", False):
+        changes["lockstep"] = True
     return replace(config, **changes)
+
+
+def make_mind(name: str, config: BridgeConfig, source: Path | None = None, seed: int = 0) -> Any:
+    """The bridge's one place that builds a mind from its name and the robot's setup.
+
+    The shipped minds are built as the garbage experiment builds them (the route's
+    places, the seed, the shipped knowledge unless a file is given); a ``module:factory``
+    goes through ``build_mind``. The engines are imported by name, at run time.
+    """
+    places = list(config.route_places)
+    if name == "nars":
+        module = _import_mind("nars")
+        knowledge = None
+        if source is not None:
+            knowledge = [ln for ln in source.read_text(encoding="utf-8").splitlines() if ln.strip()]
+        try:
+            return module.NarsMind(places, module.NarsSettings(seed=seed), knowledge)
+        except Exception as exc:  # noqa: BLE001 - an engine may refuse its input in any way
+            raise MindUnavailable(f"mind 'nars' could not start: {exc}") from exc
+    if name == "bdi":
+        module = _import_mind("bdi")
+        text = None if source is None else source.read_text(encoding="utf-8")
+        try:
+            return module.BdiMind(text)
+        except Exception as exc:  # noqa: BLE001
+            raise MindUnavailable(f"mind 'bdi' could not start: {exc}") from exc
+    return build_mind(name, source, places)
+
+
+def _import_mind(name: str) -> Any:
+    module_name, attr = MINDS[name]
+    try:
+        module = importlib.import_module(module_name)
+    except ImportError as exc:
+        raise MindUnavailable(f"mind {name!r} is not available: {exc}") from exc
+    if not hasattr(module, attr):
+        raise MindUnavailable(f"mind {name!r} is not available: {module_name} has no {attr}")
+    return module
 
 
 def build_mind(name: str, source: Path | None = None, places: list[str] | None = None) -> Any:

@@ -27,8 +27,12 @@ class Topics:
     gripper_command: str = "/gripper/command"
     cmd_vel: str = "/cmd_vel"
     goal_pose: str = "/goal_pose"
-    #: ROS 2: the Nav2 action whose goals a cancel stops (its cancel service is used).
+    #: ROS 2: the Nav2 action ``nav2_msgs/action/NavigateToPose`` that takes GoTo goals
     navigate_action: str = "/navigate_to_pose"
+    #: ROS 2: the gripper action (``robocog_msgs/action/Grasp``: pick or drop)
+    grasp_action: str = "/gripper/grasp"
+    #: ROS 2: the simulator's lock-step acknowledgement (builtin_interfaces/Time)
+    frame_done: str = "/sim/frame_done"
     #: ROS 1: the move_base action namespace.
     move_base: str = "/move_base"
 
@@ -40,6 +44,12 @@ class BridgeConfig:
     topics: Topics = field(default_factory=Topics)
     #: name -> (x, y, theta) in the map frame
     places: dict[str, tuple[float, float, float]] = field(default_factory=dict)
+    #: the places in the order a patrol visits them: ``GoTo("next")`` is the place after
+    #: the last one reached (empty: the order of ``places``)
+    route: tuple[str, ...] = ()
+    #: where the route begins and ends, ``GoTo("start")`` (None: the route's first place);
+    #: not a place the pose is named after, as the garbage field's start corner is not
+    start: tuple[float, float, float] | None = None
     #: how close (m) the robot must be to a place to be "at" it
     place_radius: float = 0.5
     #: ``amcl`` reads /amcl_pose (PoseWithCovarianceStamped), ``odom`` reads /odom
@@ -49,6 +59,11 @@ class BridgeConfig:
     obstacle_range: float = 2.0
     #: half width (rad) of the front sector of the scan
     front_half_width: float = math.pi / 6
+    #: returns farther off the heading than this (rad) are ignored (pi: all around)
+    obstacle_half_width: float = math.pi / 2
+    #: a Pose percept only in the cycle after a pose arrived (localisation as an event),
+    #: rather than the latest pose every cycle
+    pose_on_arrival: bool = False
     #: camera image width (px) and horizontal field of view (rad) for bearings
     image_width: float = 640.0
     horizontal_fov: float = math.radians(60.0)
@@ -64,16 +79,38 @@ class BridgeConfig:
     command_rate: float = 10.0
     #: wait this long (s) for the gripper to report the grasp or the release
     gripper_timeout: float = 3.0
-    #: 0 returns from GoTo once the goal is sent; more waits that long for arrival
-    goto_wait: float = 0.0
+    #: wait this long (s) for the result of the gripper action (a grasp approaches first)
+    grasp_timeout: float = 60.0
+    #: a GoTo waits this long (s) for the navigation result, then cancels and fails
+    goto_timeout: float = 120.0
     #: percepts older than this (s) trip the watchdog and stop the robot
     watchdog_seconds: float = 1.0
+    #: a sensor that has reported must report again within its limit (s), else the
+    #: watchdog stops the robot; None: ``watchdog_seconds``; 0: not watched
+    scan_timeout: float | None = None
+    pose_timeout: float = 0.0
+    detections_timeout: float = 0.0
     #: a mind that takes longer than this (s) for one cycle trips the watchdog
     mind_timeout: float = 5.0
     #: this many mind failures in a row end the run (the robot stays stopped)
     max_mind_failures: int = 3
     #: the cycle waits at most this long (s) for new percepts before deciding anyway
     cycle_period: float = 0.1
+    #: one decision per laser scan (the frame of a robot or a simulator), acknowledged
+    #: on ``frame_done`` so that a lock-step simulator can step on
+    lockstep: bool = False
+
+    @classmethod
+    def preset(cls, name: str) -> BridgeConfig:
+        """A configuration shipped with robocog (``robocog/bridges/robots/NAME.toml``)."""
+        import importlib.resources
+
+        if not name.replace("_", "").replace("-", "").isalnum():
+            raise ValueError(f"not a robot name: {name!r}")
+        resource = importlib.resources.files("robocog.bridges").joinpath("robots", f"{name}.toml")
+        if not resource.is_file():
+            raise ValueError(f"no shipped robot configuration {name!r}")
+        return cls.from_dict(tomllib.loads(resource.read_text()), source=f"robot {name}")
 
     @classmethod
     def from_toml(cls, path: str | Path) -> BridgeConfig:
@@ -104,5 +141,48 @@ class BridgeConfig:
             places[name] = (x, y, rest[0] if rest else 0.0)
         if "class_names" in data:
             data["class_names"] = tuple(str(n) for n in data["class_names"])
+        if "route" in data:
+            data["route"] = tuple(str(n) for n in data["route"])
+            missing = [n for n in data["route"] if n not in places]
+            if missing:
+                raise ValueError(f"{source}: route names unknown places {missing}")
+        if "start" in data:
+            value = data["start"]
+            if not isinstance(value, list | tuple) or len(value) not in (2, 3):
+                raise ValueError(f"{source}: start must be [x, y] or [x, y, theta]")
+            x, y, *rest = (float(v) for v in value)
+            data["start"] = (x, y, rest[0] if rest else 0.0)
         config = cls(topics=Topics(**topics_data), places=places)
         return replace(config, **data)
+
+    @property
+    def route_places(self) -> tuple[str, ...]:
+        """The patrol's places in order: ``route``, else every place as configured."""
+        return self.route or tuple(self.places)
+
+    def resolve(
+        self, place: str, last: str | None
+    ) -> tuple[str, tuple[float, float, float]] | None:
+        """Where ``GoTo(place)`` leads: its name and map pose, or None for an unknown place.
+
+        ``next`` is the route's place after ``last`` (the last route place reached; the
+        route's first when none), and after the route's end the start; ``start`` is the
+        configured start, else the route's first place. A configured place of either
+        name wins over the meaning.
+        """
+        if place in self.places:
+            return place, self.places[place]
+        route = self.route_places
+        if place in ("next", ""):
+            if not route:
+                return None
+            i = route.index(last) + 1 if last in route else 0
+            if i < len(route):
+                return route[i], self.places[route[i]]
+            place = "start"
+        if place == "start":
+            if self.start is not None:
+                return "start", self.start
+            if route:
+                return route[0], self.places[route[0]]
+        return None

@@ -47,14 +47,18 @@ class PoseReading:
 
 
 def nearest_obstacle(
-    scan: ScanReading, within: float = 2.0, front_half_width: float = math.pi / 6
+    scan: ScanReading,
+    within: float = 2.0,
+    front_half_width: float = math.pi / 6,
+    half_width: float = math.pi / 2,
 ) -> Obstacle:
     """The sector of the nearest valid return closer than ``within`` metres.
 
     A return is valid when it is finite and inside the scanner's own limits. Bearings
     within ``front_half_width`` of straight ahead are ``front``, larger positive ones
     ``left`` and negative ones ``right`` (ROS angles grow counter-clockwise). Returns
-    behind the robot (beyond +-90 degrees) are ignored: the robot cannot drive into them.
+    beyond ``half_width`` (by default behind the robot, beyond +-90 degrees) are
+    ignored: a robot cannot drive into them.
     With nothing in range the sector is ``none`` at distance ``within``.
     """
     best = within
@@ -63,7 +67,7 @@ def nearest_obstacle(
         if not math.isfinite(r) or r < scan.range_min or r > scan.range_max:
             continue
         angle = _wrap(scan.angle_min + i * scan.angle_increment)
-        if abs(angle) > math.pi / 2:
+        if abs(angle) > half_width:
             continue
         if r < best:
             best, best_angle = r, angle

@@ -11,7 +11,6 @@ stops the robot the same way; after ``max_mind_failures`` failures in a row the 
 from __future__ import annotations
 
 import logging
-import math
 import threading
 import time
 from collections import deque
@@ -71,18 +70,33 @@ class BridgeRunner:
         watchdog.start()
         failures = 0
         code = 0
+        frames, decided = 0, -1.0
         try:
             while not self._stop.is_set():
                 if deadline is not None and time.monotonic() >= deadline:
                     break
                 if max_cycles is not None and self.cycles >= max_cycles:
                     break
-                self.body.wait_for_readings(self.config.cycle_period)
+                if self.config.lockstep:
+                    frames, stamp = self.body.wait_for_frame(frames, self.config.cycle_period)
+                    if stamp <= decided:  # no new frame, or a frame sent again: acknowledge
+                        if decided >= 0 and stamp == decided:
+                            self.body.frame_done(stamp)
+                        continue
+                else:
+                    self.body.wait_for_readings(self.config.cycle_period)
                 if self._trip == "percepts":
                     continue
-                if self.body.percept_age() > self.config.watchdog_seconds:
+                if self.body.stale() is not None:
                     continue  # nothing (fresh) to decide on yet; the watchdog will act
-                if self._cycle():
+                ok = self._cycle()
+                if self.config.lockstep:
+                    decided = stamp
+                    # the next decision is on a scan taken after this cycle's commands
+                    # ended, never on one sent while the robot was still carrying them out
+                    frames = self.body.scans
+                    self.body.frame_done(stamp)
+                if ok:
                     failures = 0
                 else:
                     failures += 1
@@ -143,18 +157,14 @@ class BridgeRunner:
     def _watch(self) -> None:
         period = min(0.05, self.config.watchdog_seconds / 4)
         while not self._stop.wait(period):
-            age = self.body.percept_age()
             since = self._mind_since
             if since is not None and time.monotonic() - since > self.config.mind_timeout:
                 if self._trip is None:
                     self._halt("mind", f"the mind took longer than {self.config.mind_timeout:g} s")
-            elif age > self.config.watchdog_seconds:
+                continue
+            reason = self.body.stale()
+            if reason is not None:
                 if self._trip != "percepts":
-                    if math.isinf(age):
-                        reason = "no percepts from the robot yet"
-                    else:
-                        limit = self.config.watchdog_seconds
-                        reason = f"no percepts for {limit:g} s (last {age:.2f} s ago)"
                     self._halt("percepts", reason)
             elif self._trip == "percepts":
                 self._clear("percepts are back; resuming")

@@ -60,6 +60,16 @@ def configure_garbage(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument("--json", type=Path, metavar="FILE", help="write the results as JSON")
     parser.add_argument(
+        "--over",
+        choices=("process", "ros2"),
+        default="process",
+        help="ros2: the world and the mind in separate processes over DDS (ROS 2 messages), "
+        "reported beside the in-process run of the same seeds",
+    )
+    parser.add_argument(
+        "--record", type=Path, metavar="DIR", help="--over ros2: one MCAP recording per mission"
+    )
+    parser.add_argument(
         "--out", type=Path, default=Path("reports/garbage"), metavar="DIR", help="report folder"
     )
     parser.add_argument("--no-report", action="store_true", help="skip the markdown and plots")
@@ -95,6 +105,8 @@ def run_garbage_args(args: argparse.Namespace) -> int:
     except ValueError as exc:
         print(f"robocog experiment: {exc}", file=sys.stderr)
         return 2
+    if getattr(args, "over", "process") == "ros2":
+        return run_garbage_over_ros2(args, specs)
     result = run_garbage(
         specs,
         runs=args.runs,
@@ -164,3 +176,64 @@ def run_garbage(
         page = write_report(result, out)
         console.print(escape(f"report: {page}"))
     return result
+
+
+def run_garbage_over_ros2(args: argparse.Namespace, specs: list[MindSpec]) -> int:
+    """``--over ros2``: each mission in process and over DDS, the rates side by side."""
+    import json
+
+    from robocog.experiments.garbage import mission_seeds, run_once
+    from robocog.experiments.over_ros2 import pooled, run_mission
+    from robocog.worlds.garbage import GarbageConfig
+
+    config = GarbageConfig(light=args.light)
+    seeds = mission_seeds(args.seed, args.runs)
+    doc: dict[str, object] = {"experiment": "garbage", "over": "ros2", "seeds": seeds, "minds": {}}
+    code = 0
+    print(f"{'mind':6} {'in process':>10} {'over ROS 2':>10} {'difference':>11}  missions")
+    for spec in specs:
+        key = spec.name.lower()
+        if key not in ("nars", "bdi"):
+            print(f"{spec.name:6} skipped: only nars and bdi run over ROS 2", file=sys.stderr)
+            continue
+        why = spec.probe()
+        if why:
+            print(f"{spec.name:6} unavailable: {why}", file=sys.stderr)
+            code = 1
+            continue
+        local = [run_once(spec, config, seed) for seed in seeds]
+        remote = []
+        for seed in seeds:
+            record = None
+            if args.record is not None:
+                args.record.mkdir(parents=True, exist_ok=True)
+                record = args.record / f"{key}-{seed}.mcap"
+            run = run_mission(key, config, seed, record=record)
+            if run.error:
+                print(f"{spec.name} seed {seed}: {run.error}", file=sys.stderr)
+                code = 1
+            remote.append(run)
+        placed = sum(r.objects for r in local)
+        rate_local = sum(r.collected for r in local) / placed if placed else 0.0
+        rate_remote = pooled(remote) or 0.0
+        same = sum(a.collected == b.collected for a, b in zip(local, remote, strict=True))
+        print(
+            f"{spec.name:6} {rate_local:>10.1%} {rate_remote:>10.1%} "
+            f"{(rate_remote - rate_local) * 100:>+10.1f}p  "
+            f"{same}/{len(seeds)} collected the same"
+        )
+        doc["minds"][spec.name] = {  # type: ignore[index]
+            "in_process": {"success_rate": rate_local, "collected": [r.collected for r in local]},
+            "over_ros2": {
+                "success_rate": rate_remote,
+                "collected": [r.collected for r in remote],
+                "frames": [r.frames for r in remote],
+                "wall_seconds": [round(r.wall_seconds, 2) for r in remote],
+                "errors": [r.error for r in remote if r.error],
+                "watchdog_trips": sum(r.watchdog_trips for r in remote),
+            },
+        }
+    if args.json is not None:
+        args.json.parent.mkdir(parents=True, exist_ok=True)
+        args.json.write_text(json.dumps(doc, indent=2))
+    return code

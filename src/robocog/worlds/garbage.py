@@ -405,6 +405,24 @@ class GarbageField:
             return Outcome.failure("blocked by the fence")
         return Outcome.success()
 
+    def drive_to(self, x: float, y: float, heading: float | None = None) -> Outcome:
+        """Drive to a point of the field (a navigator's goal that is no checkpoint),
+        then face ``heading`` if given; a point beyond the fence fails at the fence."""
+        if self.out_of_time:
+            return Outcome.failure("battery spent")
+        c = self.config
+        margin = 0.3
+        cx = min(max(x, margin), c.size - margin)
+        cy = min(max(y, margin), c.size - margin)
+        self._move_to(cx, cy)
+        if (cx, cy) != (x, y):
+            self._log("blocked", "fence")
+            return Outcome.failure("blocked by the fence")
+        if heading is not None:
+            self._advance(abs(_wrap(heading - self.theta)) / c.turn_rate)
+            self.theta = _wrap(heading)
+        return Outcome.success()
+
     def _turn(self, angle: float) -> Outcome:
         self.theta = _wrap(self.theta + angle)
         self._advance(abs(angle) / self.config.turn_rate)

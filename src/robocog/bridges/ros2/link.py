@@ -1,9 +1,12 @@
 """The ROS 2 side of a bridge: Cyclone DDS readers and writers on the ROS 2 topics.
 
 One thread waits on all readers at once and hands every sample, turned into a plain
-reading, to the ``RobotBody``. Writers publish velocity, goals, cancels and gripper
-requests. The QoS follows ROS 2's: reliable and volatile by default, best effort for the
-laser scan (sensor data), plain CDR (XCDR1) as rmw_cyclonedds writes it.
+reading, to the ``RobotBody``. Velocity goes out on ``/cmd_vel``; GoTo is a goal of the
+Nav2 action ``navigate_to_pose`` whose result (succeeded, aborted, canceled) is the
+command's outcome; Pick and Drop are goals of the gripper action (``Grasp``). The QoS
+follows ROS 2's: reliable and volatile by default, best effort for the laser scan
+(sensor data), plain CDR (XCDR1) as rmw_cyclonedds writes it. A reading with a NaN or
+an infinite value where a number is needed is dropped and counted, never handed on.
 """
 
 from __future__ import annotations
@@ -11,7 +14,6 @@ from __future__ import annotations
 import itertools
 import logging
 import os
-import random
 import threading
 import time
 from typing import Any
@@ -27,7 +29,7 @@ from cyclonedds.core import (
 )
 from cyclonedds.domain import DomainParticipant
 from cyclonedds.pub import DataWriter
-from cyclonedds.sub import DataReader
+from cyclonedds.sub import DataReader, InvalidSample
 from cyclonedds.topic import Topic
 from cyclonedds.util import duration
 
@@ -35,6 +37,7 @@ from robocog.bridges.body import RobotBody
 from robocog.bridges.config import BridgeConfig
 from robocog.bridges.perception import BoxReading, PoseReading, ScanReading, quaternion_of, yaw_of
 from robocog.bridges.ros2 import messages as m
+from robocog.bridges.ros2.actions import ActionClient
 
 log = logging.getLogger("robocog.bridges.ros2")
 
@@ -54,20 +57,36 @@ SENSOR = Qos(
 )
 
 
+def typed(qos: Qos, kind: type) -> Qos:
+    """``qos`` with the type's hash in USER_DATA (``typehash=RIHS01_...;``), as
+    rmw_cyclonedds announces each endpoint since ROS 2 Iron."""
+    from robocog.bridges.ros2.definitions import DEFINITIONS, ros_type_of, type_hash
+
+    name = ros_type_of(kind.__idl_typename__)
+    if name not in DEFINITIONS:
+        return qos
+    return Qos(*qos, Policy.Userdata(f"typehash={type_hash(name)};".encode()))
+
+
 class Ros2Link:
     """A ``Link`` speaking ROS 2 over Cyclone DDS on one domain."""
 
-    def __init__(self, config: BridgeConfig, domain_id: int | None = None) -> None:
+    def __init__(
+        self, config: BridgeConfig, domain_id: int | None = None, recorder: Any = None
+    ) -> None:
         self.config = config
+        #: gets (DDS topic, message) of every sample read or written, to record a run
+        self.recorder = recorder
         if domain_id is None:
             domain_id = int(os.environ.get("ROS_DOMAIN_ID", "0"))
         self.domain_id = domain_id
         self._thread: threading.Thread | None = None
         self._stop = threading.Event()
         self._tokens = itertools.count(1)
-        self._guid = random.getrandbits(63)
-        self._seq = itertools.count(1)
         self._dp: DomainParticipant | None = None
+        self._warned: set[str] = set()
+        #: how long a first goal waits for the action server to be discovered (s)
+        self.server_wait = 10.0
 
     def start(self, body: RobotBody) -> None:
         """Create the participant, readers and writers, and start the reading thread."""
@@ -77,35 +96,69 @@ class Ros2Link:
         def topic(name: str, kind: type, prefix: str = "rt", suffix: str = "") -> Topic:
             return Topic(dp, m.topic_name(name, prefix) + suffix, kind, qos=RELIABLE)
 
-        self._cmd_vel = DataWriter(dp, topic(tp.cmd_vel, m.Twist), qos=RELIABLE)
-        self._goal = DataWriter(dp, topic(tp.goal_pose, m.PoseStamped), qos=RELIABLE)
-        self._gripper = DataWriter(dp, topic(tp.gripper_command, m.String), qos=RELIABLE)
-        cancel_name = tp.navigate_action.rstrip("/") + "/_action/cancel_goal"
-        self._cancel = DataWriter(
-            dp, topic(cancel_name, m.CancelGoalRequest, "rq", "Request"), qos=RELIABLE
+        self._cmd_vel = DataWriter(dp, topic(tp.cmd_vel, m.Twist), qos=typed(RELIABLE, m.Twist))
+        self._gripper = DataWriter(
+            dp, topic(tp.gripper_command, m.String), qos=typed(RELIABLE, m.String)
         )
+        self._frame_done = DataWriter(dp, topic(tp.frame_done, m.Time), qos=typed(RELIABLE, m.Time))
+        record = self.recorder.write if self.recorder is not None else None
+        self._navigate = ActionClient(
+            dp, tp.navigate_action, m.NAVIGATE_TO_POSE, RELIABLE, on_write=record
+        )
+        self._grasp = ActionClient(dp, tp.grasp_action, m.GRASP, RELIABLE, on_write=record)
+        # the scan is read last: a robot (or a lock-step simulator) that sends a frame's
+        # pose and detections before its scan has them all read when the scan is
         readers: list[tuple[DataReader, Any]] = [
-            (DataReader(dp, topic(tp.scan, m.LaserScan), qos=SENSOR), self._on_scan),
-            (DataReader(dp, topic(tp.detections, m.Detection2DArray), qos=RELIABLE), self._on_dets),
-            (DataReader(dp, topic(tp.gripper_state, m.String), qos=RELIABLE), self._on_gripper),
-            (DataReader(dp, topic(tp.narsese, m.String), qos=RELIABLE), self._on_text),
+            (
+                DataReader(
+                    dp,
+                    topic(tp.detections, m.Detection2DArray),
+                    qos=typed(RELIABLE, m.Detection2DArray),
+                ),
+                self._on_dets,
+            ),
+            (
+                DataReader(dp, topic(tp.gripper_state, m.String), qos=typed(RELIABLE, m.String)),
+                self._on_gripper,
+            ),
+            (
+                DataReader(dp, topic(tp.narsese, m.String), qos=typed(RELIABLE, m.String)),
+                self._on_text,
+            ),
         ]
         if self.config.pose_source == "odom":
             readers.append(
-                (DataReader(dp, topic(tp.odom, m.Odometry), qos=RELIABLE), self._on_odom)
+                (
+                    DataReader(dp, topic(tp.odom, m.Odometry), qos=typed(RELIABLE, m.Odometry)),
+                    self._on_odom,
+                )
             )
         elif self.config.pose_source == "amcl":
             pose_qos = RELIABLE  # amcl publishes transient-local; volatile readers match it
             kind = m.PoseWithCovarianceStamped
-            readers.append((DataReader(dp, topic(tp.amcl_pose, kind), qos=pose_qos), self._on_amcl))
+            readers.append(
+                (
+                    DataReader(dp, topic(tp.amcl_pose, kind), qos=typed(pose_qos, kind)),
+                    self._on_amcl,
+                )
+            )
         else:
             raise ValueError(
                 f"pose_source must be 'amcl' or 'odom', not {self.config.pose_source!r}"
             )
+        readers += self._navigate.handlers + self._grasp.handlers
+        readers.append(
+            (
+                DataReader(dp, topic(tp.scan, m.LaserScan), qos=typed(SENSOR, m.LaserScan)),
+                self._on_scan,
+            )
+        )
+        #: (reader, handler) pairs the reading thread serves, scan last
+        self.readers = readers
         self._body = body
         self._stop.clear()
         self._thread = threading.Thread(
-            target=self._read, args=(dp, readers), name="ros2-link", daemon=True
+            target=self._read, args=(dp, self.readers), name="ros2-link", daemon=True
         )
         self._thread.start()
 
@@ -115,29 +168,64 @@ class Ros2Link:
         if self._thread is not None:
             self._thread.join(timeout=2.0)
             self._thread = None
+        if self.recorder is not None:
+            self.recorder.close()
         self._dp = None
 
     # -- requests ------------------------------------------------------------------
 
     def send_velocity(self, linear: float, angular: float) -> None:
         """Publish a Twist on ``cmd_vel``."""
-        self._cmd_vel.write(m.Twist(m.Vector3(x=linear), m.Vector3(z=angular)))
+        self._write(self._cmd_vel, m.Twist(m.Vector3(x=linear), m.Vector3(z=angular)))
 
     def send_goal(self, x: float, y: float, yaw: float) -> int:
-        """Publish a PoseStamped on ``goal_pose`` in the map frame, as Nav2 takes it."""
+        """Send a NavigateToPose goal in the map frame; its result ends the token."""
+        token = next(self._tokens)
+        if not self._navigate.wait_for_server(self.server_wait):
+            self._body.on_goal_result(token, "no navigation action server")
+            return token
         qx, qy, qz, qw = quaternion_of(yaw)
         header = m.Header(m.stamp_now(time.time()), self.config.map_frame)
         pose = m.Pose(m.Point(x, y, 0.0), m.Quaternion(qx, qy, qz, qw))
-        self._goal.write(m.PoseStamped(header, pose))
-        return next(self._tokens)
+        goal = m.NavigateToPoseGoal(m.PoseStamped(header, pose))
+
+        def done(status: str, _result: Any) -> None:
+            self._body.on_goal_result(token, status)
+
+        self._navigate.send_goal(goal, done)
+        return token
 
     def cancel_goals(self) -> None:
-        """Ask the navigation action server to cancel every goal (zero id, zero stamp)."""
-        self._cancel.write(m.CancelGoalRequest(self._guid, next(self._seq)))
+        """Cancel every navigation goal (the action's cancel service, zero goal id)."""
+        self._navigate.cancel_all()
 
-    def send_gripper(self, text: str) -> None:
-        """Publish a gripper request as a std_msgs/String."""
-        self._gripper.write(m.String(text))
+    def send_gripper(self, text: str) -> int | None:
+        """A Grasp goal when the robot serves the gripper action, else a
+        std_msgs/String request on ``gripper_command`` (the state then tells)."""
+        if not self._grasp.server_ready():
+            self._write(self._gripper, m.String(text))
+            return None
+        token = next(self._tokens)
+        command, _, target = text.partition(" ")
+
+        def done(status: str, result: Any) -> None:
+            if result is None:
+                self._body.on_gripper_result(token, False, f"gripper goal {status}", None)
+                return
+            ok = status == "succeeded" and bool(result.success)
+            self._body.on_gripper_result(token, ok, result.message, result.holding)
+
+        self._grasp.send_goal(m.GraspGoal(command, target.strip()), done)
+        return token
+
+    def frame_done(self, stamp: float) -> None:
+        """Acknowledge the frame stamped ``stamp`` (a lock-step simulator steps on)."""
+        self._write(self._frame_done, m.stamp_now(stamp))
+
+    def _write(self, writer: DataWriter, message: Any) -> None:
+        writer.write(message)
+        if self.recorder is not None:
+            self.recorder.write(writer.topic.name, message)
 
     # -- readings ------------------------------------------------------------------
 
@@ -149,15 +237,31 @@ class Ros2Link:
         while not self._stop.is_set():
             waitset.wait(duration(milliseconds=50))
             for reader, handler in readers:
-                for sample in reader.take(32):
+                try:
+                    samples = reader.take(32)
+                except Exception as exc:  # noqa: BLE001 - a malformed sample, say
+                    self._once(reader.topic.name, "could not read %s: %s", exc)
+                    continue
+                for sample in samples:
+                    if isinstance(sample, InvalidSample):
+                        continue  # a writer left or an instance was disposed: no data
+                    if self.recorder is not None:
+                        self.recorder.write(reader.topic.name, sample)
                     try:
                         handler(sample)
-                    except Exception:  # noqa: BLE001 - a bad message must not stop the link
-                        log.exception("could not use a message from %s", reader.topic.name)
+                    except Exception as exc:  # noqa: BLE001 - a bad message must not stop the link
+                        self._once(reader.topic.name, "could not use a message from %s: %s", exc)
+
+    def _once(self, key: str, message: str, exc: BaseException) -> None:
+        """Log a reading problem once per topic (a broken sender repeats itself)."""
+        if key not in self._warned:
+            self._warned.add(key)
+            log.warning(message, key, exc)
 
     def _on_scan(self, s: m.LaserScan) -> None:
         self._body.on_scan(
-            ScanReading(s.angle_min, s.angle_increment, s.range_min, s.range_max, list(s.ranges))
+            ScanReading(s.angle_min, s.angle_increment, s.range_min, s.range_max, list(s.ranges)),
+            m.seconds_of(s.header.stamp),
         )
 
     def _on_dets(self, a: m.Detection2DArray) -> None:

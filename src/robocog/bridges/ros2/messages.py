@@ -212,3 +212,250 @@ def topic_name(ros_name: str, prefix: str = "rt") -> str:
     if not name or "~" in name or "//" in name:
         raise ValueError(f"not a usable ROS 2 topic name: {ros_name!r}")
     return f"{prefix}/{name.lstrip('/')}"
+
+
+# -- more of a mobile manipulator's interfaces ----------------------------------------
+
+
+@dataclass
+class Duration(IdlStruct, typename="builtin_interfaces::msg::dds_::Duration_"):
+    sec: t.int32 = 0
+    nanosec: t.uint32 = 0
+
+
+@dataclass
+class Clock(IdlStruct, typename="rosgraph_msgs::msg::dds_::Clock_"):
+    clock: Time = field(default_factory=Time)
+
+
+@dataclass
+class Transform(IdlStruct, typename="geometry_msgs::msg::dds_::Transform_"):
+    translation: Vector3 = field(default_factory=Vector3)
+    rotation: Quaternion = field(default_factory=Quaternion)
+
+
+@dataclass
+class TransformStamped(IdlStruct, typename="geometry_msgs::msg::dds_::TransformStamped_"):
+    header: Header = field(default_factory=Header)
+    child_frame_id: str = ""
+    transform: Transform = field(default_factory=Transform)
+
+
+@dataclass
+class TFMessage(IdlStruct, typename="tf2_msgs::msg::dds_::TFMessage_"):
+    transforms: t.sequence[TransformStamped] = field(default_factory=list)
+
+
+@dataclass
+class JointState(IdlStruct, typename="sensor_msgs::msg::dds_::JointState_"):
+    header: Header = field(default_factory=Header)
+    name: t.sequence[str] = field(default_factory=list)
+    position: t.sequence[t.float64] = field(default_factory=list)
+    velocity: t.sequence[t.float64] = field(default_factory=list)
+    effort: t.sequence[t.float64] = field(default_factory=list)
+
+
+# -- ROS 2 actions: goal status, and the services every action has ----------------------
+
+#: action_msgs/GoalStatus codes
+STATUS_UNKNOWN, STATUS_ACCEPTED, STATUS_EXECUTING, STATUS_CANCELING = 0, 1, 2, 3
+STATUS_SUCCEEDED, STATUS_CANCELED, STATUS_ABORTED = 4, 5, 6
+#: status code -> the word the bridge's body uses
+STATUS_WORDS = {
+    STATUS_SUCCEEDED: "succeeded",
+    STATUS_CANCELED: "canceled",
+    STATUS_ABORTED: "aborted",
+    STATUS_UNKNOWN: "unknown",
+}
+
+
+@dataclass
+class GoalStatus(IdlStruct, typename="action_msgs::msg::dds_::GoalStatus_"):
+    goal_info: GoalInfo = field(default_factory=GoalInfo)
+    status: t.int8 = 0
+
+
+@dataclass
+class GoalStatusArray(IdlStruct, typename="action_msgs::msg::dds_::GoalStatusArray_"):
+    status_list: t.sequence[GoalStatus] = field(default_factory=list)
+
+
+@dataclass
+class CancelGoalResponse(IdlStruct, typename="action_msgs::srv::dds_::CancelGoal_Response_"):
+    client_guid: t.uint64 = 0
+    sequence_number: t.int64 = 0
+    return_code: t.int8 = 0
+    goals_canceling: t.sequence[GoalInfo] = field(default_factory=list)
+
+
+# -- nav2_msgs/action/NavigateToPose (Jazzy) ----------------------------------------------
+
+
+@dataclass
+class NavigateToPoseGoal(IdlStruct, typename="nav2_msgs::action::dds_::NavigateToPose_Goal_"):
+    pose: PoseStamped = field(default_factory=PoseStamped)
+    behavior_tree: str = ""
+
+
+@dataclass
+class NavigateToPoseResult(IdlStruct, typename="nav2_msgs::action::dds_::NavigateToPose_Result_"):
+    error_code: t.uint16 = 0
+    error_msg: str = ""
+
+
+@dataclass
+class NavigateToPoseFeedback(
+    IdlStruct, typename="nav2_msgs::action::dds_::NavigateToPose_Feedback_"
+):
+    current_pose: PoseStamped = field(default_factory=PoseStamped)
+    navigation_time: Duration = field(default_factory=Duration)
+    estimated_time_remaining: Duration = field(default_factory=Duration)
+    number_of_recoveries: t.int16 = 0
+    distance_remaining: t.float32 = 0.0
+
+
+@dataclass
+class NavigateToPoseSendGoalRequest(
+    IdlStruct, typename="nav2_msgs::action::dds_::NavigateToPose_SendGoal_Request_"
+):
+    client_guid: t.uint64 = 0
+    sequence_number: t.int64 = 0
+    goal_id: UUID = field(default_factory=UUID)
+    goal: NavigateToPoseGoal = field(default_factory=NavigateToPoseGoal)
+
+
+@dataclass
+class NavigateToPoseSendGoalResponse(
+    IdlStruct, typename="nav2_msgs::action::dds_::NavigateToPose_SendGoal_Response_"
+):
+    client_guid: t.uint64 = 0
+    sequence_number: t.int64 = 0
+    accepted: bool = False
+    stamp: Time = field(default_factory=Time)
+
+
+@dataclass
+class NavigateToPoseGetResultRequest(
+    IdlStruct, typename="nav2_msgs::action::dds_::NavigateToPose_GetResult_Request_"
+):
+    client_guid: t.uint64 = 0
+    sequence_number: t.int64 = 0
+    goal_id: UUID = field(default_factory=UUID)
+
+
+@dataclass
+class NavigateToPoseGetResultResponse(
+    IdlStruct, typename="nav2_msgs::action::dds_::NavigateToPose_GetResult_Response_"
+):
+    client_guid: t.uint64 = 0
+    sequence_number: t.int64 = 0
+    status: t.int8 = 0
+    result: NavigateToPoseResult = field(default_factory=NavigateToPoseResult)
+
+
+@dataclass
+class NavigateToPoseFeedbackMessage(
+    IdlStruct, typename="nav2_msgs::action::dds_::NavigateToPose_FeedbackMessage_"
+):
+    goal_id: UUID = field(default_factory=UUID)
+    feedback: NavigateToPoseFeedback = field(default_factory=NavigateToPoseFeedback)
+
+
+# -- robocog_msgs/action/Grasp (shipped as robocog/bridges/ros2/interfaces/Grasp.action) --
+
+
+@dataclass
+class GraspGoal(IdlStruct, typename="robocog_msgs::action::dds_::Grasp_Goal_"):
+    command: str = ""
+    target: str = ""
+
+
+@dataclass
+class GraspResult(IdlStruct, typename="robocog_msgs::action::dds_::Grasp_Result_"):
+    success: bool = False
+    message: str = ""
+    holding: str = ""
+
+
+@dataclass
+class GraspFeedback(IdlStruct, typename="robocog_msgs::action::dds_::Grasp_Feedback_"):
+    phase: str = ""
+
+
+@dataclass
+class GraspSendGoalRequest(
+    IdlStruct, typename="robocog_msgs::action::dds_::Grasp_SendGoal_Request_"
+):
+    client_guid: t.uint64 = 0
+    sequence_number: t.int64 = 0
+    goal_id: UUID = field(default_factory=UUID)
+    goal: GraspGoal = field(default_factory=GraspGoal)
+
+
+@dataclass
+class GraspSendGoalResponse(
+    IdlStruct, typename="robocog_msgs::action::dds_::Grasp_SendGoal_Response_"
+):
+    client_guid: t.uint64 = 0
+    sequence_number: t.int64 = 0
+    accepted: bool = False
+    stamp: Time = field(default_factory=Time)
+
+
+@dataclass
+class GraspGetResultRequest(
+    IdlStruct, typename="robocog_msgs::action::dds_::Grasp_GetResult_Request_"
+):
+    client_guid: t.uint64 = 0
+    sequence_number: t.int64 = 0
+    goal_id: UUID = field(default_factory=UUID)
+
+
+@dataclass
+class GraspGetResultResponse(
+    IdlStruct, typename="robocog_msgs::action::dds_::Grasp_GetResult_Response_"
+):
+    client_guid: t.uint64 = 0
+    sequence_number: t.int64 = 0
+    status: t.int8 = 0
+    result: GraspResult = field(default_factory=GraspResult)
+
+
+@dataclass
+class GraspFeedbackMessage(
+    IdlStruct, typename="robocog_msgs::action::dds_::Grasp_FeedbackMessage_"
+):
+    goal_id: UUID = field(default_factory=UUID)
+    feedback: GraspFeedback = field(default_factory=GraspFeedback)
+
+
+@dataclass(frozen=True)
+class ActionTypes:
+    """The wire types of one ROS 2 action: its three services and its feedback."""
+
+    send_goal_request: type
+    send_goal_response: type
+    get_result_request: type
+    get_result_response: type
+    feedback_message: type
+
+
+NAVIGATE_TO_POSE = ActionTypes(
+    NavigateToPoseSendGoalRequest,
+    NavigateToPoseSendGoalResponse,
+    NavigateToPoseGetResultRequest,
+    NavigateToPoseGetResultResponse,
+    NavigateToPoseFeedbackMessage,
+)
+GRASP = ActionTypes(
+    GraspSendGoalRequest,
+    GraspSendGoalResponse,
+    GraspGetResultRequest,
+    GraspGetResultResponse,
+    GraspFeedbackMessage,
+)
+
+
+def seconds_of(stamp: Time) -> float:
+    """Seconds of a ROS time."""
+    return stamp.sec + stamp.nanosec * 1e-9

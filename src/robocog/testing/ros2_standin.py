@@ -2,11 +2,13 @@
 
 It plays the robot's side of the bridge with the same wire types a real robot uses: a
 laser scan with one obstacle, a detection array, the amcl pose and the gripper state go
-out; velocity, navigation goals, cancels and gripper requests come in. A pick makes the
+out; velocity and gripper requests come in, and navigation goals through a Nav2
+``navigate_to_pose`` action server that reaches each goal after ``goal_seconds``
+(``{"goal_seconds": 30}`` stalls it) unless it is cancelled first. A pick makes the
 gripper report the picked object, as a real gripper driver would. It serves to try the
 bridge without a robot, in tests and in the latency benchmark.
 
-Run as a process (``python -m robocog.bridges.ros2.standin --domain N``) it reads scene
+Run as a process (``python -m robocog.testing.ros2_standin --domain N``) it reads scene
 changes as JSON lines on stdin and writes every request it receives as a JSON line on
 stdout, for example ``{"event": "cmd_vel", "linear": 0.0, "angular": -0.6}``.
 """
@@ -26,13 +28,14 @@ from typing import Any
 from cyclonedds.core import InstanceState, ReadCondition, SampleState, ViewState, WaitSet
 from cyclonedds.domain import DomainParticipant
 from cyclonedds.pub import DataWriter
-from cyclonedds.sub import DataReader
+from cyclonedds.sub import DataReader, InvalidSample
 from cyclonedds.topic import Topic
 from cyclonedds.util import duration
 
 from robocog.bridges.config import Topics
 from robocog.bridges.perception import quaternion_of, yaw_of
 from robocog.bridges.ros2 import messages as m
+from robocog.bridges.ros2.actions import ActionServer, ServerGoal
 from robocog.bridges.ros2.link import RELIABLE, SENSOR
 
 
@@ -48,6 +51,8 @@ class Scene:
     holding: str = ""
     #: when False the robot publishes nothing (a dead driver, a lost link)
     alive: bool = True
+    #: how long a navigation goal takes to succeed (s)
+    goal_seconds: float = 0.5
 
     def update(self, data: dict[str, Any]) -> None:
         """Apply a JSON scene change."""
@@ -66,6 +71,8 @@ class Scene:
             self.holding = str(data["holding"] or "")
         if "alive" in data:
             self.alive = bool(data["alive"])
+        if "goal_seconds" in data:
+            self.goal_seconds = float(data["goal_seconds"])
 
 
 def scan_of(obstacle: tuple[float, float] | None, beams: int = 181) -> m.LaserScan:
@@ -116,15 +123,19 @@ class StandInRobot:
         )
         self.gripper_writer = DataWriter(dp, topic(tp.gripper_state, m.String), qos=RELIABLE)
         self.narsese_writer = DataWriter(dp, topic(tp.narsese, m.String), qos=RELIABLE)
-        action = (navigate_action or tp.navigate_action).rstrip("/") + "/_action/cancel_goal"
+        self.navigate = ActionServer(
+            dp,
+            navigate_action or tp.navigate_action,
+            m.NAVIGATE_TO_POSE,
+            m.NavigateToPoseResult,
+            RELIABLE,
+            self._goal,
+            on_cancel=self._cancel,
+        )
         self._readers: list[tuple[DataReader, Callable[[Any], None]]] = [
             (DataReader(dp, topic(tp.cmd_vel, m.Twist), qos=RELIABLE), self._twist),
-            (DataReader(dp, topic(tp.goal_pose, m.PoseStamped), qos=RELIABLE), self._goal),
             (DataReader(dp, topic(tp.gripper_command, m.String), qos=RELIABLE), self._grip),
-            (
-                DataReader(dp, topic(action, m.CancelGoalRequest, "rq", "Request"), qos=RELIABLE),
-                self._cancel,
-            ),
+            *self.navigate.handlers,
         ]
         self._threads = [
             threading.Thread(target=self._listen, daemon=True, name="standin-listen"),
@@ -199,7 +210,8 @@ class StandInRobot:
             waitset.wait(duration(milliseconds=50))
             for reader, handler in self._readers:
                 for sample in reader.take(32):
-                    handler(sample)
+                    if not isinstance(sample, InvalidSample):
+                        handler(sample)
 
     # -- what the robot is told ----------------------------------------------------
 
@@ -213,7 +225,9 @@ class StandInRobot:
     def _twist(self, msg: m.Twist) -> None:
         self._record({"event": "cmd_vel", "linear": msg.linear.x, "angular": msg.angular.z})
 
-    def _goal(self, msg: m.PoseStamped) -> None:
+    def _goal(self, goal: ServerGoal, server: ActionServer) -> None:
+        """A NavigateToPose goal: recorded, then reached after ``goal_seconds``."""
+        msg = goal.goal.pose
         q = msg.pose.orientation
         self._record(
             {
@@ -224,9 +238,18 @@ class StandInRobot:
                 "yaw": yaw_of(q.x, q.y, q.z, q.w),
             }
         )
+        end = time.monotonic() + self.scene.goal_seconds
+        while not goal.cancel_requested and not self._stop.is_set():
+            left = end - time.monotonic()
+            if left <= 0:
+                server.finish(goal, m.STATUS_SUCCEEDED, m.NavigateToPoseResult())
+                return
+            server.feedback(goal, m.NavigateToPoseFeedback(distance_remaining=left))
+            self._stop.wait(min(left, 0.05))
+        server.finish(goal, m.STATUS_CANCELED, m.NavigateToPoseResult())
 
-    def _cancel(self, msg: m.CancelGoalRequest) -> None:
-        self._record({"event": "cancel", "all": not any(msg.goal_info.goal_id.uuid)})
+    def _cancel(self, goal_id: bytes) -> None:
+        self._record({"event": "cancel", "all": not any(goal_id)})
 
     def _grip(self, msg: m.String) -> None:
         self._record({"event": "gripper", "text": msg.data})

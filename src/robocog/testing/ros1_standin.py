@@ -20,9 +20,10 @@ import threading
 import time
 from typing import IO, Any
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+_HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(os.path.dirname(_HERE), "bridges", "ros1"))
 
-from node import vision_classes  # noqa: E402 - the sibling script, by path
+from node import vision_classes  # noqa: E402 - the bridge's node script, by path
 
 
 class StandIn:
