@@ -775,13 +775,16 @@ class Agent:
         pos = 0
         if in_stack and tevent.kind != BELIEF and tevent.op == "-":
             # failure inside a failure plan: skip down past the goal it was handling
+            # (when nothing lies below that goal, the intention is dropped, as Jason
+            # drops it: a failing -!g plan never handles its own failure again)
             goal = resolve(tevent.literal, i.stack[-1].s)
-            found = False
-            while pos < last and not found:
+            pos = 1
+            while pos <= last and not _unifies(seq[pos][0].literal, goal, seq[pos][1].s):
                 pos += 1
-                while pos < last and _unifies(seq[pos][0].literal, goal, seq[pos][1].s):
-                    pos += 1
-                    found = True
+            while pos <= last and _unifies(seq[pos][0].literal, goal, seq[pos][1].s):
+                pos += 1
+            if pos > last:
+                return None
         t, im = seq[pos]
         ft = P.Trigger("-", t.kind, t.literal)
         while not pl.has_candidate(ft) and pos < last:
