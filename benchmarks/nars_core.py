@@ -9,6 +9,11 @@ are measured the same way (``wait4``). Prints both, the answers each found and t
     python benchmarks/nars_core.py                        # 1,000 links, 100 questions
     python benchmarks/nars_core.py --statements 10000 --depth 2 --capacity 30000
     python benchmarks/nars_core.py --stream 1000000   # random valid/invalid lines, events, goals
+    python benchmarks/nars_core.py --ona-source ~/OpenNARS-for-Applications  # also newest ONA
+
+``--ona-source`` builds ONA from a source checkout the user provides (its ``build.sh``,
+with the C compiler of the machine) in a scratch directory, and runs it as a third system;
+nothing is downloaded.
 """
 
 from __future__ import annotations
@@ -66,6 +71,30 @@ def run(cmd: list[str], text: str, timeout: float) -> tuple[float, float, float,
         fout.seek(0)
         cpu = usage.ru_utime + usage.ru_stime
         return wall, cpu, usage.ru_maxrss / 1024.0, fout.read()
+
+
+def build_ona(source: str) -> tuple[str, str]:
+    """Build ONA from the checkout at ``source`` in a scratch copy; its binary and version.
+
+    The copy keeps the checkout clean (ONA's build script writes ``NAR`` and a generated
+    rule table into the tree it runs in)."""
+    if shutil.which("gcc") is None:
+        raise SystemExit("--ona-source needs gcc (Debian: apt-get install gcc)")
+    if not os.path.isfile(os.path.join(source, "build.sh")):
+        raise SystemExit(f"--ona-source: no build.sh in {source}")
+    version = subprocess.run(
+        ["git", "-C", source, "describe", "--tags", "--always"], capture_output=True, text=True
+    ).stdout.strip()
+    work = tempfile.mkdtemp(prefix="ona-build-")
+    shutil.copytree(os.path.join(source, "src"), os.path.join(work, "src"))
+    shutil.copy(os.path.join(source, "build.sh"), work)
+    print(f"building ONA {version or '(unknown version)'} from {source} ...", flush=True)
+    done = subprocess.run(["sh", "build.sh"], cwd=work, capture_output=True, text=True)
+    binary = os.path.join(work, "NAR")
+    if done.returncode != 0 or not os.path.isfile(binary):
+        tail = (done.stderr or done.stdout).strip().splitlines()[-5:]
+        raise SystemExit("ONA did not build:\n" + "\n".join(tail))
+    return binary, version or os.path.basename(os.path.normpath(source))
 
 
 def engine() -> str:
@@ -176,6 +205,7 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--timeout", type=float, default=600.0)
     ap.add_argument("--no-ona", action="store_true", help="run robocog only")
     ap.add_argument("--stream", type=int, default=0, help="random-stream run of N lines instead")
+    ap.add_argument("--ona-source", help="also build and run ONA from this source checkout")
     args = ap.parse_args(argv)
     if args.stream:
         return stream(args.stream, args.seed, args.capacity)
@@ -198,19 +228,23 @@ def main(argv: list[str] | None = None) -> int:
     if ona and not args.no_ona:
         w, cpu, rss, out = run([ona, "shell"], text, args.timeout)
         rows.append(("ONA 0.9.2", w, cpu, rss, answers(out, questions)))
+    if args.ona_source:
+        binary, version = build_ona(os.path.expanduser(args.ona_source))
+        w, cpu, rss, out = run([binary, "shell"], text, args.timeout)
+        rows.append((f"ONA {version}", w, cpu, rss, answers(out, questions)))
 
     print(f"robocog NARS engine: {engine()}")
     print(
         f"taxonomy: {args.statements} links, {len(questions)} questions {args.depth} links deep"
         + (f", robocog concepts_max={args.capacity}" if args.capacity else "")
     )
-    print(f"{'system':<10} {'wall s':>8} {'CPU s':>8} {'RSS MB':>8} {'answered':>9}")
+    print(f"{'system':<14} {'wall s':>8} {'CPU s':>8} {'RSS MB':>8} {'answered':>9}")
     for name, w, cpu, rss, n in rows:
-        print(f"{name:<10} {w:8.2f} {cpu:8.2f} {rss:8.1f} {n:5d}/{len(questions)}")
-    if len(rows) == 2:
+        print(f"{name:<14} {w:8.2f} {cpu:8.2f} {rss:8.1f} {n:5d}/{len(questions)}")
+    for peer in rows[1:]:
         print(
-            f"ratio ONA/robocog: wall {rows[1][1] / rows[0][1]:.2f}, "
-            f"CPU {rows[1][2] / rows[0][2]:.2f} (above 1: robocog faster)"
+            f"ratio {peer[0]}/robocog: wall {peer[1] / rows[0][1]:.2f}, "
+            f"CPU {peer[2] / rows[0][2]:.2f} (above 1: robocog faster)"
         )
     return 0
 
