@@ -84,17 +84,17 @@ def build_ona(source: str) -> tuple[str, str]:
         raise SystemExit(f"--ona-source: no build.sh in {source}")
     version = subprocess.run(
         ["git", "-C", source, "describe", "--tags", "--always"], capture_output=True, text=True
-    ).stdout.strip()
+    ).stdout.strip() or os.path.basename(os.path.normpath(source))
     work = tempfile.mkdtemp(prefix="ona-build-")
     shutil.copytree(os.path.join(source, "src"), os.path.join(work, "src"))
     shutil.copy(os.path.join(source, "build.sh"), work)
-    print(f"building ONA {version or '(unknown version)'} from {source} ...", flush=True)
+    print(f"building ONA {version} from {source} ...", flush=True)
     done = subprocess.run(["sh", "build.sh"], cwd=work, capture_output=True, text=True)
     binary = os.path.join(work, "NAR")
     if done.returncode != 0 or not os.path.isfile(binary):
         tail = (done.stderr or done.stdout).strip().splitlines()[-5:]
         raise SystemExit("ONA did not build:\n" + "\n".join(tail))
-    return binary, version or os.path.basename(os.path.normpath(source))
+    return binary, version
 
 
 def engine() -> str:
