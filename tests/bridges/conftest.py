@@ -3,6 +3,7 @@ child processes that are always ended, whatever the test's fate."""
 
 from __future__ import annotations
 
+import hashlib
 import itertools
 import os
 import random
@@ -18,13 +19,21 @@ import pytest
 from tests.bridges.procs import SYSTEM_PYTHON, Child, child_env, free_port
 
 _domains = itertools.count(0)
-#: a random start per test run: several people run these tests on one machine at once
-_FIRST = random.SystemRandom().randrange(230)
+#: blocks of three domains (a test may use d, d + 1 and d + 2), 76 of them in 1..228
+_BLOCKS = 76
+#: pytest-xdist's workers share the run's id: from it they all draw the same random
+#: start, and each takes the blocks congruent to its own number, so two tests running at
+#: once in one run never share a domain; runs of other people start elsewhere
+_RUN = os.environ.get("PYTEST_XDIST_TESTRUNUID") or str(random.SystemRandom().random())
+_FIRST = int.from_bytes(hashlib.sha256(_RUN.encode()).digest()[:4], "big") % _BLOCKS
+_WORKER = int(os.environ.get("PYTEST_XDIST_WORKER", "gw0")[2:] or 0)
+_WORKERS = max(1, int(os.environ.get("PYTEST_XDIST_WORKER_COUNT", "1")))
 
 
 def random_domain() -> int:
-    """A DDS domain id (1..230) unlikely to be in use by another run on this machine."""
-    return 1 + (_FIRST + 37 * next(_domains)) % 230
+    """A DDS domain id (1..228) that no other test of this run uses at the same time."""
+    block = (_FIRST + _WORKER + _WORKERS * next(_domains)) % _BLOCKS
+    return 1 + 3 * block
 
 
 @pytest.fixture

@@ -238,3 +238,33 @@ def test_close_stops_the_robot_and_the_link() -> None:
     body, link = body_with()
     body.close()
     assert link.of("twist")[-1] == (0.0, 0.0) and link.closed
+
+
+def test_a_lock_step_frame_waits_for_the_detections_its_scan_overtook() -> None:
+    # DDS may deliver a frame's best-effort scan before its reliable detections: the
+    # decision must wait for the detections stamped with the scan's time
+    body, _link = body_with(replace(FAST, lockstep=True))
+    scan = ScanReading(-math.pi, math.pi / 180, 0.05, 12.0, [5.0] * 360)
+    body.on_boxes([], stamp=1.0)
+    body.on_scan(scan, stamp=1.0)
+    assert body.wait_for_frame(0, 1.0) == (1, 1.0)
+    body.on_scan(scan, stamp=2.0)  # the scan of frame 2 first
+
+    def late_detections() -> None:
+        time.sleep(0.2)
+        body.on_boxes([BoxReading("cup", 0.9, 320.0, (1.0, 0.0, 0.0))], stamp=2.0)
+
+    threading.Thread(target=late_detections).start()
+    frames, stamp = body.wait_for_frame(1, 1.0)
+    assert (frames, stamp) == (2, 2.0)
+    assert any(isinstance(p, Detection) and p.label == "cup" for p in body.percepts())
+
+
+def test_a_robot_that_does_not_stamp_its_detections_is_not_waited_for() -> None:
+    body, _link = body_with(replace(FAST, lockstep=True))
+    scan = ScanReading(-math.pi, math.pi / 180, 0.05, 12.0, [5.0] * 360)
+    body.on_boxes([])
+    body.on_scan(scan, stamp=3.0)
+    start = time.monotonic()
+    assert body.wait_for_frame(0, 1.0) == (1, 3.0)
+    assert time.monotonic() - start < 0.5

@@ -42,6 +42,8 @@ log = logging.getLogger("robocog.bridges")
 
 #: what the gripper reports when it holds nothing
 EMPTY_GRIPPER = ("", "open", "empty", "none")
+#: lock-step: how long (s) a new scan waits for the detections stamped with its time
+FRAME_PARTS_WAIT = 1.0
 
 
 class Link(Protocol):
@@ -100,6 +102,7 @@ class RobotBody:
         self._scans = 0  # laser scans received: the frames of lock-step operation
         self._heard: dict[str, float] = {}  # sensor -> when it last reported
         self._scan_stamp = 0.0
+        self._boxes_stamp = 0.0  # header time of the latest stamped detection array
         #: readings dropped because they held NaN or infinite values, by sensor
         self.dropped: dict[str, int] = {}
         self._last_reading = -math.inf
@@ -150,14 +153,17 @@ class RobotBody:
             self._heard["scan"] = time.monotonic()
             self._touch()
 
-    def on_boxes(self, boxes: list[BoxReading]) -> None:
+    def on_boxes(self, boxes: list[BoxReading], stamp: float = 0.0) -> None:
         """A detection array arrived (possibly empty: nothing seen); a box with a value
-        that is not finite is dropped and counted."""
+        that is not finite is dropped and counted. ``stamp`` is the array's header time
+        (0 when the robot does not stamp it)."""
         kept = [b for b in boxes if _finite_box(b)]
         for _ in range(len(boxes) - len(kept)):
             self.drop_reading("detection")
         with self._lock:
             self._boxes = kept
+            if stamp > 0 and math.isfinite(stamp):
+                self._boxes_stamp = stamp
             self._boxes_at = time.monotonic()
             self._heard["detections"] = self._boxes_at
             self._touch()
@@ -268,6 +274,11 @@ class RobotBody:
         returns the count of scans and the latest one's stamp."""
         with self._lock:
             self._lock.wait_for(lambda: self._scans != seen, timeout)
+            if 0 < self._boxes_stamp < self._scan_stamp:
+                # The frame's detections were sent before its scan, but DDS delivers a
+                # reliable topic through a queue that a best-effort scan can overtake:
+                # a robot that stamps its detections gets them waited for, briefly.
+                self._lock.wait_for(lambda: self._boxes_stamp >= self._scan_stamp, FRAME_PARTS_WAIT)
             return self._scans, self._scan_stamp
 
     def frame_done(self, stamp: float) -> None:

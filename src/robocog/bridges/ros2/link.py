@@ -280,7 +280,7 @@ class Ros2Link:
                     d.id or None,
                 )
             )
-        self._body.on_boxes(boxes)
+        self._body.on_boxes(boxes, m.seconds_of(a.header.stamp))
 
     def _on_amcl(self, msg: m.PoseWithCovarianceStamped) -> None:
         self._on_pose(msg.pose.pose)
