@@ -116,10 +116,15 @@ def read_frames(path: Path, config: BridgeConfig) -> list[Frame]:
                 continue
             if channel.topic == tp.gripper_state and frames and frames[-1].holding_after is None:
                 frames[-1].holding_after = msg.data
-            pending.append((channel.topic, msg))
             if channel.topic == tp.scan:
-                frames.append(Frame(m.seconds_of(msg.header.stamp), pending))
+                stamp = m.seconds_of(msg.header.stamp)
+                if frames and stamp == frames[-1].stamp and not pending:
+                    continue  # the same scan sent again (a lock-step sim's resend)
+                pending.append((channel.topic, msg))
+                frames.append(Frame(stamp, pending))
                 pending = []
+                continue
+            pending.append((channel.topic, msg))
     return frames
 
 

@@ -324,9 +324,11 @@ class GarbageRobot:
 
     def _send(self, frame: Frame) -> None:
         for writer, message in frame.messages:
-            writer.write(message)
+            # recorded before it is sent: the controller's answer to it, recorded by the
+            # action server's thread, must come after it in the recording
             if self.on_message is not None:
                 self.on_message(writer.topic.name, type(message).__name__, message)
+            writer.write(message)
 
     # -- commands --------------------------------------------------------------------
 

@@ -154,9 +154,10 @@ class ActionClient:
             self._goals[goal_id] = _ClientGoal(goal_id, on_done, on_feedback)
             self._send_seq[seq] = goal_id
         request = self.types.send_goal_request(self.guid, seq, m.UUID(_uuid_list(goal_id)), goal)
-        self._send.write(request)
+        # recorded before it is sent: a reply recorded by another thread comes after it
         if self.on_write is not None:
             self.on_write(self._send.topic.name, request)
+        self._send.write(request)
         return goal_id
 
     def forget(self, goal_id: bytes) -> None:

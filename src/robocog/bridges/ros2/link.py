@@ -223,9 +223,10 @@ class Ros2Link:
         self._write(self._frame_done, m.stamp_now(stamp))
 
     def _write(self, writer: DataWriter, message: Any) -> None:
-        writer.write(message)
+        # recorded before it is sent: what the robot does about it is recorded after it
         if self.recorder is not None:
             self.recorder.write(writer.topic.name, message)
+        writer.write(message)
 
     # -- readings ------------------------------------------------------------------
 
