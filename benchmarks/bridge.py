@@ -12,6 +12,14 @@ mind, no body). The ratio says what robocog's bridge adds on top of DDS itself.
 
     python benchmarks/bridge.py                  # 200 trials each
     python benchmarks/bridge.py --trials 1000 --json bridge.json
+
+Two more measures run after it. The NavigateToPose round trip: ``GoTo("next")`` through
+a ``RobotBody`` over DDS to the garbage field served by ``robocog.sim.ros2`` in lock-step
+(the goal answers as soon as the field has moved), beside the same GoTos called on a
+field in this process. And the real-time factor of whole garbage missions with world
+and mind in two processes over DDS (``robocog experiment garbage --over ros2``: simulated
+seconds over wall seconds, the bridge's start-up included), beside the same missions in
+one process.
 """
 
 from __future__ import annotations
@@ -134,10 +142,75 @@ def measure(kind: str, domain: int, trials: int) -> list[float]:
     return samples
 
 
+def navigate_round_trips(domain: int, trials: int) -> tuple[list[float], list[float], int]:
+    """Seconds per ``GoTo("next")`` over DDS to a lock-step sim and in this process, and
+    how many of the goals over DDS succeeded."""
+    from robocog.bridges.body import RobotBody
+    from robocog.bridges.config import BridgeConfig
+    from robocog.bridges.ros2.link import Ros2Link
+    from robocog.robot.commands import GoTo
+    from robocog.sim.ros2 import GarbageRobot
+    from robocog.worlds.garbage import GarbageConfig, GarbageField
+
+    field = GarbageConfig()
+    robot = GarbageRobot(GarbageField(field, seed=0), domain, lockstep=True)
+    server = threading.Thread(target=robot.run, name="sim", daemon=True)
+    server.start()
+    config = BridgeConfig.preset("garbage")
+    body = RobotBody(Ros2Link(config, domain), config).start()
+    over: list[float] = []
+    succeeded = 0
+    try:
+        body.execute(GoTo("next"))  # the first goal waits for discovery: not timed
+        for _ in range(trials):
+            start = time.perf_counter()
+            outcome = body.execute(GoTo("next"))
+            over.append(time.perf_counter() - start)
+            succeeded += outcome.ok
+    finally:
+        body.close()
+        robot.close()
+    world = GarbageField(field, seed=0)
+    world.execute(GoTo("next"))
+    local: list[float] = []
+    for _ in range(trials):
+        start = time.perf_counter()
+        world.execute(GoTo("next"))
+        local.append(time.perf_counter() - start)
+    return over, local, succeeded
+
+
+def real_time_factors(minds: list[str], seeds: int) -> list[tuple[str, int, float, float]]:
+    """(mind, seed, real-time factor over DDS, in one process) per mission."""
+    from robocog.experiments.garbage import default_minds, run_once
+    from robocog.experiments.over_ros2 import random_domain, run_mission
+    from robocog.worlds.garbage import GarbageConfig
+
+    rows = []
+    config = GarbageConfig()
+    for spec, mind in zip(default_minds(minds), minds, strict=True):
+        for seed in range(seeds):
+            remote = run_mission(mind, config, seed, domain=random_domain())
+            if remote.error:
+                raise RuntimeError(f"{mind} seed {seed} over ROS 2: {remote.error}")
+            start = time.perf_counter()
+            local = run_once(spec, config, seed)
+            wall = time.perf_counter() - start
+            rows.append(
+                (mind, seed, remote.sim_seconds / remote.wall_seconds, local.sim_seconds / wall)
+            )
+    return rows
+
+
 def main(argv: list[str] | None = None) -> int:
     """Run the trials and print (and optionally write) the latency figures."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--trials", type=int, default=200)
+    parser.add_argument(
+        "--goals", type=int, default=20, help="NavigateToPose round trips (the field ends after 21)"
+    )
+    parser.add_argument("--missions", type=int, default=2, help="missions per mind (RTF)")
+    parser.add_argument("--minds", default="nars,bdi", help="minds of the RTF missions")
     parser.add_argument("--json", help="write the figures to this file")
     args = parser.parse_args(argv)
     use_loopback()
@@ -161,9 +234,40 @@ def main(argv: list[str] | None = None) -> int:
             f"{r['p50_ms']:8.3f} {r['p99_ms']:8.3f}"
         )
     print(f"robocog / bare DDS at p50: {ratio:.2f}x")
+    report: dict[str, object] = {"results": results, "p50_ratio": ratio}
+
+    if args.goals:
+        over, local, ok = navigate_round_trips(base + 2, args.goals)
+        report["navigate"] = {
+            "goals": args.goals,
+            "succeeded": ok,
+            "dds_p50_ms": percentile(over, 50) * 1e3,
+            "dds_p99_ms": percentile(over, 99) * 1e3,
+            "in_process_p50_ms": percentile(local, 50) * 1e3,
+        }
+        print()
+        print('NavigateToPose round trip (GoTo("next") to a lock-step sim, result included)')
+        print(
+            f"over DDS: p50 {percentile(over, 50) * 1e3:.2f} ms, "
+            f"p99 {percentile(over, 99) * 1e3:.2f} ms ({ok}/{args.goals} succeeded); "
+            f"in process: p50 {percentile(local, 50) * 1e3:.3f} ms"
+        )
+
+    if args.missions:
+        minds = [m.strip() for m in args.minds.split(",") if m.strip()]
+        rows = real_time_factors(minds, args.missions)
+        report["real_time_factor"] = [
+            {"mind": mind, "seed": seed, "over_ros2": r, "in_process": q}
+            for mind, seed, r, q in rows
+        ]
+        print()
+        print("real-time factor of whole garbage missions (simulated s / wall s)")
+        print(f"{'mind':6} {'seed':>4} {'over ROS 2':>11} {'in process':>11}")
+        for mind, seed, r, q in rows:
+            print(f"{mind:6} {seed:>4} {r:10.0f}x {q:10.0f}x")
     if args.json:
         with open(args.json, "w", encoding="utf-8") as handle:
-            json.dump({"results": results, "p50_ratio": ratio}, handle, indent=2)
+            json.dump(report, handle, indent=2)
     return 0
 
 
