@@ -3,9 +3,14 @@ roscore on 127.0.0.1 started by the test."""
 
 from __future__ import annotations
 
+import re
+import subprocess
+import sys
 import time
 from collections.abc import Callable
 from typing import Any
+
+import pytest
 
 from tests.bridges.procs import SRC, SYSTEM_PYTHON, Child, bridge_argv
 
@@ -188,3 +193,39 @@ def test_ros1_the_bdi_mind_drives_the_robot(
     spawn: Callable[..., Child], roscore: dict[str, str], bdi_program: str
 ) -> None:
     _mind_turns_away_then_picks(spawn, roscore, "bdi", "--program", bdi_program)
+
+
+@pytest.mark.parametrize("mind", ["nars", "bdi"])
+def test_ros1_the_garbage_field_served_by_the_sim_is_cleaned_through_move_base(
+    roscore: dict[str, str], mind: str
+) -> None:
+    """``robocog sim garbage --ros1`` (a rospy node serving move_base through actionlib)
+    and ``robocog bridge ros1`` with a shipped mind: trash is collected over a real
+    roscore, and the GoTos are move_base goals that succeed."""
+    sim = subprocess.Popen(
+        [sys.executable, "-m", "robocog.cli", "sim", "garbage", "--ros1", "--seed", "3"]
+        + ["--rate", "25"],
+        env=roscore,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
+    run = subprocess.Popen(
+        bridge_argv("ros1", "--mind", mind, "--duration", "60", "-v"),
+        env=roscore,
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
+    try:
+        out, err = sim.communicate(timeout=120)  # the sim ends with the field's mission
+    finally:
+        run.terminate()
+        _, bridge_err = run.communicate(timeout=30)
+        if sim.poll() is None:
+            sim.kill()
+    assert sim.returncode == 0, err[-2000:]
+    collected = int(out.split("collected ")[1].split(" of ")[0])
+    assert collected >= 1, out + bridge_err[-3000:]
+    assert re.search(r"GoTo\(place='\w+'\) -> succeeded", bridge_err), bridge_err[-3000:]
+    assert "unknown place" not in bridge_err

@@ -21,7 +21,8 @@ from robocog.bridges.config import BridgeConfig  # noqa: E402
 from robocog.bridges.ros2.link import Ros2Link  # noqa: E402
 from robocog.bridges.ros2.loopback import LOOPBACK_URI, use_loopback  # noqa: E402
 from robocog.robot import Detection, Drop, GoTo, Gripper, Obstacle, Pick, Pose, Status  # noqa: E402
-from robocog.sim.ros2 import GarbageRobot, column_of, fence_ranges  # noqa: E402
+from robocog.sim.field import column_of, fence_ranges  # noqa: E402
+from robocog.sim.ros2 import GarbageRobot  # noqa: E402
 from robocog.worlds.garbage import GarbageConfig, GarbageField  # noqa: E402
 from tests.bridges.conftest import random_domain  # noqa: E402
 from tests.bridges.procs import child_env, wait_until  # noqa: E402

@@ -1,7 +1,9 @@
-"""``robocog sim garbage --ros2``: an embedded world served as a ROS 2 robot.
+"""``robocog sim garbage --ros2|--ros1``: an embedded world served as a ROS robot.
 
 Run it in one terminal and ``robocog bridge ros2 --loopback --mind nars`` (or ``bdi``)
 in another; any ROS 2 node on rmw_cyclonedds in the same domain sees the robot too.
+With ``--ros1`` the field is a rospy node (run by the Python that has rospy) serving
+move_base through actionlib, for ``robocog bridge ros1`` and a roscore.
 """
 
 from __future__ import annotations
@@ -23,6 +25,14 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
     parser.add_argument("world", choices=WORLDS, help="which embedded world to serve")
     parser.add_argument("--ros2", action="store_true", help="serve it over ROS 2 (Cyclone DDS)")
+    parser.add_argument(
+        "--ros1", action="store_true", help="serve it over ROS 1 (rospy, move_base; a roscore)"
+    )
+    parser.add_argument(
+        "--ros1-python",
+        default="/usr/bin/python3",
+        help="ROS 1: the Python that has rospy (default /usr/bin/python3)",
+    )
     parser.add_argument(
         "--loopback",
         action="store_true",
@@ -55,12 +65,14 @@ def run(args: argparse.Namespace) -> int:
         format="%(asctime)s %(levelname)s %(name)s: %(message)s",
         stream=sys.stderr,
     )
-    if not args.ros2:
-        print("robocog sim: choose a middleware (--ros2)", file=sys.stderr)
+    if args.ros2 == args.ros1:
+        print("robocog sim: choose one middleware (--ros2 or --ros1)", file=sys.stderr)
         return 2
     if args.rate <= 0:
         print("robocog sim: --rate must be positive", file=sys.stderr)
         return 2
+    if args.ros1:
+        return run_ros1(args)
     if args.loopback and "CYCLONEDDS_URI" not in os.environ:
         from robocog.bridges.ros2.loopback import use_loopback
 
@@ -113,3 +125,65 @@ def run(args: argparse.Namespace) -> int:
         flush=True,
     )
     return 0
+
+
+def run_ros1(args: argparse.Namespace) -> int:
+    """Serve the field as a rospy node under the Python that has rospy, until the
+    mission is over or this process is stopped; the node prints what was collected."""
+    import subprocess
+    import tempfile
+
+    import robocog
+
+    if args.lockstep or args.record is not None or args.namespace:
+        print("robocog sim: --lockstep, --record and --namespace are for ROS 2", file=sys.stderr)
+        return 2
+    if not Path(args.ros1_python).exists():
+        print(f"robocog sim: {args.ros1_python} is missing (ROS 1 needs rospy)", file=sys.stderr)
+        return 2
+    check = subprocess.run(
+        [args.ros1_python, "-c", "import rosgraph, sys; sys.exit(not rosgraph.is_master_online())"],
+        capture_output=True,
+        text=True,
+        env=_ros1_env(None),
+    )
+    if check.returncode != 0:
+        uri = os.environ.get("ROS_MASTER_URI", "http://localhost:11311")
+        reason = check.stderr.strip().splitlines()[-1:] or [f"no ROS master at {uri}"]
+        print(f"robocog sim: {reason[0]}", file=sys.stderr)
+        return 2
+    package = Path(robocog.__file__).resolve().parent
+    with tempfile.TemporaryDirectory(prefix="robocog-ros1-") as path:
+        # robocog alone on the other Python's path: not the site-packages it was installed
+        # in, whose compiled modules belong to this Python
+        (Path(path) / "robocog").symlink_to(package, target_is_directory=True)
+        argv = [
+            args.ros1_python,
+            str(package / "sim" / "ros1_node.py"),
+            "--seed",
+            str(args.seed),
+            "--light",
+            args.light,
+            "--rate",
+            str(args.rate),
+        ]
+        node = subprocess.Popen(argv, env=_ros1_env(path))
+        signal.signal(signal.SIGTERM, lambda _signum, _frame: node.terminate())
+        try:
+            return node.wait()
+        except KeyboardInterrupt:
+            node.send_signal(signal.SIGINT)
+            return node.wait()
+        finally:
+            if node.poll() is None:
+                node.terminate()
+                node.wait()
+
+
+def _ros1_env(path: str | None) -> dict[str, str]:
+    """This environment for the other Python: its own path, robocog's folder when given."""
+    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "PYTHONHOME")}
+    if path is not None:
+        env["PYTHONPATH"] = path
+    env["PYTHONUNBUFFERED"] = "1"
+    return env

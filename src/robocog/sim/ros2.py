@@ -49,47 +49,24 @@ from robocog.bridges.ros2.actions import ActionServer, ServerGoal
 from robocog.bridges.ros2.link import RELIABLE, SENSOR, typed
 from robocog.robot.commands import Drop, Forward, GoTo, Outcome, Pick, Turn
 from robocog.robot.percepts import Detection, Gripper, Percept, Pose
+from robocog.sim.field import (
+    BEAMS,
+    IMAGE_HEIGHT,
+    RANGE_MAX,
+    column_of,
+    fence_ranges,
+    target_place,
+)
 from robocog.worlds.garbage import GarbageField
 
 log = logging.getLogger("robocog.sim")
 
-#: the camera image the detections are drawn in (px)
-IMAGE_WIDTH = 640.0
-IMAGE_HEIGHT = 480.0
-#: beams of the simulated laser, all around, and its reach (m)
-BEAMS = 360
-RANGE_MAX = 12.0
 #: a frame not acknowledged is sent again after this many seconds (lock-step)
 RESEND = 0.2
 #: a Twist moves the base for this long (s) in lock-step (a controller's command period)
 TWIST_PERIOD = 0.1
 GRIPPER_JOINT = "gripper_finger_joint"
 GRIPPER_OPEN = 0.08  # m between the fingers
-
-
-def column_of(bearing: float, fov: float, width: float = IMAGE_WIDTH) -> float:
-    """The image column of a bearing (positive to the left) for a pinhole camera."""
-    focal = (width / 2) / math.tan(fov / 2)
-    return width / 2 - focal * math.tan(bearing)
-
-
-def fence_ranges(x: float, y: float, theta: float, size: float, beams: int = BEAMS) -> list[float]:
-    """Ranges of ``beams`` rays all around (from -pi) to the square fence [0, size]^2."""
-    out: list[float] = []
-    for i in range(beams):
-        a = theta - math.pi + 2 * math.pi * i / beams
-        dx, dy = math.cos(a), math.sin(a)
-        best = math.inf
-        if dx > 1e-12:
-            best = min(best, (size - x) / dx)
-        elif dx < -1e-12:
-            best = min(best, -x / dx)
-        if dy > 1e-12:
-            best = min(best, (size - y) / dy)
-        elif dy < -1e-12:
-            best = min(best, -y / dy)
-        out.append(best if best <= RANGE_MAX else math.inf)
-    return out
 
 
 @dataclass
@@ -381,21 +358,6 @@ class GarbageRobot:
         if v:
             self.world.execute(Forward(v * seconds))
 
-    def _target(self, x: float, y: float) -> str | None:
-        """The place a goal pose means: a checkpoint within the field's radius, the start
-        corner, or None (a drive to the point)."""
-        w = self.world
-        radius = w.config.place_radius
-        sx, sy = w.start
-        best, best_d = None, radius
-        for name, (px, py) in w.checkpoints.items():
-            d = math.hypot(px - x, py - y)
-            if d <= best_d:
-                best, best_d = name, d
-        if best is None and math.hypot(sx - x, sy - y) <= radius:
-            return "start"
-        return best
-
     def _navigate(self, goal: ServerGoal, server: ActionServer) -> None:
         self.goals += 1
         self._heard(server, "send_goal", goal)
@@ -414,7 +376,7 @@ class GarbageRobot:
         with self.lock:
             w = self.world
             x0, y0, began = w.x, w.y, w.time()
-            place = self._target(x, y)
+            place = target_place(w, x, y)
             if place is not None:
                 outcome = w.execute(GoTo(place))
             else:

@@ -186,14 +186,16 @@ class Ros1Link:
                     msg["range_min"],
                     msg["range_max"],
                     ranges,
-                )
+                ),
+                _stamp(msg),
             )
         elif kind == "boxes":
             body.on_boxes(
                 [
                     BoxReading(i["label"], float(i["score"]), float(i["cx"]), tuple(i["pos"]))
                     for i in msg["items"]
-                ]
+                ],
+                _stamp(msg),
             )
         elif kind == "pose":
             qx, qy, qz, qw = msg["q"]
@@ -243,3 +245,9 @@ def _inside(path: Path, root: Path) -> bool:
     except ValueError:
         return False
     return True
+
+
+def _stamp(msg: dict[str, Any]) -> float:
+    """A reading's header time as the node reported it (0 when absent or not a number)."""
+    value = msg.get("stamp", 0.0)
+    return float(value) if isinstance(value, int | float) and math.isfinite(value) else 0.0

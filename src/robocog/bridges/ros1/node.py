@@ -7,8 +7,8 @@ the message packages, never robocog, and speaks JSON lines with its parent, the 
 To the parent (stdout), one object per line, ``k`` naming the kind::
 
     {"k": "ready"}
-    {"k": "scan", "angle_min": .., "angle_increment": .., "range_min": .., "range_max": .., "ranges": [..]}
-    {"k": "boxes", "items": [{"label": .., "score": .., "cx": .., "pos": [x, y, z]}]}
+    {"k": "scan", "angle_min": .., "angle_increment": .., "range_min": .., "range_max": .., "ranges": [..], "stamp": s}
+    {"k": "boxes", "items": [{"label": .., "score": .., "cx": .., "pos": [x, y, z]}], "stamp": s}
     {"k": "pose", "x": .., "y": .., "q": [x, y, z, w]}
     {"k": "gripper", "text": ..}    {"k": "text", "text": ..}
     {"k": "goal", "id": n, "status": "succeeded|aborted|preempted|recalled|rejected|lost"}
@@ -148,6 +148,7 @@ class Node:
                 "range_min": msg.range_min,
                 "range_max": msg.range_max,
                 "ranges": ranges,
+                "stamp": msg.header.stamp.to_sec(),
             }
         )
 
@@ -171,7 +172,7 @@ class Node:
                     "pos": [p.x, p.y, p.z],
                 }
             )
-        self.emit({"k": "boxes", "items": items})
+        self.emit({"k": "boxes", "items": items, "stamp": msg.header.stamp.to_sec()})
 
     def on_pose_message(self, msg: Any) -> None:
         """An amcl pose or an odometry message: both carry the pose at ``pose.pose``."""
