@@ -28,6 +28,7 @@ from robocog.atomspace.matcher import (
     PatternError,
     compile_pattern,
     is_variable_decl,
+    parse_variables,
     query,
     substitute,
 )
@@ -81,7 +82,41 @@ def execute(space: AtomSpace, atom: Atom) -> Any:
         return run_query(space, atom)
     if t == "ExecutionOutputLink":
         return _execution_output(space, atom)
+    if t == "PutLink":
+        return _put(space, atom)
     return instantiate(space, atom)
+
+
+def _put(space: AtomSpace, atom: Atom) -> Any:
+    """Beta reduction, as OpenCog's PutLink does it: the body's variables (a LambdaLink's
+    declared ones, else the free ones in order of appearance) replaced by the arguments
+    (one value, a ListLink of values for several variables, or a SetLink of such for
+    one reduction each), and the result made real in the space: a closed DeleteLink
+    then removes what it names and leaves nothing."""
+    out = atom[1]
+    if len(out) != 2:
+        raise PatternError(f"PutLink needs a body and arguments: {atom}")
+    body, args = out
+    if body[0] == "LambdaLink":
+        parts = body[1]
+        decl = parts[0] if len(parts) == 2 else None
+        body = parts[-1]
+        variables, _allowed = parse_variables(decl, body)
+    else:
+        variables = variables_of(body)
+    if not variables:
+        return instantiate(space, body)
+
+    def reduce(values: Atom) -> Any:
+        given = (values,) if len(variables) == 1 else _arguments(values)
+        if len(given) != len(variables):
+            raise PatternError(f"PutLink: {len(variables)} variables, {len(given)} values")
+        return instantiate(space, substitute(body, dict(zip(variables, given, strict=True))))
+
+    if args[0] == "SetLink":
+        results = [r for r in (reduce(a) for a in args[1]) if isinstance(r, Atom)]
+        return space.add(Link("SetLink", *results))
+    return reduce(args)
 
 
 def _execution_output(space: AtomSpace, atom: Atom) -> Any:

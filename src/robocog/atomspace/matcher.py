@@ -41,7 +41,7 @@ class PatternError(ValueError):
 
 
 # ---------------------------------------------------------------------- terms
-_CONST, _VAR, _LINK, _ULINK = 0, 1, 2, 3
+_CONST, _VAR, _LINK, _ULINK, _CHOICE = 0, 1, 2, 3, 4
 
 
 class _Term:
@@ -159,6 +159,13 @@ def match(t: _Term, a: Atom, b: Bindings) -> list[Bindings]:
     if not t.multi:
         r = _match1(t, a, b)
         return [] if r is None else [r]
+    if t.kind == _CHOICE:
+        found: list[Bindings] = []
+        for k in t.kids:
+            for b2 in match(k, a, b):
+                if b2 not in found:
+                    found.append(b2)
+        return found
     if a.__class__ is not Link or a[0] != t.type or len(a[1]) != t.arity:
         return []
     if t.kind == _LINK:
@@ -217,7 +224,7 @@ def substitute(atom: Atom, b: Bindings) -> Atom:
 class _Clause:
     """A mandatory or absent clause: its term, variables and index anchors."""
 
-    __slots__ = ("atom", "term", "vars", "anchors", "root_type", "ground")
+    __slots__ = ("atom", "term", "vars", "anchors", "root_type", "ground", "literal")
 
     def __init__(self, atom: Atom, varset: frozenset[Atom], allowed: dict) -> None:
         self.atom = atom
@@ -227,8 +234,17 @@ class _Clause:
         self.anchors: list[tuple[bool, Atom, tuple]] = []
         self.term = _compile(atom, varset, allowed, found, self.anchors, None)
         self.vars = frozenset(found)
-        self.ground = not found
+        # a clause with a ChoiceLink inside is never looked up as it is written, even
+        # once its variables are bound: the data holds one of the choices instead
+        self.literal = not _holds_choice(atom)
+        self.ground = not found and self.literal
         self.root_type = atom[0]
+
+
+def _holds_choice(atom: Atom) -> bool:
+    if atom.__class__ is Node:
+        return False
+    return atom[0] == "ChoiceLink" or any(_holds_choice(a) for a in atom[1])
 
 
 def _compile(
@@ -251,6 +267,15 @@ def _compile(
         if anchors is not None and up is not None:
             anchors.append((False, atom, up))
         return _Term(_CONST, atom).seal()
+    if atom[0] == "ChoiceLink" and up is not None:
+        # inside a clause a ChoiceLink stands for any one of its members (no anchors:
+        # the index cannot say which member the data holds)
+        t = _Term(_CHOICE, atom)
+        inside = ("ChoiceLink", None, up)
+        t.kids = tuple(_compile(a, varset, allowed, found, None, inside) for a in atom[1])
+        t.arity = len(t.kids)
+        t.multi = True
+        return t
     unordered = atom[0] in _t.UNORDERED
     mark = len(anchors) if anchors is not None else 0
     before = len(found)
@@ -299,6 +324,14 @@ def _all_vars(atom: Atom) -> Iterable[Atom]:
         yield from _all_vars(a)
 
 
+def _nodes(atom: Atom) -> Iterable[Atom]:
+    if atom.__class__ is Node:
+        yield atom
+        return
+    for a in atom[1]:
+        yield from _nodes(a)
+
+
 _EVALUATABLE = frozenset(
     {
         "EqualLink",
@@ -333,23 +366,28 @@ def is_evaluatable(atom: Atom) -> bool:
 class _Alt:
     """One alternative: a conjunction of mandatory, absent and evaluatable clauses."""
 
-    __slots__ = ("mandatory", "absent", "evals")
+    __slots__ = ("mandatory", "absent", "evals", "always")
 
     def __init__(self) -> None:
         self.mandatory: list[Atom] = []
         self.absent: list[Atom] = []
         self.evals: list[Atom] = []
+        #: AlwaysLink members: true of every grounding that shares the search's start
+        self.always: list[Atom] = []
 
     def merged(self, other: _Alt) -> _Alt:
         new = _Alt()
         new.mandatory = self.mandatory + other.mandatory
         new.absent = self.absent + other.absent
         new.evals = self.evals + other.evals
+        new.always = self.always + other.always
         return new
 
 
 #: link types that mean something to the matcher when they stand as a clause
-_SPECIAL = frozenset({"AndLink", "OrLink", "ChoiceLink", "PresentLink", "AbsentLink", "NotLink"})
+_SPECIAL = frozenset(
+    {"AndLink", "OrLink", "ChoiceLink", "PresentLink", "AbsentLink", "AlwaysLink", "NotLink"}
+)
 
 
 def _alternatives(body: Atom) -> list[_Alt]:
@@ -375,7 +413,9 @@ def _alternatives(body: Atom) -> list[_Alt]:
             out.extend(_alternatives(c))
         return out
     alt = _Alt()
-    if t == "PresentLink":
+    if t == "AlwaysLink":
+        alt.always.extend(body[1])
+    elif t == "PresentLink":
         alt.mandatory.extend(body[1])
     elif t == "AbsentLink":
         alt.absent.extend(body[1])
@@ -501,10 +541,12 @@ class _CompiledAlt:
         "absent_vars",
         "enum_vars",
         "allowed",
+        "always",
     )
 
     def __init__(self, alt: _Alt, varset: frozenset[Atom], allowed: dict) -> None:
         self.allowed = allowed
+        self.always = list(alt.always)
         self.mandatory = [clause_of(c, varset, allowed) for c in alt.mandatory]
         self.bound_vars: set[Atom] = set()
         for c in self.mandatory:
@@ -527,6 +569,52 @@ class _CompiledAlt:
     # -- the search -------------------------------------------------------------
     def solve(self, space: AtomSpace, out: list[Bindings], limit: int | None = None) -> None:
         """Append every grounding of this alternative to ``out``."""
+        if self.always:
+            self._solve_always(space, out, limit)
+            return
+        self._solve(space, out, limit)
+
+    def _solve_always(self, space: AtomSpace, out: list[Bindings], limit: int | None) -> None:
+        """OpenCog's for-all: the groundings that share a grounding of the clause the
+        search starts from count only if every one of them satisfies the AlwaysLink
+        clauses; one that does not sinks its whole group."""
+        found: list[Bindings] = []
+        self._solve(space, found, None)
+        start = self._start_clause(space)
+        key_vars = sorted(start.vars, key=repr) if start is not None else []
+        groups: dict[tuple[Atom | None, ...], list[Bindings]] = {}
+        for b in found:
+            groups.setdefault(tuple(b.get(v) for v in key_vars), []).append(b)
+        for group in groups.values():
+            if all(self._always_holds(space, b) for b in group):
+                for b in group:
+                    out.append(b)
+                    if limit is not None and len(out) >= limit:
+                        return
+
+    def _always_holds(self, space: AtomSpace, b: Bindings) -> bool:
+        for clause in self.always:
+            atom = substitute(clause, b)
+            if is_evaluatable(atom):
+                if not _eval_clause(space, atom):
+                    return False
+            elif atom not in space:
+                return False
+        return True
+
+    def _start_clause(self, space: AtomSpace) -> _Clause | None:
+        """The clause OpenCog's search would start from: the one holding the constant
+        with the fewest links into it (the thinnest way in)."""
+        best, best_n = None, -1
+        for c in self.mandatory:
+            for a in _nodes(c.atom):
+                if a[0] not in ("VariableNode", "GlobNode"):
+                    n = len(_incoming(space, a))
+                    if best_n < 0 or n < best_n:
+                        best, best_n = c, n
+        return best if best is not None else (self.mandatory[0] if self.mandatory else None)
+
+    def _solve(self, space: AtomSpace, out: list[Bindings], limit: int | None = None) -> None:
         pending = list(range(len(self.evals))) + [-1 - i for i in range(len(self.absent))]
         b: Bindings = {}
         if pending:
@@ -579,11 +667,11 @@ class _CompiledAlt:
         if len(remaining) == 1:
             clause = remaining[0]
             rest: list[_Clause] = []
-            ground = clause.ground or all(v in b for v in clause.vars)
+            ground = clause.ground or (clause.literal and all(v in b for v in clause.vars))
         else:
             best_i, best_n = -1, -1
             for i, c in enumerate(remaining):
-                if c.ground or all(v in b for v in c.vars):
+                if c.ground or (c.literal and all(v in b for v in c.vars)):
                     best_i, best_n = i, -2
                     break
                 n = _estimate(space, c, b)
@@ -776,7 +864,7 @@ def _candidates(space: AtomSpace, c: _Clause, b: Bindings):  # noqa: ANN202
 
 def _exists(space: AtomSpace, clause: _Clause, b: Bindings) -> bool:
     """True if some grounding of ``clause`` (extending ``b``) is in the space."""
-    if all(v in b for v in clause.vars):
+    if clause.literal and all(v in b for v in clause.vars):
         return substitute(clause.atom, b) in space
     for cand in _candidates(space, clause, b):
         if match(clause.term, cand, b):
