@@ -134,19 +134,24 @@ def has_variables(atom: Atom) -> bool:
     return any(has_variables(a) for a in atom[1])
 
 
+#: the node types that stand for something to be found: a GlobNode stands for a run
+VARIABLE_TYPES = frozenset({"VariableNode", "GlobNode"})
+
+
 def variables_of(atom: Atom, found: list[Atom] | None = None) -> list[Atom]:
-    """The VariableNodes in ``atom`` in order of first appearance (not inside scopes)."""
+    """The VariableNodes and GlobNodes in ``atom`` in order of first appearance (not
+    inside scopes)."""
     if found is None:
         found = []
     if atom.__class__ is Node:
-        if atom[0] == "VariableNode" and atom not in found:
+        if atom[0] in VARIABLE_TYPES and atom not in found:
             found.append(atom)
         return found
     if atom[0] in _t.QUERY_TYPES or atom[0] == "LambdaLink":
         return found  # a nested scope binds its own variables
     for a in atom[1]:
         if a.__class__ is Node:  # the node case above, without a call per leaf
-            if a[0] == "VariableNode" and a not in found:
+            if a[0] in VARIABLE_TYPES and a not in found:
                 found.append(a)
         else:
             variables_of(a, found)

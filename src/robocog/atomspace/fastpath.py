@@ -61,6 +61,8 @@ _NOT_PLAIN = frozenset(
 )
 _EVAL_PREDICATES = frozenset({"GroundedPredicateNode", "DefinedPredicateNode"})
 _VAR = "VariableNode"
+#: a run of atoms: the general matcher's work, never a plain clause's
+_GLOB = "GlobNode"
 
 
 #: the ordered link types the matcher treats as plain relations, as they are met (a set,
@@ -110,6 +112,8 @@ def _read(clause: Atom, atoms: dict) -> tuple | None:
     vs = []
     for i, x in enumerate(out):
         if x.__class__ is Node:
+            if x[0] == _GLOB:
+                return None
             if x[0] == _VAR:
                 direct.append((i, x, True))
                 vs.append(x)
@@ -123,7 +127,7 @@ def _read(clause: Atom, atoms: dict) -> tuple | None:
             return None
         leaves = []
         for j, y in enumerate(x[1]):
-            if y.__class__ is not Node:
+            if y.__class__ is not Node or y[0] == _GLOB:
                 return None
             if y[0] == _VAR:
                 leaves.append((j, y, True))
@@ -339,7 +343,7 @@ def _pair_clause(clause: Atom) -> tuple | None:
     if len(out) != 2 or not (typ in _PLAIN or _plain(typ)):
         return None
     c, inner = out
-    if c.__class__ is not Node or inner.__class__ is not Link or c[0] == _VAR:
+    if c.__class__ is not Node or inner.__class__ is not Link or c[0] in (_VAR, _GLOB):
         return None
     if typ == "EvaluationLink" and c[0] in _EVAL_PREDICATES:
         return None
@@ -347,7 +351,7 @@ def _pair_clause(clause: Atom) -> tuple | None:
     if not (itype in _PLAIN or _plain(itype)):
         return None
     for a in leaves:
-        if a.__class__ is not Node:
+        if a.__class__ is not Node or a[0] == _GLOB:
             return None
     return typ, c, itype, leaves, len(leaves)
 

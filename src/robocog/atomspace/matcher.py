@@ -27,7 +27,7 @@ from collections.abc import Callable, Iterable
 from typing import TYPE_CHECKING
 
 from robocog.atomspace import types as _t
-from robocog.atomspace.atoms import Atom, Link, Node, variables_of
+from robocog.atomspace.atoms import VARIABLE_TYPES, Atom, Link, Node, variables_of
 from robocog.atomspace.fastpath import _EVAL_PREDICATES, _PLAIN, fast_query
 
 if TYPE_CHECKING:
@@ -41,7 +41,7 @@ class PatternError(ValueError):
 
 
 # ---------------------------------------------------------------------- terms
-_CONST, _VAR, _LINK, _ULINK, _CHOICE = 0, 1, 2, 3, 4
+_CONST, _VAR, _LINK, _ULINK, _CHOICE, _GLOB = 0, 1, 2, 3, 4, 5
 
 
 class _Term:
@@ -166,6 +166,12 @@ def match(t: _Term, a: Atom, b: Bindings) -> list[Bindings]:
                 if b2 not in found:
                     found.append(b2)
         return found
+    if t.kind == _LINK and any(k.kind == _GLOB for k in t.kids):
+        if a.__class__ is not Link or a[0] != t.type:
+            return []
+        results: list[Bindings] = []
+        _match_run(t.kids, 0, a[1], 0, b, results)
+        return results
     if a.__class__ is not Link or a[0] != t.type or len(a[1]) != t.arity:
         return []
     if t.kind == _LINK:
@@ -180,6 +186,38 @@ def match(t: _Term, a: Atom, b: Bindings) -> list[Bindings]:
     kids = sorted(t.kids, key=lambda k: k.kind != _CONST)
     _match_unordered(kids, 0, list(a[1]), [False] * len(a[1]), b, results)
     return results
+
+
+def _match_run(
+    kids: tuple[_Term, ...], i: int, out: tuple[Atom, ...], j: int, b: Bindings, results: list
+) -> None:
+    """Match pattern terms ``kids[i:]`` against atoms ``out[j:]``, a glob taking a run
+    of one or more atoms (every length that lets the rest match)."""
+    if i == len(kids):
+        if j == len(out):
+            results.append(b)
+        return
+    kt = kids[i]
+    if kt.kind != _GLOB:
+        if j < len(out):
+            for b2 in match(kt, out[j], b):
+                _match_run(kids, i + 1, out, j + 1, b2, results)
+        return
+    need = sum(1 for k in kids[i + 1 :])  # each later term takes at least one atom
+    bound = b.get(kt.atom)
+    for end in range(j + 1, len(out) - need + 1):
+        run = out[j:end]
+        if kt.allowed is not None and not all(_admits(kt.allowed, x) for x in run):
+            break
+        value = tuple.__new__(Link, ("ListLink", run))
+        if bound is not None:
+            if bound != value:
+                continue
+            _match_run(kids, i + 1, out, end, b, results)
+            continue
+        b2 = b.copy()
+        b2[kt.atom] = value
+        _match_run(kids, i + 1, out, end, b2, results)
 
 
 def _match_unordered(
@@ -213,7 +251,16 @@ def substitute(atom: Atom, b: Bindings) -> Atom:
         return atom
     out = atom[1]
     new = tuple([substitute(x, b) for x in out])
-    if all(x is y for x, y in zip(new, out, strict=True)):
+    if any(x.__class__ is Node and x[0] == "GlobNode" and x in b for x in out):
+        # a glob's grounding is a run: its atoms take the glob's place
+        spliced: list[Atom] = []
+        for x, y in zip(out, new, strict=True):
+            if x.__class__ is Node and x[0] == "GlobNode" and x in b:
+                spliced.extend(y[1])
+            else:
+                spliced.append(y)
+        new = tuple(spliced)
+    elif all(x is y for x, y in zip(new, out, strict=True)):
         return atom
     if atom[0] in _t.UNORDERED:
         new = tuple(sorted(new))
@@ -257,6 +304,12 @@ def _compile(
 ) -> _Term:
     """Compile a term in one pass, collecting its variables and (if asked) anchors."""
     if atom.__class__ is Node:
+        if atom in varset and atom[0] == "GlobNode":
+            found.add(atom)
+            t = _Term(_GLOB, atom)  # a run of one or more atoms of its parent's outgoing
+            t.allowed = allowed.get(atom)
+            t.multi = True
+            return t
         if atom in varset:
             found.add(atom)
             t = _Term(_VAR, atom)
@@ -277,11 +330,13 @@ def _compile(
         t.multi = True
         return t
     unordered = atom[0] in _t.UNORDERED
+    # after a glob the positions of the rest are unknown: anchors say "somewhere"
+    globbed = any(a.__class__ is Node and a[0] == "GlobNode" and a in varset for a in atom[1])
     mark = len(anchors) if anchors is not None else 0
     before = len(found)
     kids = []
     for i, a in enumerate(atom[1]):
-        step = (atom[0], None if unordered else i, up)  # linked: cheap to extend
+        step = (atom[0], None if unordered or globbed else i, up)  # linked: cheap to extend
         kids.append(_compile(a, varset, allowed, found, anchors, step))
     if len(found) == before and all(k.kind == _CONST for k in kids):
         # a ground subterm: one anchor for the whole of it
@@ -317,7 +372,7 @@ def clause_of(atom: Atom, varset: frozenset[Atom], allowed: dict) -> _Clause:
 
 def _all_vars(atom: Atom) -> Iterable[Atom]:
     if atom.__class__ is Node:
-        if atom[0] == "VariableNode":
+        if atom[0] in VARIABLE_TYPES:
             yield atom
         return
     for a in atom[1]:
@@ -448,12 +503,12 @@ def parse_variables(
         items = (decl,)
     order: list[Atom] = []
     for it in items:
-        if it.__class__ is Node and it[0] == "VariableNode":
+        if it.__class__ is Node and it[0] in VARIABLE_TYPES:
             order.append(it)
             allowed[it] = None
         elif it[0] == "TypedVariableLink" and len(it[1]) == 2:
             var, typ = it[1]
-            if var[0] != "VariableNode":
+            if var[0] not in VARIABLE_TYPES:
                 raise PatternError(f"TypedVariableLink must name a VariableNode: {it}")
             order.append(var)
             allowed[var] = _type_constraint(typ)
@@ -1021,6 +1076,7 @@ def query(
                             var[0] == "VariableNode"
                             and known.__class__ is Node
                             and known[0] != "VariableNode"
+                            and known[0] != "GlobNode"
                         ):
                             best = space._relations.get((known, pos, c, typ, itype, 2))
                             found = []
