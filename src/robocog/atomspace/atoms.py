@@ -149,12 +149,26 @@ def variables_of(atom: Atom, found: list[Atom] | None = None) -> list[Atom]:
         return found
     if atom[0] in _t.QUERY_TYPES or atom[0] == "LambdaLink":
         return found  # a nested scope binds its own variables
+    if atom[0] == "QuoteLink":
+        return _unquoted_variables(atom, found)  # quoted variables are literal atoms
     for a in atom[1]:
         if a.__class__ is Node:  # the node case above, without a call per leaf
             if a[0] in VARIABLE_TYPES and a not in found:
                 found.append(a)
         else:
             variables_of(a, found)
+    return found
+
+
+def _unquoted_variables(atom: Atom, found: list[Atom]) -> list[Atom]:
+    """The variables under the UnquoteLinks of a quoted atom."""
+    if atom.__class__ is Node:
+        return found
+    for a in atom[1]:
+        if a.__class__ is Link and a[0] == "UnquoteLink":
+            variables_of(a, found)
+        else:
+            _unquoted_variables(a, found)
     return found
 
 

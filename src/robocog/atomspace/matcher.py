@@ -280,18 +280,25 @@ class _Clause:
         # rest), from the anchor's parent up to the clause root (rest None)
         self.anchors: list[tuple[bool, Atom, tuple]] = []
         self.term = _compile(atom, varset, allowed, found, self.anchors, None)
+        if self.term.kind == _CONST and self.term.fn is None:
+            self.term.fn = _closure(self.term)  # a quoted clause is searched, not looked up
         self.vars = frozenset(found)
         # a clause with a ChoiceLink inside is never looked up as it is written, even
         # once its variables are bound: the data holds one of the choices instead
         self.literal = not _holds_choice(atom)
         self.ground = not found and self.literal
-        self.root_type = atom[0]
+        # a quoted clause matches what it quotes: the QuoteLink is not in the data
+        self.root_type = atom[1][0][0] if atom[0] == "QuoteLink" and len(atom[1]) == 1 else atom[0]
 
 
 def _holds_choice(atom: Atom) -> bool:
+    """True if the clause cannot be looked up as written: it holds a choice among
+    atoms, or quote links that the data does not hold."""
     if atom.__class__ is Node:
         return False
-    return atom[0] == "ChoiceLink" or any(_holds_choice(a) for a in atom[1])
+    return atom[0] in ("ChoiceLink", "QuoteLink", "UnquoteLink") or any(
+        _holds_choice(a) for a in atom[1]
+    )
 
 
 def _compile(
@@ -301,8 +308,22 @@ def _compile(
     found: set[Atom],
     anchors: list | None,
     up: tuple | None,
+    quoted: bool = False,
 ) -> _Term:
-    """Compile a term in one pass, collecting its variables and (if asked) anchors."""
+    """Compile a term in one pass, collecting its variables and (if asked) anchors.
+
+    Inside a QuoteLink every atom stands for itself, variables too, until an UnquoteLink
+    makes its content a pattern again; the quote links themselves are no part of the
+    data matched."""
+    if atom.__class__ is Link and len(atom[1]) == 1:
+        if atom[0] == "QuoteLink" and not quoted:
+            return _compile(atom[1][0], varset, allowed, found, anchors, up, True)
+        if atom[0] == "UnquoteLink" and quoted:
+            return _compile(atom[1][0], varset, allowed, found, anchors, up, False)
+    if quoted and atom.__class__ is Node:
+        if anchors is not None and up is not None:
+            anchors.append((False, atom, up))
+        return _Term(_CONST, atom).seal()
     if atom.__class__ is Node:
         if atom in varset and atom[0] == "GlobNode":
             found.add(atom)
@@ -320,7 +341,7 @@ def _compile(
         if anchors is not None and up is not None:
             anchors.append((False, atom, up))
         return _Term(_CONST, atom).seal()
-    if atom[0] == "ChoiceLink" and up is not None:
+    if atom[0] == "ChoiceLink" and up is not None and not quoted:
         # inside a clause a ChoiceLink stands for any one of its members (no anchors:
         # the index cannot say which member the data holds)
         t = _Term(_CHOICE, atom)
@@ -337,7 +358,7 @@ def _compile(
     kids = []
     for i, a in enumerate(atom[1]):
         step = (atom[0], None if unordered or globbed else i, up)  # linked: cheap to extend
-        kids.append(_compile(a, varset, allowed, found, anchors, step))
+        kids.append(_compile(a, varset, allowed, found, anchors, step, quoted))
     if len(found) == before and all(k.kind == _CONST for k in kids):
         # a ground subterm: one anchor for the whole of it
         if anchors is not None:
