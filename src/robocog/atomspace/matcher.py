@@ -462,14 +462,25 @@ class _Alt:
 
 #: link types that mean something to the matcher when they stand as a clause
 _SPECIAL = frozenset(
-    {"AndLink", "OrLink", "ChoiceLink", "PresentLink", "AbsentLink", "AlwaysLink", "NotLink"}
+    {
+        "AndLink",
+        "SequentialAndLink",
+        "OrLink",
+        "ChoiceLink",
+        "PresentLink",
+        "AbsentLink",
+        "AlwaysLink",
+        "NotLink",
+    }
 )
 
 
 def _alternatives(body: Atom) -> list[_Alt]:
     """The body in disjunctive form: a list of conjunctions."""
     t = body[0]
-    if t == "AndLink":
+    # a SequentialAndLink is a conjunction whose evaluatable members are evaluated in
+    # their order, the first false one ending the try (evaluations keep their order)
+    if t in ("AndLink", "SequentialAndLink"):
         if all(c[0] not in _SPECIAL and not is_evaluatable(c) for c in body[1]):
             plain = _Alt()  # the common case: a conjunction of terms to find
             plain.mandatory.extend(body[1])
