@@ -138,6 +138,8 @@ def instantiate(space: AtomSpace, atom: Atom) -> Any:
         return space.add(atom)
     if atom[0] == "ExecutionOutputLink":
         return _execution_output(space, atom)
+    if atom[0] == "PutLink":
+        return _put(space, atom)  # a rewrite that is a PutLink is reduced, as OpenCog does
     if atom[0] in _t.QUERY_TYPES:
         return space.add(atom)
     if atom[0] == "DeleteLink":

@@ -130,6 +130,16 @@ def _closure(t: _Term) -> Callable[[Atom, Bindings], Bindings | None]:
     return link
 
 
+def _self_ground(atom: Atom, mine: frozenset[Atom]) -> bool:
+    """True if a grounding holds one of the pattern's own variables (outside quotes):
+    the pattern found itself, or a copy of its clauses, in the space."""
+    if atom.__class__ is Node:
+        return atom in mine
+    if atom[0] in ("QuoteLink", "UnquoteLink"):
+        return False
+    return any(_self_ground(a, mine) for a in atom[1])
+
+
 def _has_var_in(atom: Atom, varset: frozenset[Atom]) -> bool:
     if atom.__class__ is Node:
         return atom in varset
@@ -249,6 +259,12 @@ def substitute(atom: Atom, b: Bindings) -> Atom:
         return b.get(atom, atom)
     if atom[0] in _t.QUERY_TYPES:
         return atom
+    if atom[0] == "PutLink" and len(atom[1]) == 2:
+        # the PutLink binds its body's variables itself: only the arguments take ours
+        body, args = atom[1]
+        own = set(variables_of(body)) if body[0] != "LambdaLink" else set()
+        inner = {k: v for k, v in b.items() if k not in own} if own else b
+        return tuple.__new__(Link, ("PutLink", (substitute(body, inner), substitute(args, b))))
     out = atom[1]
     new = tuple([substitute(x, b) for x in out])
     if any(x.__class__ is Node and x[0] == "GlobNode" and x in b for x in out):
@@ -675,6 +691,16 @@ class Pattern:
 
     def groundings(self, space: AtomSpace, limit: int | None = None) -> list[Bindings]:
         """Every grounding (deduplicated, in the order found)."""
+        if self.variables and space.count_type("VariableNode"):
+            # atoms with variables in the space: the pattern may find its own clauses
+            # there, which OpenCog never counts (a variable grounded by itself)
+            found = self._groundings(space, None)
+            mine = frozenset(self.variables)
+            kept = [b for b in found if not any(_self_ground(x, mine) for x in b.values())]
+            return kept if limit is None else kept[:limit]
+        return self._groundings(space, limit)
+
+    def _groundings(self, space: AtomSpace, limit: int | None = None) -> list[Bindings]:
         alts = self.alts
         if len(alts) == 1:
             # within one alternative every grounding is distinct already
