@@ -491,19 +491,37 @@ _SPECIAL = frozenset(
 )
 
 
+def _variable_formula(atom: Atom) -> bool:
+    """A bare VariableNode, or NotLinks around one."""
+    while atom.__class__ is Link and atom[0] == "NotLink" and len(atom[1]) == 1:
+        atom = atom[1][0]
+    return atom.__class__ is Node and atom[0] == "VariableNode"
+
+
 def _alternatives(body: Atom) -> list[_Alt]:
     """The body in disjunctive form: a list of conjunctions."""
     t = body[0]
     # a SequentialAndLink is a conjunction whose evaluatable members are evaluated in
     # their order, the first false one ending the try (evaluations keep their order)
     if t in ("AndLink", "SequentialAndLink"):
-        if all(c[0] not in _SPECIAL and not is_evaluatable(c) for c in body[1]):
+        if all(
+            c[0] not in _SPECIAL and not is_evaluatable(c) and not _variable_formula(c)
+            for c in body[1]
+        ):
             plain = _Alt()  # the common case: a conjunction of terms to find
             plain.mandatory.extend(body[1])
             return [plain]
         alts = [_Alt()]
+        # a variable standing as a clause (or under NotLinks) beside clauses that ground
+        # it is evaluated, as OpenCog evaluates a variable in an evaluatable position
+        structured = any(not _variable_formula(c) for c in body[1])
         for c in body[1]:
-            sub = _alternatives(c)
+            if structured and _variable_formula(c):
+                evaluated = _Alt()
+                evaluated.evals.append(c)
+                sub = [evaluated]
+            else:
+                sub = _alternatives(c)
             alts = [a.merged(s) for a in alts for s in sub]
         return alts
     if t in ("OrLink", "ChoiceLink"):
