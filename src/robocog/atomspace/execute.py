@@ -27,6 +27,7 @@ from robocog.atomspace.atoms import Atom, Link, Node, _raw_link, variables_of
 from robocog.atomspace.matcher import (
     PatternError,
     compile_pattern,
+    drop_self_groundings,
     is_variable_decl,
     parse_variables,
     query,
@@ -182,15 +183,48 @@ def grounding_atom(variables: list[Atom], b: dict[Atom, Atom]) -> Atom:
     return _raw_link("ListLink", tuple([b[v] for v in variables]))
 
 
+#: how deep DefinedPredicateNodes may be expanded inside one another
+_DEFINE_DEPTH = 32
+
+
+def _expand_defined(space: AtomSpace, atom: Atom, depth: int = 0) -> Atom:
+    """A pattern body with each DefinedPredicateNode that stands as a clause replaced
+    by what its DefineLink says (a LambdaLink's body), as OpenCog expands them before a
+    search; in an EvaluationLink's predicate place it is a call, left as it is."""
+    if atom.__class__ is Node:
+        if atom[0] != "DefinedPredicateNode":
+            return atom
+        if depth >= _DEFINE_DEPTH:
+            raise PatternError(f"{atom}: definitions nested more than {_DEFINE_DEPTH} deep")
+        for d in space.incoming(atom, "DefineLink"):
+            if d[1][0] == atom:
+                body = d[1][1]
+                if body[0] == "LambdaLink":
+                    body = body[1][-1]
+                return _expand_defined(space, body, depth + 1)
+        return atom
+    if atom[0] in _t.QUERY_TYPES or atom[0] in ("QuoteLink", "LambdaLink"):
+        return atom
+    out = atom[1]
+    start = 1 if atom[0] == "EvaluationLink" else 0
+    new = out[:start] + tuple(_expand_defined(space, a, depth) for a in out[start:])
+    if all(x is y for x, y in zip(new, out, strict=True)):
+        return atom
+    return Link(atom[0], *new)
+
+
 def run_query(space: AtomSpace, link: Atom) -> Any:
     """Run a GetLink, BindLink, QueryLink, MeetLink or SatisfactionLink."""
     decl, body, rewrite = _split(link)
+    body = _expand_defined(space, body)
     t = link[0]
     if decl is None and t != "SatisfactionLink":
         # no declaration: every variable of the body, in order, free; query() takes the
         # fast path for the plain relation queries, which need no compiled pattern
         found = query(space, body)
         vs = variables_of(body)
+        if found and vs and space.count_type("VariableNode"):
+            found = drop_self_groundings(found, vs)
     else:
         pattern = compile_pattern(body, decl)
         if t == "SatisfactionLink":

@@ -130,6 +130,14 @@ def _closure(t: _Term) -> Callable[[Atom, Bindings], Bindings | None]:
     return link
 
 
+def drop_self_groundings(found: list[Bindings], variables: Iterable[Atom]) -> list[Bindings]:
+    """The groundings that do not hold the pattern's own variables: with atoms that
+    have variables in the space, a pattern may find its own clauses there, which
+    OpenCog never counts."""
+    mine = frozenset(variables)
+    return [b for b in found if not any(_self_ground(x, mine) for x in b.values())]
+
+
 def _self_ground(atom: Atom, mine: frozenset[Atom]) -> bool:
     """True if a grounding holds one of the pattern's own variables (outside quotes):
     the pattern found itself, or a copy of its clauses, in the space."""
@@ -712,9 +720,7 @@ class Pattern:
         if self.variables and space.count_type("VariableNode"):
             # atoms with variables in the space: the pattern may find its own clauses
             # there, which OpenCog never counts (a variable grounded by itself)
-            found = self._groundings(space, None)
-            mine = frozenset(self.variables)
-            kept = [b for b in found if not any(_self_ground(x, mine) for x in b.values())]
+            kept = drop_self_groundings(self._groundings(space, None), self.variables)
             return kept if limit is None else kept[:limit]
         return self._groundings(space, limit)
 
