@@ -122,3 +122,67 @@ def test_opencogs_other_2021_link_types_are_read() -> None:
     space = space_of('(AssociativeLink (ConceptNode "a") (ConceptNode "b"))')
     out = run(space, '(GetLink (AssociativeLink (ConceptNode "a") (VariableNode "$x")))')
     assert out == '(SetLink (ConceptNode "b"))'
+
+
+def test_a_sequential_and_checks_its_members_in_order_and_stops_at_the_first_false() -> None:
+    space = space_of('(EvaluationLink (PredicateNode "visible") (ListLink (ConceptNode "it")))')
+    calls: list[str] = []
+
+    def mark(_space: AtomSpace, *args: object) -> bool:
+        calls.append("called")
+        return True
+
+    space.functions["mark"] = mark
+    body = (
+        '(SatisfactionLink (TypedVariableLink (VariableNode "$x") (TypeNode "ConceptNode"))'
+        " (SequentialAndLink"
+        ' (AbsentLink (EvaluationLink (PredicateNode "visible") (ListLink (VariableNode "$x"))))'
+        ' (EvaluationLink (GroundedPredicateNode "py:mark") (ListLink))))'
+    )
+    assert run(space, body) == "(stv 0 1)"
+    assert calls == []  # the absence failed first: the predicate never ran
+
+
+def test_a_grounded_predicate_makes_its_atoms_in_a_scratch_space_but_sets_values_for_good() -> None:
+    space = space_of('(ListLink (ConceptNode "foo") (ConceptNode "bar"))')
+
+    def litter(s: AtomSpace, x: object) -> bool:
+        s.add(read_atom('(ConceptNode "litter")'))
+        s.set_tv(read_atom('(ConceptNode "marked")'), read_atom_tv())
+        return True
+
+    def read_atom_tv():  # noqa: ANN202
+        from robocog.atomspace import stv
+
+        return stv(0.5, 0.5)
+
+    space.functions["litter"] = litter
+    out = run(
+        space,
+        '(GetLink (AndLink (PresentLink (ListLink (ConceptNode "foo") (VariableNode "x")))'
+        ' (EvaluationLink (GroundedPredicateNode "py:litter") (ListLink (VariableNode "x")))))',
+    )
+    assert out == '(SetLink (ConceptNode "bar"))'
+    assert read_atom('(ConceptNode "litter")') not in space
+    assert str(space.get_tv(read_atom('(ConceptNode "marked")'))) == "(stv 0.5 0.5)"
+
+
+def test_a_variable_as_a_clause_is_evaluated_and_defined_predicates_are_expanded() -> None:
+    space = space_of(
+        '(ContextLink (ConceptNode "c1") (EqualLink (ConceptNode "a") (ConceptNode "a"))'
+        ' (ConceptNode "yes"))',
+        '(ContextLink (ConceptNode "c2") (EqualLink (ConceptNode "a") (ConceptNode "b"))'
+        ' (ConceptNode "no"))',
+        '(DefineLink (DefinedPredicateNode "in context")'
+        ' (ContextLink (VariableNode "$c") (VariableNode "$t") (VariableNode "$r")))',
+    )
+    out = run(
+        space,
+        '(BindLink (VariableList (VariableNode "$c") (VariableNode "$t") (VariableNode "$r"))'
+        ' (AndLink (ContextLink (VariableNode "$c") (VariableNode "$t") (VariableNode "$r"))'
+        ' (VariableNode "$t")) (VariableNode "$r"))',
+    )
+    assert out == '(SetLink (ConceptNode "yes"))'
+    # the definition's own ContextLink (with variables) is in the space: never a grounding
+    out = run(space, '(GetLink (DefinedPredicateNode "in context"))')
+    assert out.count("ListLink") == 2 and "VariableNode" not in out

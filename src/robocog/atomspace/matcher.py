@@ -466,7 +466,7 @@ def is_evaluatable(atom: Atom) -> bool:
 class _Alt:
     """One alternative: a conjunction of mandatory, absent and evaluatable clauses."""
 
-    __slots__ = ("mandatory", "absent", "evals", "always")
+    __slots__ = ("mandatory", "absent", "evals", "always", "order")
 
     def __init__(self) -> None:
         self.mandatory: list[Atom] = []
@@ -474,6 +474,17 @@ class _Alt:
         self.evals: list[Atom] = []
         #: AlwaysLink members: true of every grounding that shares the search's start
         self.always: list[Atom] = []
+        #: the evaluations and absences in the order written (a SequentialAndLink
+        #: checks them in that order): i for evals[i], -1 - i for absent[i]
+        self.order: list[int] = []
+
+    def add_eval(self, atom: Atom) -> None:
+        self.order.append(len(self.evals))
+        self.evals.append(atom)
+
+    def add_absent(self, atom: Atom) -> None:
+        self.order.append(-1 - len(self.absent))
+        self.absent.append(atom)
 
     def merged(self, other: _Alt) -> _Alt:
         new = _Alt()
@@ -481,6 +492,8 @@ class _Alt:
         new.absent = self.absent + other.absent
         new.evals = self.evals + other.evals
         new.always = self.always + other.always
+        ne, na = len(self.evals), len(self.absent)
+        new.order = self.order + [i + ne if i >= 0 else i - na for i in other.order]
         return new
 
 
@@ -526,7 +539,7 @@ def _alternatives(body: Atom) -> list[_Alt]:
         for c in body[1]:
             if structured and _variable_formula(c):
                 evaluated = _Alt()
-                evaluated.evals.append(c)
+                evaluated.add_eval(c)
                 sub = [evaluated]
             else:
                 sub = _alternatives(c)
@@ -535,7 +548,7 @@ def _alternatives(body: Atom) -> list[_Alt]:
     if t in ("OrLink", "ChoiceLink"):
         if t == "OrLink" and is_evaluatable(body):
             alt = _Alt()
-            alt.evals.append(body)
+            alt.add_eval(body)
             return [alt]
         out: list[_Alt] = []
         for c in body[1]:
@@ -547,15 +560,17 @@ def _alternatives(body: Atom) -> list[_Alt]:
     elif t == "PresentLink":
         alt.mandatory.extend(body[1])
     elif t == "AbsentLink":
-        alt.absent.extend(body[1])
+        for member in body[1]:
+            alt.add_absent(member)
     elif t == "NotLink" and len(body[1]) == 1 and not is_evaluatable(body[1][0]):
         inner = body[1][0]
         if inner[0] == "PresentLink":
-            alt.absent.extend(inner[1])
+            for member in inner[1]:
+                alt.add_absent(member)
         else:
-            alt.absent.append(inner)
+            alt.add_absent(inner)
     elif is_evaluatable(body):
-        alt.evals.append(body)
+        alt.add_eval(body)
     else:
         alt.mandatory.append(body)
     return [alt]
@@ -759,11 +774,13 @@ class _CompiledAlt:
         "enum_vars",
         "allowed",
         "always",
+        "order",
     )
 
     def __init__(self, alt: _Alt, varset: frozenset[Atom], allowed: dict) -> None:
         self.allowed = allowed
         self.always = list(alt.always)
+        self.order = list(alt.order)
         self.mandatory = [clause_of(c, varset, allowed) for c in alt.mandatory]
         self.bound_vars: set[Atom] = set()
         for c in self.mandatory:
@@ -832,7 +849,7 @@ class _CompiledAlt:
         return best if best is not None else (self.mandatory[0] if self.mandatory else None)
 
     def _solve(self, space: AtomSpace, out: list[Bindings], limit: int | None = None) -> None:
-        pending = list(range(len(self.evals))) + [-1 - i for i in range(len(self.absent))]
+        pending = list(self.order)
         b: Bindings = {}
         if pending:
             ok, pending = self._check_ready(space, pending, b)
@@ -1091,7 +1108,11 @@ def _exists(space: AtomSpace, clause: _Clause, b: Bindings) -> bool:
 
 # ---------------------------------------------------------------------- evaluation
 def _eval_clause(space: AtomSpace, atom: Atom) -> bool:
-    # through the space, which knows its evaluator: the matcher sits below execution
+    # through the space, which knows its evaluator: the matcher sits below execution.
+    # A grounded predicate runs in a scratch space above the queried one, as OpenCog
+    # runs it: what it creates while the query runs does not stay
+    if atom[0] == "EvaluationLink" and atom[1] and atom[1][0][0] == "GroundedPredicateNode":
+        return space.scratch().evaluate(atom).is_true()
     return space.evaluate(atom).is_true()
 
 

@@ -99,6 +99,7 @@ class AtomSpace:
         "_owned_rel",
         "functions",
         "name",
+        "_scratch",
     )
 
     def __init__(self, parent: AtomSpace | None = None, name: str = "") -> None:
@@ -118,6 +119,16 @@ class AtomSpace:
         self._owned_rel: set[tuple] | None = None
         self.functions: dict[str, GroundedFunction] = parent.functions if parent is not None else {}
         self.name = name
+        # a scratch space keeps the atoms made in it; a value set on any other atom
+        # goes to the parent (with the atom), as a value set during a query stays
+        self._scratch = False
+
+    def scratch(self) -> AtomSpace:
+        """A temporary space above this one, for what a grounded predicate makes
+        while a query runs: atoms it adds stay in it, values it sets do not."""
+        child = AtomSpace(parent=self, name=f"{self.name}:scratch")
+        child._scratch = True
+        return child
 
     # ------------------------------------------------------------------ frames/copies
     @property
@@ -505,6 +516,8 @@ class AtomSpace:
         """Set the truth value (adding the atom if needed); a frame shadows its parent."""
         if not isinstance(tv, TruthValue):
             raise TypeError(f"not a truth value: {tv!r}")
+        if self._scratch and self._parent is not None and atom not in self._atoms:
+            return self._parent.set_tv(atom, tv)
         found = self._find(atom)
         if found is None:
             found = self.add(atom)
@@ -531,6 +544,8 @@ class AtomSpace:
             raise TypeError(f"not a Value: {value!r}")
         if isinstance(value, TruthValue) and key == TV_KEY:
             return self.set_tv(atom, value)
+        if self._scratch and self._parent is not None and atom not in self._atoms:
+            return self._parent.set_value(atom, key, value)
         found = self._find(atom)
         if found is None:
             found = self.add(atom)
