@@ -216,7 +216,8 @@ def _expand_defined(space: AtomSpace, atom: Atom, depth: int = 0) -> Atom:
 def run_query(space: AtomSpace, link: Atom) -> Any:
     """Run a GetLink, BindLink, QueryLink, MeetLink or SatisfactionLink."""
     decl, body, rewrite = _split(link)
-    body = _expand_defined(space, body)
+    if space.count_type("DefineLink"):
+        body = _expand_defined(space, body)
     t = link[0]
     if decl is None and t != "SatisfactionLink":
         # no declaration: every variable of the body, in order, free; query() takes the

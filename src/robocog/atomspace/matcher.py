@@ -572,8 +572,47 @@ def _alternatives(body: Atom) -> list[_Alt]:
     elif is_evaluatable(body):
         alt.add_eval(body)
     else:
+        variants = _choices_spelled_out(body)
+        if len(variants) > 1:
+            # one alternative per choice: each is searched from the index, where a
+            # clause holding the choice could not be (it is matched member by member
+            # only when there are too many combinations)
+            out = []
+            for v in variants:
+                each = _Alt()
+                each.mandatory.append(v)
+                out.append(each)
+            return out
         alt.mandatory.append(body)
     return [alt]
+
+
+#: at most this many clauses are made of one clause's ChoiceLinks
+_CHOICE_VARIANTS = 64
+
+
+def _choices_spelled_out(atom: Atom) -> list[Atom]:
+    """The clauses a clause with ChoiceLinks inside stands for, one per combination of
+    choices ([atom] itself when it has none or too many)."""
+    if (
+        atom.__class__ is Node
+        or atom[0] in ("QuoteLink", "LambdaLink")
+        or atom[0] in _t.QUERY_TYPES
+    ):
+        return [atom]
+    if not _holds_choice(atom):
+        return [atom]
+    combos: list[list[Atom]] = [[]]
+    for a in atom[1]:
+        options = (
+            [x for m in a[1] for x in _choices_spelled_out(m)]
+            if a.__class__ is Link and a[0] == "ChoiceLink"
+            else _choices_spelled_out(a)
+        )
+        combos = [c + [o] for c in combos for o in options]
+        if len(combos) > _CHOICE_VARIANTS:
+            return [atom]
+    return [Link(atom[0], *c) for c in combos]
 
 
 # ---------------------------------------------------------------------- variables
