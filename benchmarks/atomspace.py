@@ -29,6 +29,13 @@ Atomese text, and loaded from SQLite (resident memory measured from /proc).
 
     python benchmarks/atomspace.py                 # everything
     python benchmarks/atomspace.py --queries 200 --no-million
+    python benchmarks/atomspace.py --no-million --opencog ~/.cache/robocog-peers/opencog/install
+
+``--opencog PREFIX`` adds the real OpenCog AtomSpace of 2021 as a peer (built by
+``../shared/tools/opencog/build-opencog.sh``; not part of CI): the same facts and the
+same queries as GetLinks run by ``cog-execute!`` in its Guile, timed inside Guile with
+its CPU clock (the queries built before the clock starts), best of three rounds,
+against robocog's GetLink execution.
 """
 
 from __future__ import annotations
@@ -37,6 +44,7 @@ import argparse
 import gc
 import os
 import random
+import subprocess
 import sys
 import tempfile
 import time
@@ -222,6 +230,65 @@ def robocog_only(names, pairs, work, rounds: int) -> dict[str, tuple[float, int]
     return best_of(fns, rounds)
 
 
+def opencog_side(prefix: str, names, pairs, work, rounds: int = 3) -> dict[str, tuple[float, int]]:  # noqa: ANN001
+    """CPU seconds (best round) and answers per kind of OpenCog's GetLink, in its Guile."""
+    guile = os.path.join(prefix, "bin", "opencog-guile")
+    if not os.access(guile, os.X_OK):
+        raise SystemExit(f"--opencog: no {guile} (build it with build-opencog.sh)")
+
+    def block(k: int) -> str:
+        h, lo = names[k]
+        return f'(ConceptNode "b{h}_{lo}")'
+
+    def on(a: str, b: str) -> str:
+        return f'(EvaluationLink (PredicateNode "on") (ListLink {a} {b}))'
+
+    y, z, x = '(VariableNode "$y")', '(VariableNode "$z")', '(VariableNode "$x")'
+    make = {
+        "first": lambda k: on(block(k), y),
+        "second": lambda k: on(x, block(k)),
+        "join-first": lambda k: f"(AndLink {on(block(k), y)} {on(y, z)})",
+        "join-last": lambda k: f"(AndLink {on(x, y)} {on(y, block(k))})",
+    }
+    lines = ["(use-modules (opencog) (opencog exec))"]
+    lines += [on(block(a), block(b)) for a, b in pairs]
+    for kind in KINDS:
+        queries = " ".join(f"(GetLink {make[kind](k)})" for k in work[kind])
+        lines.append(f"(define q-{kind} (list {queries}))")
+    lines.append(
+        "(define (run qs) (let ((t0 (get-internal-run-time)) (n 0))"
+        " (for-each (lambda (q) (set! n (+ n (length (cog-outgoing-set (cog-execute! q)))))) qs)"
+        " (list (- (get-internal-run-time) t0) n)))"
+    )
+    for kind in KINDS:
+        for _ in range(rounds):
+            lines.append(
+                f'(let ((r (run q-{kind}))) (format #t "{kind} ~a ~a~%" (car r) (cadr r)))'
+            )
+    lines.append('(format #t "units ~a~%" internal-time-units-per-second)')
+    with tempfile.NamedTemporaryFile("w", suffix=".scm", delete=False) as f:
+        f.write("\n".join(lines) + "\n")
+        script = f.name
+    try:
+        done = subprocess.run([guile, "-s", script], capture_output=True, text=True, timeout=3600)
+    finally:
+        os.unlink(script)
+    if done.returncode != 0:
+        raise SystemExit("OpenCog's Guile failed: " + done.stderr.strip()[-500:])
+    units = 1.0
+    best: dict[str, tuple[float, int]] = {}
+    rows = [ln.split() for ln in done.stdout.splitlines() if ln.strip()]
+    for row in rows:
+        if row[0] == "units":
+            units = float(row[1])
+    for row in rows:
+        if row[0] in KINDS:
+            secs, n = float(row[1]) / units, int(row[2])
+            if row[0] not in best or secs < best[row[0]][0]:
+                best[row[0]] = (secs, n)
+    return best
+
+
 # ---------------------------------------------------------------------- 10^6 atoms
 def rss_mb() -> float:
     """Resident memory of this process in MB."""
@@ -288,6 +355,7 @@ def main(argv: list[str] | None = None) -> int:
     )
     ap.add_argument("--no-million", action="store_true", help="skip the 10^6-atom part")
     ap.add_argument("--no-hyperon", action="store_true", help="robocog only")
+    ap.add_argument("--opencog", metavar="PREFIX", help="also OpenCog 2021, built at PREFIX")
     args = ap.parse_args(argv)
 
     names, pairs, clears = facts(args.seed)
@@ -329,6 +397,18 @@ def main(argv: list[str] | None = None) -> int:
                 print(f"{label:<24}{us:>10.1f}{hcol}{uh / us:>7.1f}x{count:>9}{same}")
             else:
                 print(f"{label:<24}{us:>10.1f}{'-':>12}{'-':>8}{count:>9}")
+
+    if args.opencog:
+        theirs = opencog_side(os.path.expanduser(args.opencog), names, pairs, work)
+        print("against OpenCog's AtomSpace of 2021 (GetLink by cog-execute!, us per query):")
+        for kind in KINDS:
+            ours_t, ours_n = rows[kind]["get"]
+            oc_t, oc_n = theirs[kind]
+            same = "" if oc_n == ours_n else f" (OpenCog: {oc_n} answers)"
+            print(
+                f"  {kind:<14}{ours_t / q * 1e6:>10.1f}{oc_t / q * 1e6:>12.1f}"
+                f"{oc_t / ours_t:>7.1f}x{ours_n:>9}{same}"
+            )
 
     extra = robocog_only(names, pairs, work, args.rounds)
     for kind, (t, count) in extra.items():

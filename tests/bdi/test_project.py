@@ -184,3 +184,28 @@ def test_jasons_actions_robocog_lacks_fail_saying_so() -> None:
     ).run()
     assert out == ["not supported: .relevant_plans/2"]
     assert any("unknown internal action .nonesuch/1" in w for w in warnings)
+
+
+def test_an_ask_is_answered_by_plans_and_kqml_received_overrides_the_default(
+    tmp_path: Path,
+) -> None:
+    files = {
+        "p.mas2j": "MAS p { agents: asker; teller; }",
+        "asker.asl": "!s.\n"
+        "+!s <- .send(teller, askOne, price(apple, P), A); .print(A);\n"
+        "       .send(teller, askOne, price(kiwi, Q), B); .print(B);\n"
+        "       .send(teller, tell, hello); .send(teller, achieve, greet).",
+        "teller.asl": "+?price(apple, P) <- P = 3.\n"
+        "+!kqml_received(S, tell, hello, M) <- .print(heard(S)).\n"
+        "+hello <- .print(added).\n"
+        "+!greet <- .print(greeting).",
+    }
+    lines = _printed(tmp_path, files, "p.mas2j")
+    # the belief base had no price: the +? plan answered; none for kiwi: false;
+    # the program's kqml_received took the tell (no belief added), the achieve went on
+    assert lines == [
+        "[asker] price(apple,3)[source(teller)]",
+        "[asker] false",
+        "[teller] heard(asker)",
+        "[teller] greeting",
+    ]

@@ -988,7 +988,8 @@ class Agent:
                         val = ret[1]
                     else:
                         val = _propagate(resolve(lit, top.s), ret[1])
-                    term = caller.cur[0].term
+                    # through a variable too (``?C`` with C bound to a literal)
+                    term = deref(caller.cur[0].term, caller.s)
                     if term.__class__ is Literal and not term.ground:
                         unify(term, val, caller.s, [])
                     caller.cur = caller.cur[1]

@@ -121,9 +121,57 @@ def _with_sender(t: Term, sender: str) -> Term:
     return t
 
 
+#: Jason's default plan for an askOne whose answer the belief base lacks: the test goal
+#: may be achieved by the receiver's ``+?`` plans; when it fails the asker is told no
+ASK_BY_TEST_GOAL = (
+    "@kqmlReceivedAskOne1 +!kqml_received(S, askOne, C, M) <- ?C; .send(S, tell, C, M).",
+    "@kqmlReceivedAskOne1f -!kqml_received(S, askOne, C, M) <- .send(S, untell, C, M).",
+)
+
+
+def _kqml_literal(msg: Message) -> Literal:
+    return Literal(
+        "kqml_received",
+        (Literal(msg.sender), Literal(msg.performative), msg.content, Literal(msg.msg_id)),
+    )
+
+
+def _handled_by_a_plan(ag: Agent, msg: Message) -> bool:
+    """Post ``+!kqml_received(Sender, Performative, Content, MsgId)`` when a plan of the
+    agent's own takes that message (it overrides Jason's default handling, as the
+    program's plans come before the default ones); True if posted."""
+    trigger = P.Trigger("+", P.ACHIEVE, _kqml_literal(msg))
+    plans = ag.pl.candidates(trigger)
+    if not plans:
+        return False
+    for plan in plans:
+        if plan.label is not None and plan.label.functor.startswith("kqmlReceived"):
+            continue
+        if unify(plan.trigger.literal, trigger.literal, {}, []):
+            ag.post(Event(trigger, None))
+            return True
+    return False
+
+
+def _ask_by_test_goal(ag: Agent, msg: Message) -> bool:
+    """An askOne the belief base cannot answer goes to the receiver's ``+?`` plans (as
+    Jason's default plan does it, by a test goal); True if it went."""
+    if msg.content.__class__ is not Literal:
+        return False
+    if not ag.pl.has_candidate(P.Trigger("+", P.TEST, msg.content)):
+        return False
+    if ag.pl.get("kqmlReceivedAskOne1") is None:
+        for text in ASK_BY_TEST_GOAL:
+            ag.add_plan(text)
+    ag.post(Event(P.Trigger("+", P.ACHIEVE, _kqml_literal(msg)), None))
+    return True
+
+
 def handle_message(ag: Agent, msg: Message) -> None:
     """What a received message does (Jason's default ``kqmlPlans``)."""
     sender = "self" if msg.sender == ag.name else msg.sender
+    if msg.in_reply_to is None and _handled_by_a_plan(ag, msg):
+        return
     if msg.in_reply_to is not None and msg.in_reply_to in ag._asks:
         i, answer = ag._asks.pop(msg.in_reply_to)
         if ag.C.pending.pop(i.id, None) is None or i.dropped:
@@ -179,6 +227,8 @@ def handle_message(ag: Agent, msg: Message) -> None:
         if perf == "askOne":
             if answers:
                 reply = Message(ag.name, msg.sender, "tell", answers[0], f"mid{next(_msg_ids)}")
+            elif _ask_by_test_goal(ag, msg):
+                return
             else:
                 reply = Message(ag.name, msg.sender, "untell", content, f"mid{next(_msg_ids)}")
         else:
