@@ -209,3 +209,23 @@ def test_an_ask_is_answered_by_plans_and_kqml_received_overrides_the_default(
         "[teller] heard(asker)",
         "[teller] greeting",
     ]
+
+
+def test_plans_are_asked_for_told_and_untold(tmp_path: Path) -> None:
+    files = {
+        "p.mas2j": "MAS p { agents: a; b; }",
+        "a.asl": "!s.\n"
+        "+!s <- .send(b, askHow, {+!hello(_)}, Plans); .print(Plans);\n"
+        '       .send(b, askHow, "+!hello(X)"); .wait(50); !hello(world);\n'
+        '       .send(b, untellHow, "@h1"); .wait(50);\n'
+        "       .send(b, askHow, {+!hello(_)}, P2); .print(P2).",
+        "b.asl": '@h1 +!hello(X) <- .print("hello ", X).',
+    }
+    lines = _printed(tmp_path, files, "p.mas2j")
+    # with an answer variable the plans come back as terms; without one they are told
+    # to the asker, who then has the plan; after untellHow the receiver has none left
+    assert lines == [
+        '[a] [{ @h1 +!hello(X) <- .print("hello ",X) }]',
+        "[a] hello world",
+        "[a] []",
+    ]

@@ -167,6 +167,20 @@ def _ask_by_test_goal(ag: Agent, msg: Message) -> bool:
     return True
 
 
+def _trigger_of(ag: Agent, content: Term) -> P.Trigger | None:
+    """The trigger an askHow asks about: a plan term ``{+!g}`` or its text ``"+!g"``."""
+    if content.__class__ is PlanTerm:
+        return content.plan.trigger
+    if content.__class__ is str:
+        from robocog.bdi.parser import ParseError, parse_plan
+
+        try:
+            return parse_plan(content).trigger
+        except (ParseError, ValueError):
+            return None
+    return None
+
+
 def handle_message(ag: Agent, msg: Message) -> None:
     """What a received message does (Jason's default ``kqmlPlans``)."""
     sender = "self" if msg.sender == ag.name else msg.sender
@@ -235,6 +249,23 @@ def handle_message(ag: Agent, msg: Message) -> None:
             reply = Message(ag.name, msg.sender, "tell", make_list(answers), f"mid{next(_msg_ids)}")
         reply.in_reply_to = msg.msg_id
         _reply(ag, reply)
+    elif perf == "askHow":
+        trigger = _trigger_of(ag, content)
+        if trigger is None:
+            ag.warn(f"askHow from {msg.sender}: not a trigger: {term_str(content)}")
+            return
+        plans = [
+            PlanTerm(p, str(p).rstrip("."))
+            for p in ag.relevant_plans(trigger)
+            if p.label is None or not p.label.functor.startswith("kqmlReceived")
+        ]
+        reply = Message(ag.name, msg.sender, "tellHow", make_list(plans), f"mid{next(_msg_ids)}")
+        reply.in_reply_to = msg.msg_id
+        _reply(ag, reply)
+    elif perf == "untellHow":
+        for label in list(iter_list(content)) if is_list(content) else [content]:
+            name = label.functor if label.__class__ is Literal else str(label).lstrip("@")
+            ag.pl.remove(name)
     elif perf == "tellHow":
         texts = list(iter_list(content)) if is_list(content) else [content]
         for t in texts:
