@@ -270,7 +270,13 @@ def opencog_side(prefix: str, names, pairs, work, rounds: int = 3) -> dict[str, 
         f.write("\n".join(lines) + "\n")
         script = f.name
     try:
-        done = subprocess.run([guile, "-s", script], capture_output=True, text=True, timeout=3600)
+        # not compiled first: Guile's compiler takes minutes over ten thousand facts
+        done = subprocess.run(
+            [guile, "--no-auto-compile", "-s", script],
+            capture_output=True,
+            text=True,
+            timeout=3600,
+        )
     finally:
         os.unlink(script)
     if done.returncode != 0:

@@ -223,7 +223,8 @@ def run_query(space: AtomSpace, link: Atom) -> Any:
         # no declaration: every variable of the body, in order, free; query() takes the
         # fast path for the plain relation queries, which need no compiled pattern
         found = query(space, body)
-        vs = variables_of(body)
+        # one variable bound in every grounding: the pattern's only one (no walk over it)
+        vs = list(found[0]) if found and len(found[0]) == 1 else variables_of(body)
         if found and vs and space.count_type("VariableNode"):
             found = drop_self_groundings(found, vs)
     else:
