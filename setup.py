@@ -44,9 +44,44 @@ SOURCE_DIR = os.path.join("src", "robocog", "nars")
 COMPILED = "_compiled"
 
 
+def _digest(path: str) -> str:
+    with open(path, "rb") as f:
+        return hashlib.sha256(f.read()).hexdigest()
+
+
+def _compiled_is_current() -> bool:
+    """True when ``_compiled/`` beside the sources holds every engine module, built by
+    this Python from the sources (and declarations) exactly as they are now."""
+    folder = os.path.join(SOURCE_DIR, COMPILED)
+    try:
+        with open(os.path.join(folder, "manifest.json")) as f:
+            manifest = json.load(f)
+        built = os.listdir(folder)
+    except (OSError, ValueError):
+        return False
+    if manifest.get("cache_tag") != sys.implementation.cache_tag:
+        return False
+    sources = manifest.get("sources", {})
+    for m in ENGINE_MODULES:
+        for name in (f"{m}.py", f"{m}.pxd"):
+            path = os.path.join(SOURCE_DIR, name)
+            if os.path.exists(path) and sources.get(name) != _digest(path):
+                return False
+        if not any(f.startswith(f"{m}.") and f.endswith((".so", ".pyd")) for f in built):
+            return False
+    return True
+
+
 def _extensions() -> list[Extension]:
     if os.environ.get("ROBOCOG_PURE_PYTHON"):
         return []
+    # an editable install uses the extensions beside the sources: when nothing in the
+    # engine changed since they were built, another install need not build them again
+    if "editable_wheel" in sys.argv and _compiled_is_current():
+        print("robocog: the compiled NARS engine is current; it is not built again")
+        return []
+    print("robocog: compiling the NARS engine with Cython (a few minutes; set")
+    print("ROBOCOG_PURE_PYTHON=1 to skip it and run the pure-Python engine)")
     try:
         from Cython.Build import cythonize
     except ImportError:
