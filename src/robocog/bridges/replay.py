@@ -144,7 +144,7 @@ def _command_of(goal: Any, config: BridgeConfig) -> Command:
 
 def feed(body: RobotBody, topic: str, msg: Any) -> None:
     """Hand one recorded message to the body, as the ROS 2 link would."""
-    from robocog.bridges.perception import BoxReading, PoseReading, ScanReading, yaw_of
+    from robocog.bridges.perception import PoseReading, ScanReading, yaw_of
     from robocog.bridges.ros2 import messages as m
 
     tp = body.config.topics
@@ -156,21 +156,9 @@ def feed(body: RobotBody, topic: str, msg: Any) -> None:
             m.seconds_of(msg.header.stamp),
         )
     elif topic == tp.detections:
-        boxes = []
-        for d in msg.detections:
-            if d.results:
-                best = max(d.results, key=lambda r: r.hypothesis.score)
-                p = best.pose.pose.position
-                boxes.append(
-                    BoxReading(
-                        best.hypothesis.class_id,
-                        best.hypothesis.score,
-                        d.bbox.center.position.x,
-                        (p.x, p.y, p.z),
-                        d.id or None,
-                    )
-                )
-        body.on_boxes(boxes)
+        from robocog.bridges.ros2.link import boxes_of
+
+        body.on_boxes(boxes_of(msg), m.seconds_of(msg.header.stamp))
     elif topic == tp.gripper_state:
         body.on_gripper(msg.data)
     else:

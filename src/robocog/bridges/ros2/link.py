@@ -266,22 +266,7 @@ class Ros2Link:
         )
 
     def _on_dets(self, a: m.Detection2DArray) -> None:
-        boxes = []
-        for d in a.detections:
-            if not d.results:
-                continue
-            best = max(d.results, key=lambda r: r.hypothesis.score)
-            p = best.pose.pose.position
-            boxes.append(
-                BoxReading(
-                    best.hypothesis.class_id,
-                    best.hypothesis.score,
-                    d.bbox.center.position.x,
-                    (p.x, p.y, p.z),
-                    d.id or None,
-                )
-            )
-        self._body.on_boxes(boxes, m.seconds_of(a.header.stamp))
+        self._body.on_boxes(boxes_of(a), m.seconds_of(a.header.stamp))
 
     def _on_amcl(self, msg: m.PoseWithCovarianceStamped) -> None:
         self._on_pose(msg.pose.pose)
@@ -300,3 +285,24 @@ class Ros2Link:
 
     def _on_text(self, msg: m.String) -> None:
         self._body.on_text(msg.data)
+
+
+def boxes_of(a: m.Detection2DArray) -> list[BoxReading]:
+    """Each detection's best hypothesis as a box (a detection without one is skipped):
+    what the bridge reads from a live Detection2DArray and from a recorded one."""
+    boxes = []
+    for d in a.detections:
+        if not d.results:
+            continue
+        best = max(d.results, key=lambda r: r.hypothesis.score)
+        p = best.pose.pose.position
+        boxes.append(
+            BoxReading(
+                best.hypothesis.class_id,
+                best.hypothesis.score,
+                d.bbox.center.position.x,
+                (p.x, p.y, p.z),
+                d.id or None,
+            )
+        )
+    return boxes
