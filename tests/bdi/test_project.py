@@ -174,7 +174,7 @@ def test_one_formula_cannot_take_gigabytes_or_hang_the_agent() -> None:
 def test_jasons_actions_robocog_lacks_fail_saying_so() -> None:
     program = """
     !s.
-    +!s <- .relevant_plans({+!s}, L).
+    +!s <- .list_plans.
     -!s[error_msg(M)] <- .print(M); .nonesuch(1).
     """
     out: list[str] = []
@@ -182,7 +182,7 @@ def test_jasons_actions_robocog_lacks_fail_saying_so() -> None:
     Agent(
         program, "a", printer=lambda n, t: out.append(t), warn=lambda n, t: warnings.append(t)
     ).run()
-    assert out == ["not supported: .relevant_plans/2"]
+    assert out == ["not supported: .list_plans/0"]
     assert any("unknown internal action .nonesuch/1" in w for w in warnings)
 
 
@@ -229,3 +229,17 @@ def test_plans_are_asked_for_told_and_untold(tmp_path: Path) -> None:
         "[a] hello world",
         "[a] []",
     ]
+
+
+def test_relevant_plans_and_plan_label_give_plan_terms() -> None:
+    program = """
+    !s.
+    @g1 +!g(X) : X > 1 <- .print(big).
+    @g2 +!g(_) <- .print(small).
+    +!s <- .relevant_plans({+!g(_)}, L, Labels); .length(L, N); .print(N, Labels);
+           .plan_label(P, g2); .print(P);
+           .relevant_plans("+!other", E); .print(E).
+    """
+    out: list[str] = []
+    Agent(program, "a", printer=lambda n, t: out.append(t)).run()
+    assert out == ["2[g1,g2]", "{ @g2 +!g(_) <- .print(small) }", "[]"]

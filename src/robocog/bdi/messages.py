@@ -167,8 +167,9 @@ def _ask_by_test_goal(ag: Agent, msg: Message) -> bool:
     return True
 
 
-def _trigger_of(ag: Agent, content: Term) -> P.Trigger | None:
-    """The trigger an askHow asks about: a plan term ``{+!g}`` or its text ``"+!g"``."""
+def trigger_of(content: Term) -> P.Trigger | None:
+    """The trigger an askHow or ``.relevant_plans`` asks about: a plan term ``{+!g}``
+    or its text ``"+!g"``."""
     if content.__class__ is PlanTerm:
         return content.plan.trigger
     if content.__class__ is str:
@@ -179,6 +180,16 @@ def _trigger_of(ag: Agent, content: Term) -> P.Trigger | None:
         except (ParseError, ValueError):
             return None
     return None
+
+
+def plan_terms(ag: Agent, trigger: P.Trigger) -> list[PlanTerm]:
+    """The agent's plans relevant for ``trigger`` as plan terms (not the default
+    message-handling plans)."""
+    return [
+        PlanTerm(p, str(p).rstrip("."))
+        for p in ag.relevant_plans(trigger)
+        if p.label is None or not p.label.functor.startswith("kqmlReceived")
+    ]
 
 
 def handle_message(ag: Agent, msg: Message) -> None:
@@ -250,15 +261,11 @@ def handle_message(ag: Agent, msg: Message) -> None:
         reply.in_reply_to = msg.msg_id
         _reply(ag, reply)
     elif perf == "askHow":
-        trigger = _trigger_of(ag, content)
+        trigger = trigger_of(content)
         if trigger is None:
             ag.warn(f"askHow from {msg.sender}: not a trigger: {term_str(content)}")
             return
-        plans = [
-            PlanTerm(p, str(p).rstrip("."))
-            for p in ag.relevant_plans(trigger)
-            if p.label is None or not p.label.functor.startswith("kqmlReceived")
-        ]
+        plans = plan_terms(ag, trigger)
         reply = Message(ag.name, msg.sender, "tellHow", make_list(plans), f"mid{next(_msg_ids)}")
         reply.in_reply_to = msg.msg_id
         _reply(ag, reply)

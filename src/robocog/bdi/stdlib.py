@@ -732,6 +732,39 @@ def _remove_plan(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool
     return True
 
 
+@internal("relevant_plans")
+def _relevant_plans(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
+    """``.relevant_plans(Trigger, Plans[, Labels])``: the plans whose trigger unifies
+    with ``Trigger`` (a plan term ``{+!g}`` or its text), as plan terms, and their labels."""
+    from robocog.bdi.messages import plan_terms, trigger_of
+
+    _need(args, 2, "relevant_plans", 3)
+    trigger = trigger_of(resolve(args[0], s))
+    if trigger is None:
+        raise ActionError('.relevant_plans expects a trigger like {+!g} or "+!g"')
+    plans = plan_terms(ag, trigger)
+    if not unify(args[1], make_list(plans), s, trail):
+        return False
+    if len(args) > 2:
+        labels = [p.plan.label for p in plans if p.plan.label is not None]
+        return unify(args[2], make_list(labels), s, trail)
+    return True
+
+
+@internal("plan_label")
+def _plan_label(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
+    """``.plan_label(Plan, Label)``: the plan term of the plan labelled ``Label``."""
+    from robocog.bdi.terms import PlanTerm
+
+    _need(args, 2, "plan_label", 2)
+    label = resolve(args[1], s)
+    name = label.functor if label.__class__ is Literal else str(label).lstrip("@")
+    plan = ag.pl.get(name)
+    if plan is None:
+        return False
+    return unify(args[0], PlanTerm(plan, str(plan).rstrip(".")), s, trail)
+
+
 # ---------------------------------------------------------------- communication
 @internal("send")
 def _send(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Any:
