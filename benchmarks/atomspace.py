@@ -9,7 +9,7 @@ Both stores get the same 10,000 facts: 7,500 ``on(X, Y)`` and 2,500 ``clear(X)``
 - ``join-last``:  on(?x, ?y), on(?y, B)  two clauses joined, bound at the last end
 
 robocog answers through ``query()`` (a list of {variable: atom}) and through GetLink
-execution; hyperon through ``GroundingSpace.query`` (a BindingsSet, read out to a list).
+execution (the SetLink of answers built and added to the space, as ``cog-execute!`` does); hyperon through ``GroundingSpace.query`` (a BindingsSet, read out to a list).
 "cold" rounds empty every matcher cache first; these four query shapes take the fast
 path (``query`` itself and robocog.atomspace.fastpath), which reads the pattern as it
 stands and compiles nothing, so cold and compiled agree.

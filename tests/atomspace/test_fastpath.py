@@ -7,7 +7,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from robocog.atomspace import AtomSpace, Link, Node, query
-from robocog.atomspace.fastpath import fast_query
+from robocog.atomspace.fastpath import fast_query, get_set
 from robocog.atomspace.matcher import Pattern
 
 from .conftest import C, P, V
@@ -188,6 +188,25 @@ def test_getlink_lists_the_variables_in_order_of_appearance(space: AtomSpace, bo
         for b in Pattern(pattern).groundings(space)
     ]
     assert space.execute(Link("GetLink", pattern)) == Link("SetLink", *expected)
+    members = get_set(space, pattern)  # the members without dicts, already in order
+    if members is not None:
+        assert tuple(members) == Link("SetLink", *expected)[1]
+
+
+def test_getlink_members_come_straight_from_the_index() -> None:
+    s = AtomSpace()
+    for x, y in [("a", "b"), ("b", "c"), ("a", "c"), ("c", "a"), ("b", "b")]:
+        s.add(rel(P("on"), C(x), C(y)))
+    x, y, _z = VARS
+    assert get_set(s, rel(P("on"), C("a"), y)) == [C("b"), C("c")]
+    # joined: an AndLink's clauses are sorted, so here $a appears first although the
+    # clause with the constant (on($b, c)) anchors the join and binds $b first
+    a, b = V("$a"), V("$b")
+    both = Link("AndLink", rel(P("on"), b, C("c")), rel(P("on"), a, b))
+    expected = [Link("ListLink", C(u), C(w)) for u, w in [("a", "b"), ("b", "b"), ("c", "a")]]
+    assert get_set(s, both) == expected
+    assert s.execute(Link("GetLink", both)) == Link("SetLink", *expected)
+    assert get_set(s, Link("InheritanceLink", x, C("a"))) is None  # not a relation: dicts
 
 
 def test_two_joined_relations_by_hand() -> None:

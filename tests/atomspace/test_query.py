@@ -64,6 +64,22 @@ def test_get_single_variable_returns_the_atoms(animals: AtomSpace) -> None:
     assert r == S(C("cat"), C("dog"), Node("PredicateNode", "has-fur"))
 
 
+def test_execute_puts_the_result_in_the_space_and_query_does_not(animals: AtomSpace) -> None:
+    # cog-execute! of 2021 adds what a GetLink returns; the next query sees its ListLinks
+    body = read_atom('(Inheritance (Variable "$x") (Variable "$c"))')
+    before = len(animals)
+    assert len(query(animals, body)) == 4
+    assert len(animals) == before
+    r = run(
+        animals,
+        """(Get (VariableList (Variable "$c") (Variable "$x"))
+                (Inheritance (Variable "$x") (Variable "$c")))""",
+    )
+    assert animals.contains(r) and animals.contains(L(C("animal"), C("cat")))
+    lists = query(animals, read_atom('(List (Concept "animal") (Variable "$y"))'))
+    assert len(lists) == 3
+
+
 def test_typed_variable_restricts_groundings(animals: AtomSpace) -> None:
     r = run(
         animals,

@@ -14,8 +14,9 @@
 
 Grounded names are ``py:NAME``; ``scm:NAME`` (the thesis's spelling) is read the same
 way. Only functions registered from Python are ever called: an unregistered name is an
-error, never an import or an eval. The result sets are returned, not added to the space,
-so that running a query does not change the state it was asked about.
+error, never an import or an eval. As ``cog-execute!`` does, ``execute`` adds a query's
+result (the SetLink of a GetLink or a BindLink) to the space, so a later query can find
+it; ``query()`` and ``space.groundings`` only answer and leave the space as it was.
 """
 
 from __future__ import annotations
@@ -24,6 +25,7 @@ from typing import TYPE_CHECKING, Any
 
 from robocog.atomspace import types as _t
 from robocog.atomspace.atoms import Atom, Link, Node, _raw_link, variables_of
+from robocog.atomspace.fastpath import get_set
 from robocog.atomspace.matcher import (
     PatternError,
     compile_pattern,
@@ -77,7 +79,29 @@ def _executable(atom: Atom) -> bool:
 
 
 def execute(space: AtomSpace, atom: Atom) -> Any:
-    """Execute ``atom`` in ``space`` (see the module doc for what each type returns)."""
+    """Execute ``atom`` in ``space`` as ``cog-execute!`` does (see the module doc for what
+    each type returns); an atom it returns is in the space afterwards."""
+    t = atom[0]
+    if t == "GetLink" and len(atom[1]) == 1 and not _defines_or_variables(space):
+        # the shapes a robot asks most, answered as atoms without a dict per grounding
+        members = get_set(space, atom[1][0])
+        if members is not None:
+            return space.add(tuple.__new__(Link, ("SetLink", tuple(members))))
+    result = _run(space, atom)
+    if result.__class__ is Link and t in _t.QUERY_TYPES:
+        return space.add(result)
+    return result
+
+
+def _defines_or_variables(space: AtomSpace) -> bool:
+    """True when a query's body may need expanding (DefineLinks) or its groundings
+    filtering (VariableNodes in the space may ground a variable to itself)."""
+    return bool(space.count_type("DefineLink") or space.count_type("VariableNode"))
+
+
+def _run(space: AtomSpace, atom: Atom) -> Any:
+    """Execute ``atom``; a query's result is returned without being added (a query inside
+    an ExecutionOutputLink's arguments or an EqualLink is an intermediate value)."""
     t = atom[0]
     if t in _t.QUERY_TYPES:
         return run_query(space, atom)
@@ -124,7 +148,7 @@ def _execution_output(space: AtomSpace, atom: Atom) -> Any:
     out = atom[1]
     if len(out) != 2 or out[0][0] != "GroundedSchemaNode":
         raise GroundedError(f"ExecutionOutputLink needs a GroundedSchemaNode and arguments: {atom}")
-    args = tuple(execute(space, a) if _executable(a) else a for a in _arguments(out[1]))
+    args = tuple(_run(space, a) if _executable(a) else a for a in _arguments(out[1]))
     result = call_grounded(space, out[0], args)
     if isinstance(result, Atom):
         return space.add(result)
@@ -272,7 +296,7 @@ def evaluate(space: AtomSpace, atom: Atom) -> TruthValue:
     t = atom[0]
     out = atom[1]
     if t in ("EqualLink", "IdenticalLink"):
-        vals = [execute(space, a) if t == "EqualLink" and _executable(a) else a for a in out]
+        vals = [_run(space, a) if t == "EqualLink" and _executable(a) else a for a in out]
         return TRUE_TV if all(v == vals[0] for v in vals[1:]) else FALSE_TV
     if t == "NotLink":
         if len(out) != 1:
@@ -289,7 +313,7 @@ def evaluate(space: AtomSpace, atom: Atom) -> TruthValue:
     if t == "GreaterThanLink":
         if len(out) != 2:
             raise PatternError("GreaterThanLink takes two numbers")
-        x, y = (execute(space, a) if _executable(a) else a for a in out)
+        x, y = (_run(space, a) if _executable(a) else a for a in out)
         return TRUE_TV if _number(x) > _number(y) else FALSE_TV
     if t == "SatisfactionLink":
         return run_query(space, atom)

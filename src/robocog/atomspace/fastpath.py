@@ -356,10 +356,11 @@ def _pair_clause(clause: Atom) -> tuple | None:
     return typ, c, itype, leaves, len(leaves)
 
 
-def _two(rel_get, p: Atom, q: Atom) -> list[Bindings] | None:  # noqa: ANN001, C901
+def _two(rel_get, p: Atom, q: Atom, atoms: bool = False) -> list | None:  # noqa: ANN001, C901
     """Every grounding of ``(AndLink p q)`` when p and q are clauses ``(R c (L a0 a1))``
     with node leaves joined by a variable, such as ``on(B, ?y), on(?y, ?z)``; None for
     any other shape (then :func:`_pair_join` or the general matcher answers).
+    With ``atoms``, each grounding is given as a GetLink gives it (see :func:`get_set`).
 
     The rarest known leaf anchors one clause; each atom that gives the variable at that
     clause's other end is looked up in the other clause. The two clauses are read here
@@ -435,20 +436,63 @@ def _two(rel_get, p: Atom, q: Atom) -> list[Bindings] | None:  # noqa: ANN001, C
         j, w = 1, b0
     else:
         return None  # no shared variable: a product, left to _pair_join
-    found: list[Bindings] = []
+    found: list = []
     if w[0] != "VariableNode" or w == v:
         # w is known: a constant, or v again
         for x in best:
             s = rel_get((x, j, c, typ, itype, 2))
             if s is not None and (x if w == v else w) in s:
-                found.append({v: x})
+                found.append(x if atoms else {v: x})
         return found
+    if not atoms:
+        for x in best:
+            s = rel_get((x, j, c, typ, itype, 2))
+            if s is not None:
+                for z in s:
+                    found.append({v: x, w: z})
+        return found
+    # a ListLink in the order the variables first appear in the body, in the SetLink's
+    # order: the pairs are sorted before they become links, as comparing plain pairs
+    # costs two thirds of comparing the links
     for x in best:
         s = rel_get((x, j, c, typ, itype, 2))
         if s is not None:
             for z in s:
-                found.append({v: x, w: z})
-    return found
+                found.append((x, z))
+    if next(a for a in (p0, p1, q0, q1) if a == v or a == w) != v:
+        found = [(z, x) for x, z in found]
+    found.sort()
+    new = tuple.__new__
+    return [new(Link, ("ListLink", pair)) for pair in found]
+
+
+def get_set(space: AtomSpace, body: Atom) -> list[Atom] | None:
+    """The members of the SetLink a GetLink of ``body`` (no declaration) returns, in the
+    SetLink's order, read straight off the relation index for the two shapes asked most: one relation
+    with one leaf known and one variable, and two such relations joined by a variable
+    (a ListLink of the two variables in order of appearance). None for anything else,
+    which then goes through the groundings as dicts."""
+    if body.__class__ is not Link or space._parent is not None:
+        return None
+    if body[0] == "AndLink":
+        out = body[1]
+        if len(out) != 2:
+            return None
+        found = _two(space._relations.get, out[0], out[1], True)
+        if found is not None and found and found[0].__class__ is Node:
+            found.sort()  # one variable (the other end a constant): atoms, not pairs
+        return found
+    pc = _pair_clause(body)
+    if pc is None or pc[4] != 2:
+        return None
+    a0, a1 = pc[3]
+    if (a0[0] == _VAR) == (a1[0] == _VAR):
+        return None  # both leaves known, or both asked: the general answer
+    typ, c, itype = pc[0], pc[1], pc[2]
+    best = space._relations.get(
+        (a1, 1, c, typ, itype, 2) if a0[0] == _VAR else (a0, 0, c, typ, itype, 2)
+    )
+    return [] if best is None else sorted(best)
 
 
 def _pair_one(rel_get, clause: tuple) -> list[Bindings] | None:  # noqa: ANN001
