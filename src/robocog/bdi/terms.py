@@ -426,9 +426,16 @@ class _Key:
         return compare(self.t, other.t) < 0
 
 
-def sort_key(t: Term) -> _Key:
-    """A key for ``sorted`` that follows :func:`compare`."""
-    return _Key(t)
+def sort_key(t: Term) -> tuple:
+    """A key for ``sorted`` that follows :func:`compare`: (kind, the number or string
+    itself) for numbers and strings, which Python then compares in C, and (kind, a key
+    calling :func:`compare`) for the rest; kinds are compared first, so the two never meet."""
+    c = t.__class__
+    if c is int or c is float:
+        return (0, t)
+    if c is str:
+        return (1, t)
+    return (_kind(t), _Key(t))
 
 
 def sort_annots(annots: Iterable[Term]) -> tuple:
