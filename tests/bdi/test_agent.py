@@ -282,3 +282,53 @@ def test_wait_for_a_condition_and_timeouts() -> None:
 -!a[error(E)] <- .print(timeout, E).
 +!b <- for (.range(I, 1, 4)) { -+n(I) }."""
     assert run(src) == ["a3", "waited100", "timeoutia_failed"]
+
+
+# ---- fork-join (the orders below are those Jason 3.3 prints for the same programs)
+def test_fork_and_interleaves_the_branches_and_waits_for_both() -> None:
+    src = """!start.
++!start <- .print(begin); !a |&| !b; .print(both_done); !c ||| !d; .print(one_done).
++!a <- .print(a1); .print(a2); .print(a3).
++!b <- .print(b1).
++!c <- .print(c1); .print(c2); .print(c3).
++!d <- .print(d1)."""
+    assert run(src) == [
+        "begin", "a1", "b1", "a2", "a3", "both_done", "c1", "d1", "c2", "one_done",
+    ]  # fmt: skip
+
+
+def test_fork_branches_keep_their_own_bindings_and_the_last_goes_on() -> None:
+    src = """!g.
++!g <- !v(A) |&| !w(B); .print(after, A, B).
++!v(5) <- .print(v).
++!w(7) <- .print(w1); .print(w2)."""
+    # the branch of !w arrives last at the join: its bindings go on, A stays unbound
+    out = run(src)
+    assert out[:3] == ["v", "w1", "w2"]
+    assert out[3].startswith("after") and out[3].endswith("7") and "5" not in out[3]
+
+
+def test_a_failing_branch_of_fork_and_drops_the_other_and_fails_the_goal() -> None:
+    src = """!g3.
++!g3 <- !ok |&| !bad; .print(never).
+-!g3 <- .print(g3_failed).
++!ok <- .print(ok1); .print(ok2); .print(ok3).
++!bad <- .print(bad1); .fail."""
+    assert run(src) == ["ok1", "bad1", "ok2", "g3_failed"]
+
+
+def test_a_failing_branch_of_fork_or_leaves_the_other_to_finish() -> None:
+    warned: list[str] = []
+    src = """!g4.
++!g4 <- !bad ||| !slow; .print(after).
++!bad <- .fail.
++!slow <- .print(s1); .print(s2)."""
+    out = run(src, warn=lambda n, t: warned.append(t))
+    assert out == ["s1", "s2", "after"]
+    assert any("|||" in w for w in warned)
+
+
+def test_fork_operators_nest_as_in_jason() -> None:
+    # |&| binds tighter than |||: a ||| (b |&| c); Jason runs "after" twice here too
+    src = "!g.\n+!g <- .print(a) ||| .print(b) |&| .print(c); .print(after)."
+    assert run(src) == ["a", "b", "c", "after", "after"]

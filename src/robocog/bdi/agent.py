@@ -34,6 +34,7 @@ from robocog.bdi.beliefs import BeliefBase
 from robocog.bdi.circumstance import (
     Circumstance,
     Event,
+    Fork,
     IntendedMeans,
     Intention,
     new_event,
@@ -65,8 +66,10 @@ from robocog.bdi.plans import (
     DEL_BEL_NF,
     FOR,
     FOR_NEXT,
+    FORK,
     IF,
     INTERNAL,
+    JOIN,
     TEST,
     TEST_STEP,
     WHILE,
@@ -819,6 +822,8 @@ class Agent:
         """Make the current goal of ``i`` fail (Jason's ``generateGoalDeletion``)."""
         if not i.stack:
             return
+        if i.fork is not None and self._fork_failure(i):
+            return
         im = i.stack[-1]
         ev = self._failure_event(i, im.trigger)
         if ev is None:
@@ -1126,6 +1131,10 @@ class Agent:
                 self._while_step(i, im, step)
             elif k == FOR or k == FOR_NEXT:
                 self._for_step(i, im, step)
+            elif k == FORK:
+                self._fork_step(i, im, step)
+            elif k == JOIN:
+                self._join_step(i, step)
             else:
                 raise ActionError(f"cannot execute {step!r}")
         except ActionError as exc:
@@ -1139,6 +1148,65 @@ class Agent:
             self.fail_intention(i, "ia_failed", str(exc))
 
     # ---- body formulas
+    def _fork_step(self, i: Intention, im: IntendedMeans, step: P.Step) -> None:
+        """Jason's ``.fork``: each branch goes on as an intention of its own, a copy of
+        ``i`` whose plan runs the branch, then a join, then what followed the fork; ``i``
+        itself is done. The branches share the intended means below the forking one
+        (only one branch ever returns into them) and each has its own bindings."""
+        fork = Fork(step.term == "and")
+        rest = im.cur[1]
+        below = i.stack[:-1]
+        for branch in step.blocks:
+            join = P.Step(JOIN, None, line=step.line, state=fork)
+            b = Intention()
+            top = new_im(im.plan, im.trigger, dict(im.s), P.prepend(branch, (join, rest)))
+            top.ret = im.ret
+            b.stack = [*below, top]
+            b.fork = (fork, len(i.stack))
+            fork.branches.append(b)
+            fork.to_finish += 1
+        i.stack = []
+        for b in fork.branches:
+            self._requeue(b)
+
+    def _join_step(self, i: Intention, step: P.Step) -> None:
+        """Jason's ``.join``: with ``|&|`` the last branch to arrive goes on and the
+        others end here; with ``|||`` the first goes on and the others are dropped."""
+        fork = step.state
+        assert isinstance(fork, Fork)
+        fork.to_finish -= 1
+        if fork.both:
+            if fork.to_finish == 0:
+                self._advance(i)
+            return
+        for b in fork.branches:
+            if b is not i:
+                self._drop(b)
+        fork.branches = [i]
+        self._advance(i)
+
+    def _fork_failure(self, i: Intention) -> bool:
+        """What a failure in a branch does to its fork; True when the failure ends there
+        (a branch of ``|||`` failing below its own goals: the others go on). A failure
+        handled in the branch's own subgoals is the branch's affair."""
+        fork, point = i.fork or (None, 0)
+        assert fork is not None
+        for im in i.stack[point:]:
+            t = im.trigger
+            if t.kind != BELIEF and self.pl.has_candidate(P.Trigger("-", t.kind, t.literal)):
+                return False
+        if fork.both:
+            for b in fork.branches:
+                if b is not i:
+                    self._drop(b)
+            fork.branches = [i]
+            i.fork = None
+            return False
+        fork.branches = [b for b in fork.branches if b is not i]
+        self.warn(f"no failure event was generated for {i.stack[-1].trigger!r} (a branch of |||)")
+        self._drop(i)
+        return True
+
     def _add_belief_step(self, i: Intention, step: P.Step, s: dict) -> None:
         lit = resolve(_sourced(step), s, {})
         if lit.__class__ is not Literal:

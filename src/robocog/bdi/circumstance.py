@@ -73,12 +73,15 @@ def new_im(plan: Plan, trigger: Trigger, s: dict, cur: Chain) -> IntendedMeans:
 class Intention:
     """A stack of intended means; the top is the one that runs."""
 
-    __slots__ = ("id", "stack", "dropped")
+    __slots__ = ("id", "stack", "dropped", "fork")
 
     def __init__(self) -> None:
         self.id = next(_intention_ids)
         self.stack: list[IntendedMeans] = []
         self.dropped = False
+        #: for a branch of a fork (``|&|``, ``|||``): (the fork, the size of the stack
+        #: up to the intended means that forked)
+        self.fork: tuple[Fork, int] | None = None
 
     def top(self) -> IntendedMeans:
         """The intended means that runs next."""
@@ -89,6 +92,17 @@ class Intention:
 
     def __repr__(self) -> str:
         return f"<intention {self.id}: {' / '.join(repr(im.trigger) for im in self.stack)}>"
+
+
+class Fork:
+    """The branches of one ``|&|`` or ``|||`` and how many are still to finish."""
+
+    __slots__ = ("both", "branches", "to_finish")
+
+    def __init__(self, both: bool) -> None:
+        self.both = both
+        self.branches: list[Intention] = []
+        self.to_finish = 0
 
 
 class Circumstance:

@@ -224,6 +224,19 @@ class _Builder(Transformer):
         return self._step(P.CONSTRAINT, meta, t)
 
     @v_args(meta=True)
+    def fork_and(self, meta: Meta, items: list) -> P.Step:
+        return self._fork("and", meta, items)
+
+    @v_args(meta=True)
+    def fork_or(self, meta: Meta, items: list) -> P.Step:
+        return self._fork("or", meta, items)
+
+    def _fork(self, how: str, meta: Meta, items: list) -> P.Step:
+        line = meta.line if not getattr(meta, "empty", True) else 0
+        branches = tuple(None if st is None else (st, None) for st in items)
+        return P.Step(P.FORK, how, branches, line=line)
+
+    @v_args(meta=True)
     def if_stmt(self, meta: Meta, items: list) -> P.Step:
         cond, then = items[0], items[1]
         branches = [(cond, then)]

@@ -70,6 +70,10 @@ WHILE = 14
 FOR = 15
 WHILE_AGAIN = 16
 FOR_NEXT = 17
+#: ``a |&| b`` and ``a ||| b``: the term is ``"and"`` or ``"or"``, each block a branch
+FORK = 18
+#: where a branch of a fork ends (added when the fork runs; ``state`` is the fork)
+JOIN = 19
 
 _PREFIX = {
     ACHIEVE_STEP: "!",
@@ -120,6 +124,11 @@ class Step:
             return f"while ({term_str(self.term)}) {{ ... }}"
         if self.kind in (FOR, FOR_NEXT):
             return f"for ({term_str(self.term)}) {{ ... }}"
+        if self.kind == FORK:
+            op = " |&| " if self.term == "and" else " ||| "
+            return op.join("; ".join(map(repr, chain_steps(b))) or "true" for b in self.blocks)
+        if self.kind == JOIN:
+            return ".join"
         return term_str(self.term)
 
 
