@@ -332,3 +332,20 @@ def test_fork_operators_nest_as_in_jason() -> None:
     # |&| binds tighter than |||: a ||| (b |&| c); Jason runs "after" twice here too
     src = "!g.\n+!g <- .print(a) ||| .print(b) |&| .print(c); .print(after)."
     assert run(src) == ["a", "b", "c", "after", "after"]
+
+
+def test_printing_univ_and_true_as_jason_3_3() -> None:
+    src = """!s.
++!s <- true; T = p(X + 1, Y < 2, Y \\== a, Z =.. W); .print(T);
+  p(1)[x] =.. L; .print(L); Q =.. [default, q, [1], [b]]; .print(Q); R =.. [r, [2], []]; .print(R);
+  true.
+-!s[error(E), error_msg(M), noenv] <- .print(E, " ", M)."""
+    # relational expressions with spaces, arithmetic without; =.. with the namespace
+    # first; a `true` that is not first in the body is an (environment) action
+    assert run(src) == [
+        "p((X+1),(Y < 2),(Y \\\\== a),(Z =.. W))".replace("\\\\", "\\"),
+        "[default,p,[1],[x]]",
+        "q(1)[b]",
+        "r(2)",
+        "action_failed no environment configured!",
+    ]

@@ -893,7 +893,8 @@ class Agent:
             else:
                 self.C.running.append(i)
         else:
-            self.fail_intention(i, "action_failed", reason)
+            noenv = (Literal("noenv"),) if reason == NO_ENVIRONMENT else ()
+            self.fail_intention(i, "action_failed", reason, noenv)
 
     def execute_action(self, action: Literal) -> Any:
         """Run an environment action; override to plug in an environment object."""
@@ -901,6 +902,8 @@ class Agent:
         if entry is None:
             if self.mas is not None and self.mas.environment is not None:
                 return self.mas.environment(self.name, action)
+            if not self._actions:
+                raise ActionError(NO_ENVIRONMENT)  # Jason's words, when there is none
             raise ActionError(f"no environment action {action.functor}/{len(action.args)}")
         fn, raw = entry
         if raw:
@@ -1563,6 +1566,10 @@ def _propagate(val: Term, chain: tuple | None) -> Term:
         unify(step_term, val, s2, [])
         val = resolve(trig_lit, s2)
     return val
+
+
+#: why an environment action fails in an agent that has no environment at all
+NO_ENVIRONMENT = "no environment configured!"
 
 
 def _default_printer(name: str, text: str) -> None:

@@ -373,16 +373,26 @@ def _equal(a: Term, b: Term, s: dict) -> bool:
     return a == b
 
 
+#: the namespace of every literal (Jason's ``default``)
+DEFAULT_NS = Literal("default")
+
+
 def _univ(left: Term, right: Term, s: dict, trail: list) -> bool:
     from robocog.bdi.terms import NIL, Cons, iter_list, make_list
 
     left = resolve(left, s)
     if left.__class__ is Literal:
-        parts = make_list([Literal(left.functor), make_list(left.args), make_list(left.annots)])
+        # Jason 3.3: [namespace, functor, args, annotations]; robocog has the default
+        # namespace only
+        parts = make_list(
+            [DEFAULT_NS, Literal(left.functor), make_list(left.args), make_list(left.annots)]
+        )
         return unify(parts, right, s, trail)
     right = resolve(right, s)
     if right.__class__ is Cons:
         items = list(iter_list(right))
+        if len(items) == 4 and items[0] == DEFAULT_NS:
+            items = items[1:]  # the namespace first, as Jason 3.3 writes it
         if not items or items[0].__class__ is not Literal:
             return False
         args = tuple(iter_list(items[1])) if len(items) > 1 else ()

@@ -147,7 +147,10 @@ class _Builder(Transformer):
         return ("context", ctx)
 
     def plan_body(self, items: list) -> tuple:
-        return ("body", items[0])
+        body = items[0]
+        if body is not None and body[0].kind == P.ACTION and _is_true(body[0].term):
+            body = body[1]  # a plan body's first ``true`` is no formula, as in Jason
+        return ("body", body)
 
     def trigger(self, items: list) -> P.Trigger:
         op = items[0]
@@ -215,8 +218,8 @@ class _Builder(Transformer):
         t = items[0]
         c = t.__class__
         if c is Literal:
-            if t.functor == "true" and not t.args and not t.neg:
-                return None
+            # ``true`` anywhere but first in a plan's body is an environment action,
+            # as Jason reads it
             kind = P.INTERNAL if t.functor.startswith(".") else P.ACTION
             return self._step(kind, meta, t)
         if c is Var:
@@ -399,6 +402,10 @@ class _Builder(Transformer):
 
     def list_items(self, items: list) -> list:
         return items
+
+
+def _is_true(t: Term) -> bool:
+    return t.__class__ is Literal and t.functor == "true" and not t.args and not t.neg
 
 
 _GRAMMAR = Path(__file__).with_name("agentspeak.lark")

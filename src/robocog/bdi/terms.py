@@ -578,7 +578,7 @@ def _write(t: Term, out: list[str]) -> None:
     elif c is Rel:
         out.append("(")
         _write(t.left, out)
-        out.append(t.op)
+        out.append(f" {t.op} ")
         _write(t.right, out)
         out.append(")")
     elif c is And:
