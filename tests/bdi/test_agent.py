@@ -349,3 +349,25 @@ def test_printing_univ_and_true_as_jason_3_3() -> None:
         "r(2)",
         "action_failed no environment configured!",
     ]
+
+
+def test_annotation_lists_with_a_tail() -> None:
+    # the outputs Jason 3.3 prints for the same program
+    src = """b(1)[x,y].
+!s.
++!s <- +b(2)[z]; ?b(1)[A|T]; .print(A, " ", T); ?b(1)[x|T2]; .print(T2);
+  ?b(2)[source(S)|R]; .print(S, " ", R);
+  .findall(Ts, b(_)[_|Ts], L); .print(L);
+  X = q(1)[a|Tl]; Tl = [c,b]; .print(X);
+  !g(5)[u, v]; !h[w].
++!g(N)[source(S)|Rest] <- .print(g, N, " ", S, " ", Rest).
++!h[A|B] <- .print(h, " ", A, " ", B)."""
+    assert run(src) == [
+        "source(self) [x,y]",
+        "[source(self),y]",
+        "self [z]",
+        "[[z],[x,y]]",
+        "q(1)[a,b,c]",
+        "g5 self [u,v]",
+        "h source(self) [w]",
+    ]

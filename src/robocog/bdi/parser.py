@@ -23,6 +23,7 @@ from robocog.bdi import plans as P
 from robocog.bdi.terms import (
     NIL,
     And,
+    AnnotTail,
     Arith,
     Body,
     Cons,
@@ -385,6 +386,10 @@ class _Builder(Transformer):
 
     def args(self, items: list) -> tuple:
         return ("args", tuple(x for x in items if x is not None))
+
+    def annot_tail(self, items: list) -> AnnotTail:
+        name = str(items[0])
+        return AnnotTail(Var("_") if name == "_" else self._var(name))
 
     def annots(self, items: list) -> tuple:
         return ("annots", tuple(x for x in items if x is not None))

@@ -438,14 +438,40 @@ def sort_key(t: Term) -> tuple:
     return (_kind(t), _Key(t))
 
 
+class AnnotTail:
+    """The ``|T`` ending a pattern's annotations (``p[a|T]``): matched against a literal,
+    ``T`` takes the list of the annotations the pattern's others leave. It is always
+    the last of a literal's annotations."""
+
+    __slots__ = ("var",)
+    ground = False
+
+    def __init__(self, var: Term) -> None:
+        self.var = var
+
+    def __eq__(self, other: object) -> bool:
+        return other.__class__ is AnnotTail and other.var == self.var  # type: ignore[attr-defined]
+
+    def __hash__(self) -> int:
+        return hash(("|", self.var))
+
+    def __repr__(self) -> str:
+        return "|" + term_str(self.var)
+
+
 def sort_annots(annots: Iterable[Term]) -> tuple:
-    """Annotations in Jason's order, without duplicates."""
+    """Annotations in Jason's order, without duplicates (a tail ``|T`` last)."""
     seen: list[Term] = []
+    tail = None
     for a in annots:
-        if a not in seen:
+        if a.__class__ is AnnotTail:
+            tail = a
+        elif a not in seen:
             seen.append(a)
     if len(seen) > 1:
         seen.sort(key=_Key)
+    if tail is not None:
+        seen.append(tail)
     return tuple(seen)
 
 
@@ -538,7 +564,10 @@ def _write(t: Term, out: list[str]) -> None:
             out.append("[")
             first = True
             for a in t.annots:
-                if not first:
+                if a.__class__ is AnnotTail:
+                    out.append("|")
+                    a = a.var
+                elif not first:
                     out.append(",")
                 first = False
                 _write(a, out)

@@ -19,7 +19,9 @@ from collections.abc import Iterator
 
 from robocog.bdi.context import running
 from robocog.bdi.terms import (
+    NIL,
     And,
+    AnnotTail,
     Arith,
     Body,
     Cons,
@@ -143,6 +145,8 @@ def unify(a: Term, b: Term, s: dict, trail: list) -> bool:
 
 def annots_subset(aa: tuple, ba: tuple, s: dict, trail: list) -> bool:
     """Jason's rule for annotations: each of ``aa`` unifies with one of ``ba``."""
+    if aa[-1].__class__ is AnnotTail:
+        return _with_tail(aa, ba, s, trail)
     for x in aa:
         for y in ba:
             mark = len(trail)
@@ -154,9 +158,57 @@ def annots_subset(aa: tuple, ba: tuple, s: dict, trail: list) -> bool:
     return True
 
 
+def _with_tail(aa: tuple, ba: tuple, s: dict, trail: list) -> bool:
+    """``aa`` ends with a tail ``|T``: each of its other annotations takes the first of
+    ``ba`` it unifies with that no other took (constants sort before variables, so
+    they choose first), and ``T`` unifies with the list of those left, in order."""
+    used = [False] * len(ba)
+    for x in aa[:-1]:
+        for j, y in enumerate(ba):
+            if used[j] or y.__class__ is AnnotTail:
+                continue
+            mark = len(trail)
+            if unify(x, y, s, trail):
+                used[j] = True
+                break
+            undo(s, trail, mark)
+        else:
+            return False
+    rest: Term = NIL
+    for j in range(len(ba) - 1, -1, -1):
+        if not used[j] and ba[j].__class__ is not AnnotTail:
+            rest = Cons(ba[j], rest)
+    return unify(aa[-1].var, rest, s, trail)
+
+
+def resolve_annots(annots: tuple, s: dict, fresh: dict | None) -> tuple:
+    """``annots`` under ``s``: a tail bound to a list gives its elements, sorted in."""
+    out = []
+    for a in annots:
+        if a.__class__ is AnnotTail:
+            v = resolve(a.var, s, fresh)
+            if v.__class__ is Cons or v.__class__ is Nil:
+                while v.__class__ is Cons:
+                    out.append(v.head)
+                    v = v.tail
+                if v.__class__ is not Nil:
+                    out.append(AnnotTail(v))
+            else:
+                out.append(AnnotTail(v))
+        else:
+            out.append(resolve(a, s, fresh))
+    return sort_annots(out)
+
+
 def annots_ways(aa: tuple, ba: tuple, s: dict, trail: list, k: int = 0) -> Iterator[None]:
     """Each way every annotation of ``aa`` unifies with one of ``ba`` (bindings in ``s``,
     undone between ways): the backtracking form of :func:`annots_subset`."""
+    if k == 0 and aa and aa[-1].__class__ is AnnotTail:
+        mark = len(trail)
+        if _with_tail(aa, ba, s, trail):
+            yield None
+        undo(s, trail, mark)
+        return
     if k == len(aa):
         yield None
         return
@@ -261,7 +313,7 @@ def resolve(t: Term, s: dict, fresh: dict | None = None) -> Term:
                 out.ground = ground
                 out._hash = None
                 return out
-            annots = sort_annots([resolve(a, s, fresh) for a in annots])
+            annots = resolve_annots(annots, s, fresh)
             if ground:
                 for a in annots:
                     if not is_ground(a):
@@ -547,7 +599,14 @@ def rename(t: Term, mapping: dict) -> Term:
         return Literal(
             t.functor,
             tuple([rename(a, mapping) for a in t.args]),
-            tuple([rename(a, mapping) for a in t.annots]),
+            tuple(
+                [
+                    AnnotTail(rename(a.var, mapping))
+                    if a.__class__ is AnnotTail
+                    else rename(a, mapping)
+                    for a in t.annots
+                ]
+            ),
             t.neg,
         )
     if c is Cons:
@@ -582,7 +641,7 @@ def variables(t: Term, out: list | None = None) -> list:
             for a in t.args:
                 variables(a, out)
             for a in t.annots:
-                variables(a, out)
+                variables(a.var if a.__class__ is AnnotTail else a, out)
     elif c is Cons:
         while t.__class__ is Cons:
             variables(t.head, out)
