@@ -371,3 +371,13 @@ def test_annotation_lists_with_a_tail() -> None:
         "g5 self [u,v]",
         "h source(self) [w]",
     ]
+
+
+def test_a_failure_plan_after_fail_goal_of_the_last_formula_runs_once() -> None:
+    src = """!v.
++!v <- .fail_goal(v).
+-!v <- .print(v_failed); !w.
++!w <- !w2.
++!w2 <- .fail.
+-!w <- .print(w_failed)."""
+    assert run(src, 2_000) == ["v_failed", "w_failed"]

@@ -43,7 +43,7 @@ def out(body: str, beliefs: str = "") -> list[str]:
         (".nth(5, [a], X)", "failedia_failed"),
         (".max([], X)", "failedia_failed"),
         (".length(a, N)", "failedia_failed"),
-        (".nosuch(1)", "failedia_failed"),
+        (".nosuch(1)", "failedaction_failed"),  # to the environment, as in Jason
         (".fail(error(custom))", "failedcustom"),
         ('X = 5; .puts("x=#{X}, f=#{f(X)}")', "x=5, f=f(5)"),
         ('.printf("%d-%s-%.2f", 3, abc, 2.5)', "3-abc-2.50"),

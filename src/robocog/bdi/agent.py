@@ -40,7 +40,7 @@ from robocog.bdi.circumstance import (
     new_event,
     new_im,
 )
-from robocog.bdi.logic import ActionError, holds, solve, unknown_action
+from robocog.bdi.logic import NOT_SUPPORTED, ActionError, holds, solve, unknown_action
 from robocog.bdi.messages import Message, handle_message
 from robocog.bdi.parser import (
     ParseError,
@@ -962,17 +962,11 @@ class Agent:
                 # a failure plan finished: drop everything down to the failed goal
                 goal = resolve(trig.literal, top.s)
                 im = stack[-1]
-                if im.cur is None or not (
-                    im.cur[0].kind == ACHIEVE_STEP and _unifies(im.cur[0].term, goal, im.s)
-                ):
+                if not _awaits(im, goal):
                     im = stack.pop()
                 while stack and not (
                     (im.trigger.kind != BELIEF and _unifies(im.trigger.literal, goal, im.s))
-                    or (
-                        im.cur is not None
-                        and im.cur[0].kind == ACHIEVE_STEP
-                        and _unifies(im.cur[0].term, goal, im.s)
-                    )
+                    or _awaits(im, goal)
                 ):
                     im = stack.pop()
                 if stack:
@@ -1075,7 +1069,8 @@ class Agent:
                 if lit.functor[0] == ".":
                     fn = self._internal.get(lit.functor)
                     if fn is None:
-                        raise ActionError(unknown_action(lit))
+                        self._unknown_internal(i, lit)
+                        return
                     r = fn(self, lit.args, s, [], (i, im, step))
                     if r is False:
                         self.fail_intention(i, "ia_failed", "")
@@ -1092,7 +1087,8 @@ class Agent:
                 lit = step.term
                 fn = self._internal.get(lit.functor)
                 if fn is None:
-                    raise ActionError(unknown_action(lit))
+                    self._unknown_internal(i, resolve(lit, s))
+                    return
                 r = fn(self, lit.args, s, [], (i, im, step))
                 if r is True or r is None:
                     self._advance(i)
@@ -1151,6 +1147,15 @@ class Agent:
             self.fail_intention(i, "ia_failed", str(exc))
 
     # ---- body formulas
+    def _unknown_internal(self, i: Intention, lit: Literal) -> None:
+        """An internal action nobody defined goes to the environment, as in Jason (and
+        fails there with ``action_failed`` unless the environment knows it); one of
+        Jason's own that robocog lacks fails, saying so."""
+        if lit.functor in NOT_SUPPORTED:
+            raise ActionError(unknown_action(lit))
+        self.warn(f"{unknown_action(lit)}: handed to the environment, as Jason does")
+        self._act(i, lit)
+
     def _fork_step(self, i: Intention, im: IntendedMeans, step: P.Step) -> None:
         """Jason's ``.fork``: each branch goes on as an intention of its own, a copy of
         ``i`` whose plan runs the branch, then a join, then what followed the fork; ``i``
@@ -1548,6 +1553,15 @@ def _is_atomic(i: Intention) -> bool:
                 if a.__class__ is Literal and a.functor == "atomic":
                     return True
     return False
+
+
+def _awaits(im: IntendedMeans, goal: Term) -> bool:
+    """True when ``im`` stands at ``!goal`` (a step an internal action stepped over,
+    such as ``.fail_goal``, is None and awaits nothing)."""
+    cur = im.cur
+    if cur is None or cur[0] is None:
+        return False
+    return cur[0].kind == ACHIEVE_STEP and _unifies(cur[0].term, goal, im.s)
 
 
 def _unifies(a: Term, b: Term, s: dict) -> bool:
