@@ -57,3 +57,14 @@ def test_my_name_and_all_names() -> None:
     mas, out = _mas(x="!s.\n+!s <- .my_name(N); .all_names(L); .print(N, L).", y="")
     mas.run()
     assert out == ["x: x[x,y]"]
+
+
+def test_ask_all_answers_carry_the_beliefs_sources_nested_under_the_answerer() -> None:
+    # as Jason 3.3 prints it: b believes p(1) told by c; a asks b
+    mas, out = _mas(
+        c="!s.\n+!s <- .send(b, tell, p(1)).",
+        b="p(2)[x].",
+        a="!s.\n+!s <- .wait(50); .send(b, askAll, p(X), L); .print(L).",
+    )
+    mas.run()
+    assert out == ["a: [p(1)[source(b)[source(c)]],p(2)[source(b),x]]"]

@@ -20,12 +20,16 @@ from robocog.bdi.logic import ActionError, solve
 from robocog.bdi.signals import SUSPEND
 from robocog.bdi.terms import (
     FALSE,
+    SOURCE_SELF,
+    AnnotTail,
     Literal,
     PlanTerm,
     Term,
+    Var,
     is_list,
     iter_list,
     make_list,
+    sort_annots,
     source,
     term_str,
 )
@@ -114,10 +118,16 @@ def broadcast(ag: Agent, perf: Term, content: Term) -> None:
 
 
 def _with_sender(t: Term, sender: str) -> Term:
+    """``t`` as received from ``sender`` (Jason's ``.add_nested_source``): its sources
+    become annotations of ``source(sender)``, so ``p[source(a)]`` told by b is
+    ``p[source(b)[source(a)]]``."""
     if t.__class__ is Literal:
-        if any(a.__class__ is Literal and a.functor == "source" for a in t.annots):
-            return t
-        return t.add_annots((source(sender),))
+        olds = [a for a in t.annots if a.__class__ is Literal and a.functor == "source"]
+        if not olds:
+            return t.add_annots((source(sender),))
+        others = [a for a in t.annots if not (a.__class__ is Literal and a.functor == "source")]
+        nested = Literal("source", (Literal(sender),), sort_annots(olds))
+        return t.with_annots([*others, nested])
     return t
 
 
@@ -221,7 +231,7 @@ def handle_message(ag: Agent, msg: Message) -> None:
             # Jason adds a told list one belief per reasoning cycle (its default plans
             # recurse over the list), so each belief's event sees only those before it
             rest = Message(msg.sender, msg.receiver, perf, make_list(items[1:]), msg.msg_id)
-            ag.mailbox.appendleft(rest)
+            ag.mailbox.append(rest)
         for c in items[:1]:
             if c.__class__ is Literal:
                 lit = _with_sender(c, sender)
@@ -242,9 +252,22 @@ def handle_message(ag: Agent, msg: Message) -> None:
     elif perf in ("askOne", "askAll"):
         answers = []
         s: dict = {}
+        # askAll answers with each belief's annotations but source(self), as Jason's
+        # askAll plan does; askOne with the content as asked
+        pattern = content
+        tail = None
+        if perf == "askAll" and content.__class__ is Literal:
+            tail = Var("_LA")
+            pattern = Literal(
+                content.functor, content.args, (*content.annots, AnnotTail(tail)), content.neg
+            )
         try:
-            for _ in solve(ag, content, s, []):
-                answers.append(resolve(content, s, {}))
+            for _ in solve(ag, pattern, s, []):
+                got = resolve(content, s, {})
+                if tail is not None and got.__class__ is Literal:
+                    extra = [a for a in iter_list(resolve(tail, s)) if a != SOURCE_SELF]
+                    got = got.add_annots(extra) if extra else got
+                answers.append(got)
                 if perf == "askOne":
                     break
         except ActionError:
