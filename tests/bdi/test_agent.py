@@ -381,3 +381,27 @@ def test_a_failure_plan_after_fail_goal_of_the_last_formula_runs_once() -> None:
 +!w2 <- .fail.
 -!w <- .print(w_failed)."""
     assert run(src, 2_000) == ["v_failed", "w_failed"]
+
+
+def test_namespaces_as_jason_3_3_prints_them() -> None:
+    src = """b(0).
+ns1::b(1).
+!start.
++!start <- ?b(X); .print(X); ?ns1::b(Y); .print(Y);
+  +ns1::c(5); !ns1::g(7); !g(8);
+  ns1::b(Z) =.. U; .print(U); .print(ns1::b(1), " ", default::b(1)); !t; !pub::t2.
++!ns1::g(X) <- .print(ns1g, X).
++!g(X) <- .print(g, X).
++ns1::c(X) <- .print(added_c, X).
+{ begin namespace(priv, local) }
++!t <- .print(never).
+{ end }
+{ begin namespace(pub, global) }
+q(1).
++!t2 <- ?q(A); .print(t2, A); if (q(B)) { .print(ifq, B) }; ?default::b(D); .print(D).
+{ end }
++!t <- .print(default_t)."""
+    assert run(src) == [
+        "0", "1", "added_c5", "ns1g7", "g8", "[ns1,b,[Z],[]]", "ns1::b(1) b(1)",
+        "default_t", "t21", "ifq1", "0",
+    ]  # fmt: skip

@@ -12,7 +12,7 @@ import operator
 from collections.abc import Callable, Iterator
 from typing import TYPE_CHECKING
 
-from robocog.bdi.terms import And, Body, Literal, Not, Or, Rel, Term, Var, compare, term_str
+from robocog.bdi.terms import NS_SEP, And, Body, Literal, Not, Or, Rel, Term, Var, compare, term_str
 from robocog.bdi.unifier import EvalError, deref, evaluate, resolve, undo, unify
 
 if TYPE_CHECKING:
@@ -384,20 +384,31 @@ def _univ(left: Term, right: Term, s: dict, trail: list) -> bool:
     if left.__class__ is Literal:
         # Jason 3.3: [namespace, functor, args, annotations]; robocog has the default
         # namespace only
+        ns, _sep, f = left.functor.rpartition(NS_SEP)
         parts = make_list(
-            [DEFAULT_NS, Literal(left.functor), make_list(left.args), make_list(left.annots)]
+            [
+                Literal(ns) if ns else DEFAULT_NS,
+                Literal(f),
+                make_list(left.args),
+                make_list(left.annots),
+            ]
         )
         return unify(parts, right, s, trail)
     right = resolve(right, s)
     if right.__class__ is Cons:
         items = list(iter_list(right))
-        if len(items) == 4 and items[0] == DEFAULT_NS:
-            items = items[1:]  # the namespace first, as Jason 3.3 writes it
+        ns = None
+        if len(items) == 4 and items[0].__class__ is Literal:
+            ns = items[0].functor  # the namespace first, as Jason 3.3 writes it
+            items = items[1:]
         if not items or items[0].__class__ is not Literal:
             return False
         args = tuple(iter_list(items[1])) if len(items) > 1 else ()
         annots = tuple(iter_list(items[2])) if len(items) > 2 else ()
-        lit = Literal(items[0].functor, args, annots)
+        f = items[0].functor
+        if ns is not None and ns != DEFAULT_NS.functor:
+            f = f"{ns}{NS_SEP}{f}"
+        lit = Literal(f, args, annots)
         return unify(left, lit, s, trail)
     return right is NIL and False
 

@@ -14,6 +14,7 @@ import threading
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 import lark
 from lark import Token, Transformer, v_args
@@ -22,6 +23,7 @@ from lark.tree import Meta
 from robocog.bdi import plans as P
 from robocog.bdi.terms import (
     NIL,
+    NS_SEP,
     And,
     AnnotTail,
     Arith,
@@ -91,6 +93,9 @@ class _Builder(Transformer):
         super().__init__(visit_tokens=False)
         self.vars: dict[str, Var] = {}
         self.source = ""
+        #: the namespace of the ``{ begin namespace(...) }`` block being read, if any
+        self.namespace: str | None = None
+        self._local_names = 0
 
     def _clause_done(self) -> None:
         self.vars = {}
@@ -101,20 +106,40 @@ class _Builder(Transformer):
 
     def belief(self, items: list) -> tuple:
         self._clause_done()
-        return ("belief", items[0])
+        return ("belief", self._ns(items[0]))
 
     def rule(self, items: list) -> tuple:
         self._clause_done()
-        return ("rule", Rule(items[0], items[1]))
+        return ("rule", self._ns(Rule(items[0], items[1])))
 
     def initial_goal(self, items: list) -> tuple:
         self._clause_done()
-        return ("goal", items[0])
+        return ("goal", self._ns(items[0]))
+
+    def _ns(self, item: Any) -> Any:
+        return item if self.namespace is None else in_namespace(item, self.namespace)
 
     @v_args(meta=True)
     def directive(self, meta: Meta, items: list) -> tuple:
         self._clause_done()
-        return ("directive", (str(items[0]), meta.line, meta.column))
+        text = str(items[0])
+        m = _BEGIN_NS.match(text)
+        if m is not None:
+            if self.namespace is not None:
+                raise ValueError("a namespace block inside another")
+            name, scope = m.group(1), m.group(2) or "global"
+            if scope == "local":
+                # a local namespace is the file's own: a name no other file can write
+                self._local_names += 1
+                name = f"#{self._local_names}{name}"
+            self.namespace = name
+            return ("namespace", name)
+        if _END_NS.match(text):
+            if self.namespace is None:
+                raise ValueError("{ end } without { begin namespace(...) }")
+            self.namespace = None
+            return ("namespace", None)
+        return ("directive", (text, meta.line, meta.column))
 
     def directive_body(self, items: list) -> str:
         return str(items[0])
@@ -136,6 +161,8 @@ class _Builder(Transformer):
             elif isinstance(it, P.Trigger):
                 trigger = it
         line = getattr(meta, "line", 0) if not getattr(meta, "empty", True) else 0
+        if self.namespace is not None:
+            trigger, context, body = in_namespace((trigger, context, body), self.namespace)
         return ("plan", P.Plan(trigger, context, body, label, self.source, line))
 
     def label(self, items: list) -> tuple:
@@ -360,10 +387,18 @@ class _Builder(Transformer):
     def literal(self, items: list) -> Literal:
         neg = False
         i = 0
-        if isinstance(items[0], Token) and items[0].type == "NEG":
-            neg = True
+        ns = None
+        if isinstance(items[0], Token) and items[0].type == "ATOM":
+            ns = str(items[0]).strip("'")
             i = 1
+        if isinstance(items[i], Token) and items[i].type == "NEG":
+            neg = True
+            i += 1
         functor = items[i]
+        if ns is not None and (ns != DEFAULT_NS or self.namespace is not None):
+            # an explicit ``default::`` matters only inside a namespace block, where
+            # it keeps the literal out of the block's namespace (see in_namespace)
+            functor = f"{ns}{NS_SEP}{functor}"
         args: tuple = ()
         annots: tuple = ()
         for it in items[i + 1 :]:
@@ -471,6 +506,7 @@ def _run(start: str, text: str, source: str):  # noqa: ANN202 - parse result
         parser, builder = _parser()
         builder.vars = {}
         builder.source = source
+        builder.namespace = None
         try:
             tree = parser.parse(text, start=start)
             return builder.transform(tree)
@@ -495,6 +531,100 @@ def _run(start: str, text: str, source: str):  # noqa: ANN202 - parse result
             raise ParseError(f"malformed input ({exc})", 1, 1, source) from None
         finally:
             builder.vars = {}
+
+
+#: Jason's default namespace, and what joins a namespace to a functor
+DEFAULT_NS = "default"
+_BEGIN_NS = re.compile(r"\s*begin\s+namespace\s*\(\s*(\w+)\s*(?:,\s*(local|global)\s*)?\)\s*\Z")
+_END_NS = re.compile(r"\s*end\s*\Z")
+
+
+def in_namespace(item: Any, ns: str) -> Any:
+    """``item`` (a belief, rule, goal, or a plan's (trigger, context, body)) as written
+    inside ``{ begin namespace(ns) }``: its beliefs, goals and triggers, and the
+    literals its contexts, rule bodies and belief and goal formulas consult, in ``ns``;
+    internal actions, environment actions and arguments are left as they are; a
+    literal with an explicit namespace keeps it (``default::b`` is plain ``b``)."""
+    if isinstance(item, tuple):
+        trigger, context, body = item
+        if trigger is not None and trigger.literal.__class__ is Literal:
+            trigger = P.Trigger(trigger.op, trigger.kind, _ns_lit(trigger.literal, ns))
+        return trigger, _ns_formula(context, ns), _ns_chain(body, ns)
+    if isinstance(item, Rule):
+        return Rule(_ns_lit(item.head, ns), _ns_formula(item.body, ns))
+    return _ns_lit(item, ns)
+
+
+def _ns_lit(t: Term, ns: str) -> Term:
+    if t.__class__ is not Literal or t.functor.startswith("."):
+        return t
+    f = t.functor
+    if NS_SEP in f:
+        if not f.startswith(DEFAULT_NS + NS_SEP):
+            return t
+        f = f[len(DEFAULT_NS) + len(NS_SEP) :]
+    else:
+        f = f"{ns}{NS_SEP}{f}"
+    return Literal(f, t.args, t.annots, t.neg)
+
+
+def _ns_formula(t: Term, ns: str) -> Term:
+    c = t.__class__
+    if c is Literal:
+        if t.functor in ("true", "false") and not t.args:
+            return t
+        return _ns_lit(t, ns)
+    if c is And or c is Or:
+        return c(_ns_formula(t.left, ns), _ns_formula(t.right, ns))
+    if c is Not:
+        return Not(_ns_formula(t.arg, ns))
+    return t
+
+
+#: the body formulas whose literal is a belief or a goal (namespaced in a block)
+_NS_STEPS = frozenset(
+    {
+        P.ACHIEVE_STEP,
+        P.ACHIEVE_NF,
+        P.ADD_BEL,
+        P.ADD_BEL_NF,
+        P.ADD_BEL_END,
+        P.DEL_BEL,
+        P.DEL_BEL_NF,
+        P.DEL_ADD_BEL,
+    }
+)
+
+
+def _ns_chain(chain: P.Chain, ns: str) -> P.Chain:
+    steps = []
+    while chain is not None:
+        st = chain[0]
+        if st.kind in _NS_STEPS:
+            st = P.Step(st.kind, _ns_lit(st.term, ns), st.blocks, st.line, st.state)
+        elif st.kind == P.TEST_STEP:
+            st = P.Step(st.kind, _ns_formula(st.term, ns), st.blocks, st.line, st.state)
+        elif st.kind in (P.IF, P.WHILE, P.FOR):
+            blocks = tuple(
+                (_ns_formula(b[0], ns), _ns_chain(b[1], ns))
+                if isinstance(b, tuple) and len(b) == 2 and not isinstance(b[0], P.Step)
+                else _ns_chain(b, ns)
+                for b in st.blocks
+            )
+            state = (
+                _ns_chain(st.state, ns) if st.kind == P.IF and st.state is not None else st.state
+            )
+            st = P.Step(st.kind, _ns_formula(st.term, ns), blocks, st.line, state)
+        elif st.kind == P.FORK:
+            st = P.Step(st.kind, st.term, tuple(_ns_chain(b, ns) for b in st.blocks), st.line)
+        steps.append(st)
+        chain = chain[1]
+    return P.chain(steps)
+
+
+def _plan_in(plan: P.Plan, ns: str) -> P.Plan:
+    trigger, context, body = in_namespace((plan.trigger, plan.context, plan.body), ns)
+    return P.Plan(trigger, context, body, plan.label, plan.source, plan.line)
 
 
 #: how deep includes may nest before the reader refuses (a file including itself, say)
@@ -523,6 +653,8 @@ def parse_program(
             prog.goals.append(value)
         elif kind == "plan":
             prog.plans.append(value)
+        elif kind == "namespace":
+            continue
         elif kind == "directive":
             body, line, column = value
             included = _include(body, line, column, source, search_path, _depth)
@@ -540,8 +672,6 @@ def _include(
     if m is None:
         name = body.strip().split("(")[0].split()[0] if body.strip() else ""
         raise ParseError(f"not supported: directive {{ {name} }}", line, column, source)
-    if m.group(2):
-        raise ParseError("not supported: include into a namespace", line, column, source)
     if depth >= MAX_INCLUDE_DEPTH:
         raise ParseError(f"includes nested deeper than {MAX_INCLUDE_DEPTH}", line, column, source)
     name = m.group(1).replace('\\"', '"')
@@ -551,7 +681,14 @@ def _include(
         candidates = [Path(name)]
     for path in candidates:
         if path.is_file():
-            return parse_program(read_source(path), str(path), search_path, depth + 1)
+            prog = parse_program(read_source(path), str(path), search_path, depth + 1)
+            ns = m.group(2)
+            if ns and ns != DEFAULT_NS:
+                # ``include("f.asl", ns)``: the file as if written inside a block of ns
+                prog.beliefs = [in_namespace(b, ns) for b in prog.beliefs]
+                prog.goals = [in_namespace(g, ns) for g in prog.goals]
+                prog.plans = [_plan_in(p, ns) for p in prog.plans]
+            return prog
     looked = ", ".join(str(c) for c in candidates)
     raise ParseError(f"include: no file {name!r} (looked at {looked})", line, column, source)
 

@@ -541,6 +541,9 @@ def term_str(t: Term) -> str:
 
 
 #: functors written as they are; any other (``'Quoted atom'``) is written in quotes
+#: what joins a namespace to a functor: ``ns::b`` is the literal ``b`` of namespace ``ns``
+#: (the default namespace is written without one)
+NS_SEP = "::"
 _PLAIN_FUNCTOR = re.compile(r"\.?[a-z~][a-zA-Z0-9_]*(\.[a-zA-Z_][a-zA-Z0-9_]*)*\Z|[+\-*/<>=\\]+\Z")
 
 
@@ -550,6 +553,9 @@ def _write(t: Term, out: list[str]) -> None:
         if t.neg:
             out.append("~")
         f = t.functor
+        if NS_SEP in f and not f.startswith("'"):
+            ns, _sep, f = f.rpartition(NS_SEP)
+            out.append(ns + NS_SEP)
         out.append(f if _PLAIN_FUNCTOR.match(f) else "'" + f + "'")
         if t.args:
             out.append("(")
