@@ -36,6 +36,7 @@ ENGINE_MODULES = (
     "unify",
     "rules",
     "inference",
+    "spikegroups",
     "sensorimotor",
     "decision",
     "nar",

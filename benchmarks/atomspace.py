@@ -50,7 +50,7 @@ import tempfile
 import time
 from collections.abc import Callable
 
-from robocog.atomspace import AtomSpace, Link, Node, fastpath, matcher, query
+from robocog.atomspace import AtomSpace, Link, Node, matcher, query
 from robocog.atomspace.atoms import bulk
 from robocog.atomspace.persist import load, store
 
@@ -159,9 +159,7 @@ def hyperon_side(names, pairs, clears):  # noqa: ANN001, ANN201
 def _forget() -> None:
     """Empty every cache of the matcher (compiled patterns and clauses, the fast path's
     table of relation types), so that each query of a "cold" round starts from its atom."""
-    matcher._CACHE.clear()
-    matcher._CLAUSES.clear()
-    fastpath._PLAIN.clear()
+    matcher.clear_caches()
 
 
 def compare(names, pairs, clears, work, rounds: int, with_hyperon: bool):  # noqa: ANN001, ANN201

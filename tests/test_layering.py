@@ -153,3 +153,43 @@ def test_the_cycle_finder_sees_a_lazy_cycle(tmp_path: Path) -> None:
     (package / "c.py").write_text("def g():\n    import robocog.p.a\n")
     graph = import_graph(tmp_path / "robocog")
     assert import_cycles(graph) == [["robocog.p.a", "robocog.p.b", "robocog.p.c"]]
+
+
+#: the most lines a module in src/ may have: a longer one holds more than one idea and
+#: is split along its seams (a package of modules where it has several)
+MAX_MODULE_LINES = 800
+#: modules allowed over the bound for now, each with the way it is to be split
+LONG_MODULES = {
+    # to be split along Jason's reasoning cycle (perceive, messages, select an event,
+    # options and intended means, execute an intention)
+    "bdi/agent.py",
+}
+
+
+def long_modules(root: Path = SRC, most: int = MAX_MODULE_LINES) -> dict[str, int]:
+    """Every module under ``root`` with more than ``most`` lines -> its line count."""
+    found = {}
+    for path in sorted(root.rglob("*.py")):
+        with path.open(encoding="utf-8") as f:
+            n = sum(1 for _line in f)
+        if n > most:
+            found[path.relative_to(root).as_posix()] = n
+    return found
+
+
+def test_no_module_is_longer_than_the_bound() -> None:
+    too_long = {name: n for name, n in long_modules().items() if name not in LONG_MODULES}
+    assert too_long == {}, f"modules over {MAX_MODULE_LINES} lines: {too_long}"
+
+
+def test_the_known_long_modules_are_still_long() -> None:
+    # once one is split, it leaves the list of exceptions (so that the list only shrinks)
+    split = LONG_MODULES - set(long_modules())
+    assert split == set(), f"now within the bound, remove from LONG_MODULES: {sorted(split)}"
+
+
+def test_the_line_counter_sees_a_long_module(tmp_path: Path) -> None:
+    (tmp_path / "short.py").write_text("x = 1\n" * 3)
+    (tmp_path / "pkg").mkdir()
+    (tmp_path / "pkg" / "long.py").write_text("x = 1\n" * 4)
+    assert long_modules(tmp_path, most=3) == {"pkg/long.py": 4}

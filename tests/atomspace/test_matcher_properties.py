@@ -8,7 +8,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from robocog.atomspace import AtomSpace, Link, Node, query, substitute
-from robocog.atomspace.matcher import _candidates, compile_pattern
+from robocog.atomspace.matcher import compile_pattern
+from robocog.atomspace.matcher.search import candidates_of
 
 from .conftest import C, V, ev
 
@@ -95,16 +96,16 @@ def test_a_bound_argument_is_found_through_the_index() -> None:
     first = compile_pattern(ev("on", C("b10"), V("$y"))).alts[0].mandatory[0]
     second = compile_pattern(ev("on", V("$x"), C("b70"))).alts[0].mandatory[0]
     # candidates come from the bound block's incoming set, not from the 3,000 facts
-    assert list(_candidates(s, first, {})) == [ev("on", C("b10"), C("b70"))]
-    assert list(_candidates(s, second, {})) == [ev("on", C("b10"), C("b70"))]
+    assert list(candidates_of(s, first, {})) == [ev("on", C("b10"), C("b70"))]
+    assert list(candidates_of(s, second, {})) == [ev("on", C("b10"), C("b70"))]
     join = compile_pattern(Link("AndLink", ev("on", V("$x"), V("$y")), ev("on", V("$y"), C("b70"))))
     c1, c2 = join.alts[0].mandatory
     b10 = s.add(C("b10"))  # bindings hold the space's own atoms
-    assert list(_candidates(s, c1, {V("$y"): b10})) == [ev("on", C("b430"), C("b10"))]
+    assert list(candidates_of(s, c1, {V("$y"): b10})) == [ev("on", C("b430"), C("b10"))]
     assert query(s, join.body) == [{V("$x"): C("b430"), V("$y"): C("b10")}]
     # a constant that is not in the space gives no candidates at all
     missing = compile_pattern(ev("on", C("nowhere"), V("$y"))).alts[0].mandatory[0]
-    assert list(_candidates(s, missing, {})) == []
+    assert list(candidates_of(s, missing, {})) == []
 
 
 def test_rules_share_compiled_clauses_but_not_across_typings() -> None:

@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING, TypeVar
 from . import truth as tf
 from .event import BELIEF, ETERNAL, Event, Implication, revised_or_chosen
 from .rules import hol_component_invalid, introduce_implication_variables
+from .spikegroups import group_add, group_keys, group_remove
 from .stamp import fmt, merge, overlap
 from .terms import SEQUENCE, TEMPORAL_IMPLICATION, Term, compound
 from .truth import Truth, expectation
@@ -108,7 +109,7 @@ class SensorimotorMixin:
         self._outcomes: dict[tuple[Term, Term], Term] = {}
         #: precondition with variables -> where its instances are found (``_source_spike``)
         self._patterns: dict[Term, _Pattern] = {}
-        #: concept term -> its groups' keys (``_group_keys``): a concept moves to the
+        #: concept term -> its groups' keys (``group_keys``): a concept moves to the
         #: newest end of its groups at every event, so they are not recomputed each time
         self._term_keys: dict[Term, list[object]] = {}
         #: induced link -> its forms with variables (``_variable_forms``)
@@ -188,7 +189,7 @@ class SensorimotorMixin:
                 pass  # it fell off the end of the full index
             else:
                 if self._groups is not None:
-                    _group_remove(self._groups, c, self._keys_of(c.term))
+                    group_remove(self._groups, c, self._keys_of(c.term))
         tables = c.precondition_beliefs
         if tables is not None:
             for opi, table in enumerate(tables):
@@ -304,21 +305,21 @@ class SensorimotorMixin:
                 pass  # it fell off the end of the full index
         if not present and groups is not None and len(idx) == idx.maxlen:
             gone = idx[-1]  # about to fall off the full index
-            _group_remove(groups, gone, self._keys_of(gone.term))
+            group_remove(groups, gone, self._keys_of(gone.term))
         c.timed = True
         idx.appendleft(c)
         if groups is not None:
-            _group_add(groups, c, self._keys_of(c.term))
+            group_add(groups, c, self._keys_of(c.term))
 
     def _keys_of(self, term: Term) -> Sequence[object]:
-        """The groups a concept of ``term`` belongs in: ``_group_keys(term)``,
+        """The groups a concept of ``term`` belongs in: ``group_keys(term)``,
         remembered (the same concepts come and go), and none for a term with variables,
         which stays out of the groups."""
         if term.has_var:
             return ()
         keys = self._term_keys.get(term)
         if keys is None:
-            keys = _remember(self._term_keys, term, _group_keys(term))
+            keys = _remember(self._term_keys, term, group_keys(term))
         return keys
 
     def _process_belief_event(self, e: Event, priority: float) -> None:
@@ -654,7 +655,7 @@ class SensorimotorMixin:
         if groups is None:
             groups = self._groups = {None: {}}
             for c in reversed(self.time_index):  # oldest first: the newest ends last
-                _group_add(groups, c, self._keys_of(c.term))
+                group_add(groups, c, self._keys_of(c.term))
         return groups
 
     def _source_spike(
@@ -737,7 +738,7 @@ class _Pattern:
     def __init__(self, source: Term) -> None:
         self.source = source
         #: the groups every instance of the precondition is in
-        self.keys = _group_keys(source, ground_only=True)
+        self.keys = group_keys(source, ground_only=True)
         #: the one of them scanned (the smallest when last chosen)
         self.key: object = _UNKNOWN
         self.uses = 0
@@ -751,53 +752,3 @@ class _Pattern:
             # (a few groups' worth: each pattern has its own)
             bind = _remember(self.matches, term, unify(self.source, term), 128)
         return bind
-
-
-def _group_keys(t: Term, ground_only: bool = False) -> list[object]:
-    """The keys of every group of ``_spike_groups`` that ``t`` belongs to. With
-    ``ground_only``, those of its components without variables: a ground term matching
-    ``t`` (a precondition with variables) is in every one of those groups, so the
-    smallest of them will do for finding it."""
-    keys: list[object] = [None]
-    if t.op is None:
-        return keys
-    keys.append((t.op, len(t.args)))
-    stack: list[tuple[tuple[object, ...], Term]] = [((), t)]
-    while stack:
-        path, x = stack.pop()
-        op = x.op
-        n = len(x.args)
-        for i, arg in enumerate(x.args):
-            sub = (*path, op, n, i)
-            if not (ground_only and arg.has_var):
-                keys.append((sub, arg))
-            if arg.op is not None:
-                stack.append((sub, arg))
-    return keys
-
-
-def _group_add(
-    groups: dict[object, dict[Concept, None]], c: Concept, keys: Sequence[object]
-) -> None:
-    """Make ``c`` (its term without variables) the newest member of its groups,
-    entering it or moving it to the end."""
-    for k in keys:
-        d = groups.get(k)
-        if d is None:
-            groups[k] = {c: None}
-        else:
-            d.pop(c, None)
-            d[c] = None
-
-
-def _group_remove(
-    groups: dict[object, dict[Concept, None]], c: Concept, keys: Sequence[object]
-) -> None:
-    """Take ``c`` (its term without variables) out of its groups, dropping groups left
-    empty."""
-    for k in keys:
-        d = groups.get(k)
-        if d is not None:
-            d.pop(c, None)
-            if not d and k is not None:
-                del groups[k]

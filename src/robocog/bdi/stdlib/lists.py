@@ -1,0 +1,200 @@
+"""Lists: ``.length``, ``.member``, ``.concat``, ``.nth``, ``.max``/``.min``, ``.sort``,
+``.reverse``, ``.empty``, ``.delete``, the set operations, ``.range``, ``.list``."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from typing import TYPE_CHECKING, Any
+
+from robocog.bdi.logic import ActionError
+from robocog.bdi.stdlib.base import (
+    arg_list,
+    arg_number,
+    arg_text,
+    bind,
+    bind_each,
+    internal,
+    need_args,
+    unifies,
+)
+from robocog.bdi.terms import (
+    Cons,
+    Nil,
+    Term,
+    Var,
+    is_list,
+    iter_list,
+    make_list,
+    print_str,
+    sort_key,
+    term_str,
+)
+from robocog.bdi.unifier import deref, resolve, undo, unify
+
+if TYPE_CHECKING:
+    from robocog.bdi.agent import Agent
+
+
+@internal("length")
+def _length(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
+    need_args(args, 2, "length")
+    v = resolve(args[0], s)
+    if v.__class__ is str:
+        n = len(v)
+    elif is_list(v):
+        n = sum(1 for _ in iter_list(v))
+    else:
+        raise ActionError(f".length: {term_str(v)} is not a list or string")
+    return bind(n, args[1], s, trail)
+
+
+@internal("member")
+def _member(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Iterator[None]:
+    need_args(args, 2, "member")
+    return bind_each(iter(arg_list(args[1], s, "member")), args[0], s, trail)
+
+
+@internal("concat")
+def _concat(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
+    if len(args) < 2:
+        raise ActionError(".concat takes at least 2 arguments")
+    parts = [resolve(a, s) for a in args[:-1]]
+    if all(p.__class__ is str for p in parts) or any(p.__class__ is str for p in parts):
+        if all(is_list(p) for p in parts):
+            pass
+        else:
+            return bind("".join(print_str(p) for p in parts), args[-1], s, trail)
+    items: list = []
+    for p in parts:
+        if not is_list(p):
+            raise ActionError(f".concat: {term_str(p)} is not a list")
+        items.extend(iter_list(p))
+    return bind(make_list(items), args[-1], s, trail)
+
+
+@internal("nth")
+def _nth(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Any:
+    need_args(args, 3, "nth")
+    items = arg_list(args[1], s, "nth")
+    n = deref(args[0], s)
+    if n.__class__ is Var:
+        return _nth_all(items, args[0], args[2], s, trail)
+    k = int(arg_number(n, s, "nth"))
+    if not 0 <= k < len(items):
+        return False
+    return bind(items[k], args[2], s, trail)
+
+
+def _nth_all(items: list, idx: Term, target: Term, s: dict, trail: list) -> Iterator[None]:
+    mark = len(trail)
+    for k, v in enumerate(items):
+        if unify(idx, k, s, trail) and unify(target, v, s, trail):
+            yield None
+        undo(s, trail, mark)
+
+
+@internal("max")
+def _max(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
+    need_args(args, 2, "max")
+    items = arg_list(args[0], s, "max")
+    if not items:
+        return False
+    return bind(max(items, key=sort_key), args[1], s, trail)
+
+
+@internal("min")
+def _min(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
+    need_args(args, 2, "min")
+    items = arg_list(args[0], s, "min")
+    if not items:
+        return False
+    return bind(min(items, key=sort_key), args[1], s, trail)
+
+
+@internal("sort")
+def _sort(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
+    need_args(args, 2, "sort")
+    items = sorted(arg_list(args[0], s, "sort"), key=sort_key)
+    return bind(make_list(items), args[1], s, trail)
+
+
+@internal("reverse")
+def _reverse(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
+    need_args(args, 2, "reverse")
+    v = resolve(args[0], s)
+    if v.__class__ is str:
+        return bind(v[::-1], args[1], s, trail)
+    return bind(make_list(arg_list(v, s, "reverse")[::-1]), args[1], s, trail)
+
+
+@internal("empty")
+def _empty(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
+    need_args(args, 1, "empty")
+    v = resolve(args[0], s)
+    return v.__class__ is Nil or v == ""
+
+
+@internal("delete")
+def _delete(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
+    need_args(args, 3, "delete")
+    what = resolve(args[0], s)
+    v = resolve(args[1], s)
+    if v.__class__ is str:
+        if what.__class__ is int:
+            return bind(v[:what] + v[what + 1 :], args[2], s, trail)
+        return bind(v.replace(arg_text(what, s), ""), args[2], s, trail)
+    items = arg_list(v, s, "delete")
+    if what.__class__ is int:
+        out = items[:what] + items[what + 1 :]
+    else:
+        out = [x for x in items if not unifies(what, x)]
+    return bind(make_list(out), args[2], s, trail)
+
+
+@internal("union")
+def _union(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
+    need_args(args, 3, "union")
+    out = sorted(
+        set(arg_list(args[0], s, "union")) | set(arg_list(args[1], s, "union")), key=sort_key
+    )
+    return bind(make_list(out), args[2], s, trail)
+
+
+@internal("intersection")
+def _intersection(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
+    need_args(args, 3, "intersection")
+    b = set(arg_list(args[1], s, "intersection"))
+    out = sorted({x for x in arg_list(args[0], s, "intersection") if x in b}, key=sort_key)
+    return bind(make_list(out), args[2], s, trail)
+
+
+@internal("difference")
+def _difference(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
+    need_args(args, 3, "difference")
+    b = set(arg_list(args[1], s, "difference"))
+    out = sorted({x for x in arg_list(args[0], s, "difference") if x not in b}, key=sort_key)
+    return bind(make_list(out), args[2], s, trail)
+
+
+@internal("range")
+def _range(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Iterator[None]:
+    need_args(args, 3, "range", 4)
+    lo = int(arg_number(args[1], s, "range"))
+    hi = int(arg_number(args[2], s, "range"))
+    step = int(arg_number(args[3], s, "range")) if len(args) > 3 else 1
+    if step == 0:
+        raise ActionError(".range: step cannot be 0")
+    v = deref(args[0], s)
+    if v.__class__ is not Var:
+        n = arg_number(v, s, "range")
+        ok = lo <= n <= hi if step > 0 else hi <= n <= lo
+        return iter([None]) if ok and (n - lo) % step == 0 else iter(())
+    stop = hi + (1 if step > 0 else -1)
+    return bind_each(iter(range(lo, stop, step)), args[0], s, trail)
+
+
+@internal("list")
+def _is_list(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
+    need_args(args, 1, "list")
+    v = resolve(args[0], s)
+    return v.__class__ in (Cons, Nil)

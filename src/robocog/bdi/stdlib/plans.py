@@ -1,0 +1,79 @@
+"""The plan library at run time: ``.add_plan``, ``.remove_plan``, ``.relevant_plans``,
+``.plan_label``."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
+
+from robocog.bdi.logic import ActionError
+from robocog.bdi.stdlib.base import internal, need_args
+from robocog.bdi.terms import Literal, PlanTerm, is_list, iter_list, make_list, term_str
+from robocog.bdi.unifier import resolve, unify
+
+if TYPE_CHECKING:
+    from robocog.bdi.agent import Agent
+
+
+@internal("add_plan")
+def _add_plan(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
+    need_args(args, 1, "add_plan", 3)
+    p = resolve(args[0], s)
+    at_end = True
+    if len(args) > 2:
+        at_end = term_str(resolve(args[2], s)) != "begin"
+    texts = list(iter_list(p)) if is_list(p) else [p]
+    for t in texts:
+        if t.__class__ is PlanTerm:
+            t = t.text  # read again, so each addition is a plan of its own
+        if t.__class__ is not str:
+            raise ActionError(".add_plan expects a plan term or a string")
+        from robocog.bdi.parser import ParseError
+
+        try:
+            ag.add_plan(t, at_end)
+        except ParseError as exc:
+            raise ActionError(f".add_plan: {exc}") from exc
+    return True
+
+
+@internal("remove_plan")
+def _remove_plan(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
+    need_args(args, 1, "remove_plan", 2)
+    label = resolve(args[0], s)
+    names = list(iter_list(label)) if is_list(label) else [label]
+    for n in names:
+        ag.pl.remove(n.functor if n.__class__ is Literal else str(n))
+    return True
+
+
+@internal("relevant_plans")
+def _relevant_plans(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
+    """``.relevant_plans(Trigger, Plans[, Labels])``: the plans whose trigger unifies
+    with ``Trigger`` (a plan term ``{+!g}`` or its text), as plan terms, and their labels."""
+    from robocog.bdi.messages import plan_terms, trigger_of
+
+    need_args(args, 2, "relevant_plans", 3)
+    trigger = trigger_of(resolve(args[0], s))
+    if trigger is None:
+        raise ActionError('.relevant_plans expects a trigger like {+!g} or "+!g"')
+    plans = plan_terms(ag, trigger)
+    if not unify(args[1], make_list(plans), s, trail):
+        return False
+    if len(args) > 2:
+        labels = [p.plan.label for p in plans if p.plan.label is not None]
+        return unify(args[2], make_list(labels), s, trail)
+    return True
+
+
+@internal("plan_label")
+def _plan_label(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
+    """``.plan_label(Plan, Label)``: the plan term of the plan labelled ``Label``."""
+    from robocog.bdi.terms import PlanTerm
+
+    need_args(args, 2, "plan_label", 2)
+    label = resolve(args[1], s)
+    name = label.functor if label.__class__ is Literal else str(label).lstrip("@")
+    plan = ag.pl.get(name)
+    if plan is None:
+        return False
+    return unify(args[0], PlanTerm(plan, str(plan).rstrip(".")), s, trail)
