@@ -40,7 +40,7 @@ def out(body: str, beliefs: str = "") -> list[str]:
         (".my_name(N); .print(N)", "t"),
         ("X = math.max(3, 8) + math.abs(-2); .print(X)", "10"),
         ("L = [1, 2, 3]; X = math.sum(L) / math.average(L); .print(X)", "3"),
-        (".nth(5, [a], X)", "failedia_failed"),
+        (".nth(5, [a], X)", "failedinternal_action"),  # Jason: out of bounds raises
         (".max([], X)", "failedia_failed"),
         (".length(a, N)", "failedia_failed"),
         (".nosuch(1)", "failedaction_failed"),  # to the environment, as in Jason
@@ -54,6 +54,14 @@ def out(body: str, beliefs: str = "") -> list[str]:
         (".eval(E, 1 > 2 | true); .print(E)", "true"),
         ('X = .length([a, b]) + .length("abc"); .print(X)', "5"),
         ("X = math.median([3, 1, 2]) + math.max([4, 9]); .print(X)", "11"),
+        # the forms and errors Jason 3.3 gives for the same calls
+        ('.substring(S, "abcdef", 1, 3); .substring(T, "abc", 1); .print(S, T)', "bcbc"),
+        ('.findall(p(B, E), .substring("bc", "abcbc", B, E), L); .print(L)', "[p(1,2),p(3,4)]"),
+        (".delete(0, 2, [a, b, c, d], L); .delete(1, [a, b, c], M); .print(L, M)", "[c,d][a,c]"),
+        (".concat(a, 1, f(x), S); .print(S)", "a1f(x)"),
+        ('.nth(0, "abc", C); .print(C)', "a"),
+        (".fail(foo)", "failedinternal_action"),
+        (".length(1, 2, 3)", "failedwrong_arguments"),
     ],
 )
 def test_internal_actions(body: str, expected: str) -> None:

@@ -431,7 +431,7 @@ def _internal(agent: Agent, lit: Literal, s: dict, trail: list) -> Iterator[None
 NOT_SUPPORTED = frozenset(
     {
         ".relevant_rules", ".list_plans", ".list_rules",
-        ".create_agent", ".kill_agent", ".save_agent", ".clone", ".namespace", ".at",
+        ".create_agent", ".kill_agent", ".save_agent", ".clone", ".at",
         ".df_register", ".df_deregister", ".df_search", ".df_subscribe", ".print_unifier",
         ".verbose", ".add_nested_source", ".current_intention", ".intention", ".signal",
     }

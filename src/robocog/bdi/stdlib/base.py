@@ -26,7 +26,16 @@ def need_args(args: tuple, n: int, name: str, most: int | None = None) -> None:
     """Raise :class:`ActionError` unless ``args`` has between ``n`` and ``most`` items."""
     most = n if most is None else most
     if not n <= len(args) <= most:
-        raise ActionError(f".{name} takes {n}{'' if most == n else f'..{most}'} arguments")
+        # Jason's words, and its error id
+        if n == most:
+            expected = " One argument is expected." if n == 1 else f" {n} arguments are expected."
+        else:
+            expected = f" From {n} to {most} arguments are expected."
+        raise ActionError(
+            f"The internal action '{name}' has not received the required number of "
+            f"argument(s).{expected}",
+            "wrong_arguments",
+        )
 
 
 def arg_list(t: Term, s: dict, name: str) -> list:

@@ -21,7 +21,17 @@ from robocog.bdi.stdlib.base import (
     need_args,
     unifies,
 )
-from robocog.bdi.terms import NIL, Literal, Term, Var, is_list, iter_list, make_list, print_str
+from robocog.bdi.terms import (
+    NIL,
+    NS_SEP,
+    Literal,
+    Term,
+    Var,
+    is_list,
+    iter_list,
+    make_list,
+    print_str,
+)
 from robocog.bdi.unifier import resolve, undo
 
 if TYPE_CHECKING:
@@ -238,3 +248,22 @@ def _drop_event(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
     goal = resolve(args[0], s)
     ag.C.keep_events(lambda e: not (e.intention is None and unifies(goal, e.trigger.literal)))
     return True
+
+
+@internal("namespace")
+def _namespace(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Iterator[None]:
+    """``.namespace(NS)``: each namespace the agent knows (Jason's ``kqml`` and
+    ``default`` first, then those of its beliefs and plans as they were met); local
+    namespaces are the file's own and are not listed."""
+    need_args(args, 1, "namespace")
+    names = ["kqml", "default"]
+    found = [b.functor for b in ag.bb] + [
+        p.trigger.literal.functor
+        for p in ag.pl
+        if p.trigger is not None and p.trigger.literal.__class__ is Literal
+    ]
+    for f in found:
+        ns, sep, _name = f.rpartition(NS_SEP)
+        if sep and not ns.startswith("#") and ns not in names:
+            names.append(ns)
+    return bind_each((Literal(n) for n in names), args[0], s, trail)

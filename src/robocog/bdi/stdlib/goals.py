@@ -10,7 +10,7 @@ from robocog.bdi import plans as P
 from robocog.bdi.logic import ActionError
 from robocog.bdi.signals import DONE, SUSPEND
 from robocog.bdi.stdlib.base import bind_each, internal, need_args
-from robocog.bdi.terms import Literal, print_str, term_str
+from robocog.bdi.terms import Literal, print_str
 from robocog.bdi.unifier import resolve, undo, unify
 
 if TYPE_CHECKING:
@@ -27,14 +27,13 @@ def _fail(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
         if a.__class__ is Literal and a.functor == "error_msg" and len(a.args) == 1:
             msg = print_str(a.args[0])
             break
-    err = ActionError(msg)
-    for a in annots:
-        if a.__class__ is Literal and a.functor == "error" and len(a.args) == 1:
-            err.error = term_str(a.args[0])
+    # as Jason: the failure of an internal action that raised (error(internal_action)),
+    # with the arguments, an error(...) among them too, as further annotations
+    err = ActionError(msg, "internal_action")
     err.annots = tuple(
         a
         for a in annots
-        if not (a.__class__ is Literal and a.functor in ("error", "error_msg") and len(a.args) == 1)
+        if not (a.__class__ is Literal and a.functor == "error_msg" and len(a.args) == 1)
     )
     raise err
 

@@ -44,7 +44,7 @@ def _length(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
     elif is_list(v):
         n = sum(1 for _ in iter_list(v))
     else:
-        raise ActionError(f".length: {term_str(v)} is not a list or string")
+        return False  # Jason: neither a list nor a string has no length, and says nothing
     return bind(n, args[1], s, trail)
 
 
@@ -59,11 +59,12 @@ def _concat(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
     if len(args) < 2:
         raise ActionError(".concat takes at least 2 arguments")
     parts = [resolve(a, s) for a in args[:-1]]
-    if all(p.__class__ is str for p in parts) or any(p.__class__ is str for p in parts):
-        if all(is_list(p) for p in parts):
-            pass
-        else:
-            return bind("".join(print_str(p) for p in parts), args[-1], s, trail)
+    if not is_list(parts[0]):
+        # Jason: anything but a list first is a string concatenation of the plain values
+        out = resolve(args[-1], s)
+        if out.__class__ is not str and out.__class__ is not Var:
+            out = term_str(out)
+        return bind("".join(print_str(p) for p in parts), out, s, trail)
     items: list = []
     for p in parts:
         if not is_list(p):
@@ -75,13 +76,19 @@ def _concat(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
 @internal("nth")
 def _nth(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Any:
     need_args(args, 3, "nth")
-    items = arg_list(args[1], s, "nth")
+    v = resolve(args[1], s)
+    # a string is a list of one-character strings (its UTF-8 bytes, as Jason has it)
+    items = (
+        [bytes([b]).decode("latin-1") for b in v.encode("utf-8")]
+        if v.__class__ is str
+        else arg_list(v, s, "nth")
+    )
     n = deref(args[0], s)
     if n.__class__ is Var:
         return _nth_all(items, args[0], args[2], s, trail)
     k = int(arg_number(n, s, "nth"))
     if not 0 <= k < len(items):
-        return False
+        raise ActionError(f"nth: index {k} is out of bounds ({len(items)})", "internal_action")
     return bind(items[k], args[2], s, trail)
 
 
@@ -136,19 +143,37 @@ def _empty(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
 
 @internal("delete")
 def _delete(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
-    need_args(args, 3, "delete")
+    """``.delete(X, L, R)`` removes what unifies with X (a substring from a string);
+    with a number first, the element at that index; ``.delete(B, E, L, R)`` the range
+    from B up to E (not included), as Jason does."""
+    need_args(args, 3, "delete", 4)
     what = resolve(args[0], s)
-    v = resolve(args[1], s)
-    if v.__class__ is str:
-        if what.__class__ is int:
-            return bind(v[:what] + v[what + 1 :], args[2], s, trail)
-        return bind(v.replace(arg_text(what, s), ""), args[2], s, trail)
-    items = arg_list(v, s, "delete")
-    if what.__class__ is int:
-        out = items[:what] + items[what + 1 :]
+    numeric = what.__class__ is int or what.__class__ is float
+    rng = None
+    if numeric:
+        start = int(what)
+        end = start + 1
+        nxt = 1
+        if len(args) == 4:
+            e = resolve(args[1], s)
+            if e.__class__ is int or e.__class__ is float:
+                end, nxt = int(e), 2
+        rng = (start, end)
+    elif len(args) == 4:
+        raise ActionError("Incorrect use of the internal action '.delete' (see documentation).")
     else:
-        out = [x for x in items if not unifies(what, x)]
-    return bind(make_list(out), args[2], s, trail)
+        nxt = 1
+    v = resolve(args[nxt], s)
+    target = args[nxt + 1] if nxt + 1 < len(args) else args[-1]
+    if rng is not None:
+        if v.__class__ is str:
+            return bind(v[: rng[0]] + v[rng[1] :], target, s, trail)
+        items = arg_list(v, s, "delete")
+        return bind(make_list(items[: rng[0]] + items[rng[1] :]), target, s, trail)
+    if v.__class__ is str or what.__class__ is str:
+        return bind(arg_text(v, s).replace(arg_text(what, s), ""), target, s, trail)
+    items = arg_list(v, s, "delete")
+    return bind(make_list([x for x in items if not unifies(what, x)]), target, s, trail)
 
 
 @internal("union")

@@ -6,8 +6,8 @@ from typing import TYPE_CHECKING, Any
 
 from robocog.bdi.logic import ActionError
 from robocog.bdi.stdlib.base import arg_text, bind, bind_each, internal, need_args
-from robocog.bdi.terms import Var, term_str
-from robocog.bdi.unifier import deref, resolve
+from robocog.bdi.terms import Term, Var, term_str
+from robocog.bdi.unifier import deref, resolve, undo, unify
 
 if TYPE_CHECKING:
     from robocog.bdi.agent import Agent
@@ -32,17 +32,41 @@ def _term2string(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool
 
 @internal("substring")
 def _substring(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Any:
-    need_args(args, 2, "substring", 3)
-    sub = arg_text(args[0], s)
+    """Jason's three uses: ``.substring(Sub, S)`` tests; with a number third and an
+    unbound first, ``.substring(X, S, Begin[, End])`` cuts S; otherwise every position
+    of Sub in S (and, with four arguments, where it ends) is a solution."""
+    need_args(args, 2, "substring", 4)
+    first = resolve(args[0], s)
     full = arg_text(args[1], s)
     if len(args) == 2:
-        return sub in full
-    positions = []
+        return arg_text(first, s) in full
+    start = resolve(args[2], s)
+    numeric = start.__class__ is int or start.__class__ is float
+    if numeric and first.__class__ is Var:
+        end = resolve(args[3], s) if len(args) == 4 else len(full)
+        if not (end.__class__ is int or end.__class__ is float):
+            end = len(full)
+        b, e = int(start), int(end)
+        if not 0 <= b <= e <= len(full):
+            raise ActionError(f"begin {b}, end {e}, length {len(full)}", "internal_action")
+        return bind(full[b:e], args[0], s, trail)
+    sub = arg_text(first, s)
+    found = []
     k = full.find(sub)
     while k >= 0:
-        positions.append(k)
+        found.append(k)
         k = full.find(sub, k + 1)
-    return bind_each(iter(positions), args[2], s, trail)
+    if len(args) == 3:
+        return bind_each(iter(found), args[2], s, trail)
+    return _positions(found, len(sub), args[2], args[3], s, trail)
+
+
+def _positions(found: list, n: int, at: Term, end: Term, s: dict, trail: list) -> Any:
+    mark = len(trail)
+    for k in found:
+        if unify(at, k, s, trail) and unify(end, k - 1 + n, s, trail):
+            yield None
+        undo(s, trail, mark)
 
 
 @internal("upper_case")
