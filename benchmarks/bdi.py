@@ -89,11 +89,12 @@ def lists_source(rounds: int) -> str:
 """
 
 
-def ring_source(first: bool, laps: int, size: int) -> str:
-    """One agent of the ring; the first one starts the token, which goes ``laps`` times
-    around the ``size`` agents; whoever takes it at 0 reports."""
+def ring_source(first: bool, laps: int, size: int, nxt: str) -> str:
+    """One agent of the ring, which hands the token to ``nxt``; the first one starts it,
+    and it goes ``laps`` times around the ``size`` agents; whoever takes it at 0 reports."""
     start = f"!token({laps * size}).\n" if first else ""
-    return f"""{start}+!token(0) <- done(0).
+    return f"""next({nxt}).
+{start}+!token(0) <- done(0).
 +!token(K) : next(N) <- .send(N, achieve, token(K - 1)).
 """
 
@@ -227,7 +228,7 @@ def run_robocog_ring(laps: int, size: int) -> Result:
     mas = MultiAgentSystem()
     for i, name in enumerate(names):
         nxt = names[(i + 1) % size]
-        ag = Agent(ring_source(i == 0, laps, size) + f"next({nxt}).\n", name)
+        ag = Agent(ring_source(i == 0, laps, size, nxt), name)
         ag.register_action("done", lambda x: finished.append(x) or True)
         mas.add(ag)
     t0 = time.process_time()
@@ -252,7 +253,7 @@ def run_python_agentspeak_ring(laps: int, size: int) -> Result:
     envr = agentspeak.runtime.Environment()
     names = ring_names(size)
     for i, name in enumerate(names):
-        src = io.StringIO(ring_source(i == 0, laps, size) + f"next({names[(i + 1) % size]}).\n")
+        src = io.StringIO(ring_source(i == 0, laps, size, names[(i + 1) % size]))
         src.name = f"{name}.asl"
         envr.build_agent(src, actions, name=name)
     t0 = time.process_time()

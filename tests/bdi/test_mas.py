@@ -68,3 +68,15 @@ def test_ask_all_answers_carry_the_beliefs_sources_nested_under_the_answerer() -
     )
     mas.run()
     assert out == ["a: [p(1)[source(b)[source(c)]],p(2)[source(b),x]]"]
+
+
+def test_a_sleeping_agent_wakes_for_a_message_and_for_news_from_outside() -> None:
+    mas, out = _mas(
+        a="+!ping[source(S)] <- .print(ping, S).\n+hot <- .print(hot).",
+        b="!s.\n+!s <- .wait(20); .send(a, achieve, ping).",
+    )
+    mas.run()
+    assert out == ["a: pingb"]
+    mas.agents["a"].add_belief("hot")  # the system idles; news from outside wakes it
+    mas.run()
+    assert out[-1] == "a: hot"

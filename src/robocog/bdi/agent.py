@@ -264,6 +264,7 @@ class Agent:
         if lit not in self._percepts:
             self._percepts[lit] = None
             self._percepts_dirty = True
+            self._wake()
 
     def remove_percept(self, percept: str | Literal) -> None:
         """Stop perceiving ``percept``."""
@@ -271,6 +272,7 @@ class Agent:
         if lit in self._percepts:
             del self._percepts[lit]
             self._percepts_dirty = True
+            self._wake()
 
     def set_percepts(self, percepts: Iterable[str | Literal]) -> None:
         """Replace all percepts at once (what the sensors report now)."""
@@ -280,6 +282,7 @@ class Agent:
         if list(new) != list(self._percepts):
             self._percepts = new
             self._percepts_dirty = True
+            self._wake()
 
     def clear_percepts(self) -> None:
         """Perceive nothing."""
@@ -294,6 +297,7 @@ class Agent:
         lit = _with_source(resolve(_as_literal(belief), {}))
         if self.bb.add(lit) is not None:
             self.post(Event(P.Trigger("+", BELIEF, lit), None))
+            self._wake()
 
     def remove_belief(self, belief: str | Literal) -> None:
         """Remove a belief (its ``source(self)`` unless annotated) and post ``-b``."""
@@ -301,11 +305,18 @@ class Agent:
         gone = self.bb.remove(lit)
         if gone is not None:
             self.post(Event(P.Trigger("-", BELIEF, gone), None))
+            self._wake()
 
     def add_goal(self, goal: str | Literal) -> None:
         """Post ``+!goal`` as a new (external) goal."""
         lit = _with_source(resolve(_as_literal(goal), {}, {}))
         self.post(Event(P.Trigger("+", ACHIEVE, lit), None))
+        self._wake()
+
+    def _wake(self) -> None:
+        """Tell the system this agent, asleep perhaps, has news from outside."""
+        if self.mas is not None:
+            self.mas.wake(self)
 
     def beliefs(self, functor: str | None = None) -> list[Literal]:
         """The facts in the belief base (optionally of one functor), newest first."""

@@ -28,6 +28,11 @@ class MultiAgentSystem:
         self.environment = environment
         self.stopped = False
         self.clock = 0.0
+        #: the agents that may have something to do, by name, with their place in the
+        #: order: an agent that is idle and waits for nothing sleeps until a message
+        #: or a change from outside wakes it, so a round costs what the awake ones do
+        self._awake: dict[str, int] = {}
+        self._place: dict[str, int] = {}
 
     def add(self, agent: Agent) -> Agent:
         """Add an agent (its name must be unique)."""
@@ -35,7 +40,14 @@ class MultiAgentSystem:
             raise ValueError(f"there is already an agent named {agent.name}")
         agent.mas = self
         self.agents[agent.name] = agent
+        self._place[agent.name] = len(self._place)
+        self._awake[agent.name] = self._place[agent.name]
         return agent
+
+    def wake(self, agent: Agent) -> None:
+        """Let ``agent`` run in the next rounds (it has news)."""
+        if agent.name in self._place:
+            self._awake[agent.name] = self._place[agent.name]
 
     def create(self, name: str, source: str = "", **kw: Any) -> Agent:
         """Build an agent from source text and add it."""
@@ -51,16 +63,27 @@ class MultiAgentSystem:
         if ag is None:
             raise ActionError(f"no agent named {msg.receiver}")
         ag.mailbox.append(msg)
+        self._awake[ag.name] = self._place[ag.name]
 
     def step(self) -> None:
         """One reasoning cycle of every agent, in the order they were added."""
-        for ag in list(self.agents.values()):
+        awake = self._awake
+        agents = self.agents
+        order = sorted(awake, key=awake.__getitem__) if len(awake) > 1 else list(awake)
+        for name in order:
+            ag = agents.get(name)
+            if ag is None:
+                awake.pop(name, None)
+                continue
             ag.clock = self.clock
             ag.step()
+            if ag.is_idle() and not ag.has_pending() and ag.next_timer() is None:
+                del awake[name]
 
     def is_idle(self) -> bool:
         """True when no agent has anything to do now."""
-        return all(ag.is_idle() for ag in self.agents.values())
+        # a sleeping agent is idle: it went to sleep so, and nothing has woken it
+        return all(self.agents[n].is_idle() for n in self._awake if n in self.agents)
 
     def run(self, max_rounds: int | None = None) -> int:
         """Run rounds until every agent is idle (jumping the clock to timers)."""

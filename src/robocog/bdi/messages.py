@@ -146,10 +146,18 @@ def _kqml_literal(msg: Message) -> Literal:
     )
 
 
+#: any ``+!kqml_received/4`` event, to ask a plan library whether it has such plans
+_KQML_ANY = P.Trigger(
+    "+", P.ACHIEVE, Literal("kqml_received", (Var("S"), Var("P"), Var("C"), Var("M")))
+)
+
+
 def _handled_by_a_plan(ag: Agent, msg: Message) -> bool:
     """Post ``+!kqml_received(Sender, Performative, Content, MsgId)`` when a plan of the
     agent's own takes that message (it overrides Jason's default handling, as the
     program's plans come before the default ones); True if posted."""
+    if not ag.pl.has_candidate(_KQML_ANY):
+        return False  # the program has no such plan (the usual case): nothing to build
     trigger = P.Trigger("+", P.ACHIEVE, _kqml_literal(msg))
     plans = ag.pl.candidates(trigger)
     if not plans:
