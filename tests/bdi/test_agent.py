@@ -405,3 +405,10 @@ q(1).
         "0", "1", "added_c5", "ns1g7", "g8", "[ns1,b,[Z],[]]", "ns1::b(1) b(1)",
         "default_t", "t21", "ifq1", "0",
     ]  # fmt: skip
+
+
+def test_a_wait_that_times_out_fails_with_jasons_error() -> None:
+    src = """!s.
++!s <- .wait({+never}, 30).
+-!s[error(E), error_msg(M)] <- .print(E, "|", M)."""
+    assert run(src) == ["wait_timeout|timeout in .wait"]

@@ -530,7 +530,7 @@ class Agent:
                 # the awaited event or condition did not come in time: .wait fails,
                 # unless it was given a variable for the elapsed time
                 if self._resume_wait(i) is False:
-                    self.fail_intention(i, "ia_failed", ".wait timed out")
+                    self.fail_intention(i, "wait_timeout", "timeout in .wait")  # Jason's words
                 continue
             self._advance(i)
 
