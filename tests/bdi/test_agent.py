@@ -281,7 +281,7 @@ def test_wait_for_a_condition_and_timeouts() -> None:
        .wait({+never}, 50).
 -!a[error(E)] <- .print(timeout, E).
 +!b <- for (.range(I, 1, 4)) { -+n(I) }."""
-    assert run(src) == ["a3", "waited100", "timeoutia_failed"]
+    assert run(src) == ["a3", "waited100", "timeoutwait_timeout"]
 
 
 # ---- fork-join (the orders below are those Jason 3.3 prints for the same programs)
