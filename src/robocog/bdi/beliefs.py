@@ -260,6 +260,22 @@ class BeliefBase:
         else:
             cands = tuple(bucket.values())[::-1]
         mark = len(trail)
+        if not pattern.annots and pattern.args and not self._mixed.get(key):
+            # every argument a distinct unbound variable (``val(_, V)`` in a .findall):
+            # each fact binds them as they stand, with no unification to run
+            vs = pattern.args
+            for v in vs:
+                if v.__class__ is not Var or v in s:
+                    break
+            else:
+                if len({id(v) for v in vs}) == len(vs):
+                    for b in cands:
+                        for v, a in zip(vs, b.args):  # noqa: B905 - same arity (the key)
+                            s[v] = a
+                            trail.append(v)
+                        yield None
+                        undo(s, trail, mark)
+                    return
         # annotations with variables can match a belief's annotations in several ways
         # (fact(1)[source(S)] against [source(a),source(b)]): each is a solution
         several = bool(pattern.annots) and not is_ground_annots(pattern.annots)

@@ -205,10 +205,21 @@ class Cons:
 
 
 def make_list(items: Iterable[Term], tail: Term = NIL) -> Term:
-    """Build a list term from Python items."""
+    """Build a list term from Python items (each cell's groundness carried along from
+    the tail rather than recomputed: ``.findall`` builds lists of thousands)."""
     out = tail
-    for item in reversed(list(items)):
-        out = Cons(item, out)
+    g = is_ground(tail)
+    new = _new
+    for item in reversed(items if items.__class__ is list else list(items)):
+        c = item.__class__
+        if g and not (c is int or c is float or c is str) and (c is Var or not item.ground):
+            g = False
+        cell = new(Cons)
+        cell.head = item
+        cell.tail = out
+        cell.ground = g
+        cell._hash = None
+        out = cell
     return out
 
 
