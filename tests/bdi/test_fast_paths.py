@@ -148,3 +148,17 @@ def test_large_doubles_print_with_all_their_digits() -> None:
     assert java_double_str(1e7) == "1.0E7"
     assert java_double_str(-2.5e-10) == "-2.5E-10"
     assert java_double_str(0.0005) == "5.0E-4"
+
+
+def test_free_variable_queries_bind_as_unification_would() -> None:
+    # all free and distinct: the fast path; a repeated variable, a bound one, an
+    # annotation or a rule in the predicate: unification; the answers must agree
+    src = """v(1, 1). v(2, 3). v(f(x), [a]). w(1). w(X) :- X = 9.
+!s.
++!s <- .findall(p(A, B), v(A, B), L1); .findall(A2, v(A2, A2), L2); .findall(C, v(2, C), L3);
+  .findall(D, w(D), L4); .findall(E, v(E, _)[source(self)], L5); .print(L1, L2, L3, L4, L5);
+  .findall(Z, v(Z, _), L6); .print(Z, L6)."""
+    assert run(src) == [
+        "[p(1,1),p(2,3),p(f(x),[a])][1][3][1,9][1,2,f(x)]",
+        "Z<no-value>[1,2,f(x)]",
+    ]
