@@ -179,7 +179,7 @@ def test_one_formula_cannot_take_gigabytes_or_hang_the_agent() -> None:
 def test_jasons_actions_robocog_lacks_fail_saying_so() -> None:
     program = """
     !s.
-    +!s <- .list_plans.
+    +!s <- .create_agent(b, "b.asl").
     -!s[error_msg(M)] <- .print(M); .nonesuch(1).
     """
     out: list[str] = []
@@ -187,8 +187,18 @@ def test_jasons_actions_robocog_lacks_fail_saying_so() -> None:
     Agent(
         program, "a", printer=lambda n, t: out.append(t), warn=lambda n, t: warnings.append(t)
     ).run()
-    assert out == ["not supported: .list_plans/0"]
+    assert out == ["not supported: .create_agent/2"]
     assert any("unknown internal action .nonesuch/1" in w for w in warnings)
+
+
+def test_list_plans_prints_the_library_in_one_message_whose_first_line_is_empty() -> None:
+    out: list[str] = []
+    Agent(
+        "!s.\n@l +!s <- .list_plans.\n+!t <- true.", "a", printer=lambda n, t: out.append(t)
+    ).run()
+    lines = out[0].split("\n")
+    assert lines[0] == "" and lines[1].startswith("// plans from")
+    assert lines[2:] == ["@l +!s <- .list_plans.", "@p__2 +!t <- true."]
 
 
 def test_an_ask_is_answered_by_plans_and_kqml_received_overrides_the_default(

@@ -430,7 +430,7 @@ def _internal(agent: Agent, lit: Literal, s: dict, trail: list) -> Iterator[None
 #: internal actions of Jason 3.3's standard library that robocog does not have
 NOT_SUPPORTED = frozenset(
     {
-        ".relevant_rules", ".list_plans", ".list_rules",
+        ".relevant_rules", ".list_rules",
         ".create_agent", ".kill_agent", ".save_agent", ".clone", ".at",
         ".df_register", ".df_deregister", ".df_search", ".df_subscribe", ".print_unifier",
         ".verbose", ".add_nested_source", ".current_intention", ".intention", ".signal",

@@ -77,3 +77,31 @@ def _plan_label(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
     if plan is None:
         return False
     return unify(args[0], PlanTerm(plan, str(plan).rstrip(".")), s, trail)
+
+
+@internal("list_plans")
+def _list_plans(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
+    """``.list_plans`` (or ``.list_plans({+!g})``): print the plan library, as Jason does,
+    in one message whose first line is empty: a ``// plans from`` line per source file,
+    then each plan (or each one relevant for the trigger), labelled."""
+    from robocog.bdi.messages import trigger_of
+
+    need_args(args, 0, "list_plans", 1)
+    plans = list(ag.pl)
+    if args:
+        trigger = trigger_of(resolve(args[0], s))
+        if trigger is None:
+            raise ActionError('.list_plans expects a trigger like {+!g} or "+!g"')
+        plans = ag.relevant_plans(trigger)
+    lines = [""]
+    source = None
+    for n, p in enumerate(plans, start=1):
+        if p.label is not None and p.label.functor.startswith("kqmlReceived"):
+            continue
+        if p.source != source:
+            source = p.source
+            lines.append(f"// plans from {source or 'the program'}")
+        text = str(p)
+        lines.append(text if p.label is not None else f"@p__{n} {text}")
+    ag.print("\n".join(lines))
+    return True
