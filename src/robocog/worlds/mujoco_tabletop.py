@@ -29,7 +29,7 @@ from __future__ import annotations
 import math
 import random
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -64,6 +64,17 @@ ALL_CUBES: tuple[str, ...] = (
 CLEARANCE = 0.07
 #: where the arm waits while the cameras look: above the gap between table and workbench
 READY = (0.0, -0.16, 0.30)
+
+
+def _segment_distance(
+    p: tuple[float, float], a: tuple[float, float], b: tuple[float, float]
+) -> float:
+    """Distance in the plane from ``p`` to the segment ``a``-``b``."""
+    ax, ay = a
+    dx, dy = b[0] - ax, b[1] - ay
+    length = dx * dx + dy * dy
+    t = 0.0 if length == 0 else max(0.0, min(1.0, ((p[0] - ax) * dx + (p[1] - ay) * dy) / length))
+    return math.hypot(p[0] - ax - t * dx, p[1] - ay - t * dy)
 
 
 @dataclass(frozen=True, slots=True)
@@ -116,6 +127,7 @@ class MujocoTabletop:
         self.views: dict[str, CubeView] = {}
         self.rests: dict[str, str] = {}
         self.seen_fixed: list[str] = []
+        self.seen_now: set[str] = set()
         self._looked_at = -1.0
         self.log: list[Executed] = []
         self.grasps = 0
@@ -208,16 +220,19 @@ class MujocoTabletop:
         mujoco.mj_forward(self.model, self.data)
         self._run(0.4)
 
-    def perturb(self) -> str | None:
+    def perturb(self, among: Iterable[str] = ()) -> str | None:
         """Move one cube as a person would: a clear one, onto the table or onto another.
 
-        Returns a sentence saying what moved, or None when no cube could be moved.
+        The cube is drawn from ``among`` when one of those is clear (an experiment names
+        the parts its request is about), else from every clear cube. Returns a sentence
+        saying what moved, or None when no cube could be moved.
         """
         truth = self.ground_truth()
         clear = [c for c in sorted(self.present) if c != self.held and c not in truth.values()]
+        wanted = [c for c in clear if c in set(among)]
         if not clear:
             return None
-        name = self.rng.choice(clear)
+        name = self.rng.choice(wanted or clear)
         targets = [c for c in clear if c != name and truth.get(c) is not None]
         if targets and self.rng.random() < 0.5:
             other = self.rng.choice(targets)
@@ -313,7 +328,21 @@ class MujocoTabletop:
         mujoco.mj_forward(self.model, self.data)
         sightings = self.eyes.look(self.data)
         cubes = {i: n for i, n in self.tag_names.items() if n not in self.fixed}
-        self.views = cube_views(sightings, cubes)
+        views = cube_views(sightings, cubes)
+        self.seen_now = set(views)
+        # a cube no camera sees now stays where it was if a cube now stands on its top
+        # (covered, as the lower cubes of a stack are); otherwise it is forgotten
+        for name, old in sorted(self.views.items(), key=lambda kv: -kv[1].centre[2]):
+            if name in views or name == self.held or name not in self.present:
+                continue
+            if any(
+                abs(v.centre[2] - old.centre[2] - CUBE) < 0.35 * CUBE
+                and math.hypot(v.centre[0] - old.centre[0], v.centre[1] - old.centre[1])
+                < 0.5 * CUBE
+                for v in views.values()
+            ):
+                views[name] = replace(old, seen_from="memory")
+        self.views = views
         self.rests = resting(self.views, self.layout)
         seen_ids = {s.id for s in sightings}
         self.seen_fixed = [n for n in self.fixed if self.tag_ids[n] in seen_ids]
@@ -330,7 +359,7 @@ class MujocoTabletop:
         out: list[Percept] = []
         for name in self.fixed:
             out.append(Tag(self.tag_ids[name], name))
-        for name in sorted(self.views, key=lambda n: self.tag_ids[n]):
+        for name in sorted(self.seen_now, key=lambda n: self.tag_ids[n]):
             out.append(Tag(self.tag_ids[name], name))
         for name, on in self.rests.items():
             out.append(Resting(name, on))
@@ -377,24 +406,35 @@ class MujocoTabletop:
                 best = natural + diff
         return best
 
-    def _safe_z(self) -> float:
-        tops = [v.centre[2] + CUBE / 2 for n, v in self.views.items() if n != self.held]
-        return max([0.2, *(t + CLEARANCE + CUBE / 2 for t in tops)])
+    def _safe_z(self, path: list[tuple[float, float]]) -> float:
+        """A travel height clearing every seen cube near the path (a held cube hangs below)."""
+        tops = [0.0]
+        for name, v in self.views.items():
+            if name == self.held:
+                continue
+            if any(
+                _segment_distance((v.centre[0], v.centre[1]), a, b) < 0.12
+                for a, b in zip(path, path[1:] or path, strict=False)
+            ):
+                tops.append(v.centre[2] + CUBE / 2)
+        return max(0.2, max(tops) + CLEARANCE + CUBE / 2)
 
     def _travel(self, x: float, y: float, yaw: float | None) -> None:
         """Rise to a safe height, cross over (around the base), and stop above (x, y)."""
-        z = self._safe_z()
         pos, _ = self.arm.tcp(self.arm.target)
-        cur_yaw = self._grip_yaw(float(pos[0]), float(pos[1]), None)
-        self.arm.move(np.array([pos[0], pos[1], z]), self._tool_yaw(cur_yaw))
         bx, by = self.layout.base
         a0 = math.atan2(pos[1] - by, pos[0] - bx)
         a1 = math.atan2(y - by, x - bx)
-        if abs((a1 - a0 + math.pi) % (2 * math.pi) - math.pi) > 0.6:
-            mid = a0 + ((a1 - a0 + math.pi) % (2 * math.pi) - math.pi) / 2
-            r = 0.42
-            mx, my = bx + r * math.cos(mid), by + r * math.sin(mid)
-            self.arm.move(np.array([mx, my, z]), self._grip_yaw(mx, my, None))
+        turn = (a1 - a0 + math.pi) % (2 * math.pi) - math.pi
+        path = [(float(pos[0]), float(pos[1]))]
+        if abs(turn) > 0.6:  # a straight line would pass over the base: go round at 0.42 m
+            mid = a0 + turn / 2
+            path.append((bx + 0.42 * math.cos(mid), by + 0.42 * math.sin(mid)))
+        path.append((x, y))
+        z = max(self._safe_z(path), float(pos[2]))
+        self.arm.move(np.array([pos[0], pos[1], z]), self._tool_yaw(0.0))
+        for px, py in path[1:-1]:
+            self.arm.move(np.array([px, py, z]), self._grip_yaw(px, py, None))
         self.arm.move(np.array([x, y, z]), self._grip_yaw(x, y, yaw))
 
     def _tool_yaw(self, fallback: float) -> float:
@@ -405,7 +445,7 @@ class MujocoTabletop:
     def _home(self) -> None:
         """Back to the ready pose, where the arm hides little from the cameras."""
         pos, _ = self.arm.tcp(self.arm.target)
-        z = max(float(pos[2]), self._safe_z())
+        z = max(float(pos[2]), self._safe_z([(float(pos[0]), float(pos[1]))]))
         try:
             self.arm.move(np.array([pos[0], pos[1], z]), self._tool_yaw(0.0))
         except IKError:
@@ -438,8 +478,7 @@ class MujocoTabletop:
         self.arm.move(np.array([x, y, z - 0.002]), yaw, speed=0.12)
         self.arm.close()
         self.grasps += 1
-        self.arm.move(np.array([x, y, z + 0.04]), yaw, speed=0.12)
-        self.arm.move(np.array([x, y, self._safe_z() + CUBE]), yaw)
+        self.arm.move(np.array([x, y, z + 0.06]), yaw, speed=0.12)
         if self.arm.finger_gap() < CUBE * 0.7:
             self.arm.open()
             self._home()
@@ -482,7 +521,9 @@ class MujocoTabletop:
         if on in self.fixed:
             region = self.layout.region(on)
             x, y = self._free_slot(on, {})
-            z, yaw = region.top + CUBE / 2 + 0.003, None
+            # square to the table (the cube sits square in the fingers), so that the
+            # front camera sees a face of it straight on once others cover its top
+            z, yaw = region.top + CUBE / 2 + 0.003, 0.0
         else:
             view = self.views.get(on)
             if view is None:
@@ -505,6 +546,17 @@ class MujocoTabletop:
             where = f"on the {seen}" if seen else "somewhere else"
             return Outcome.failure(f"the {obj} did not stay on the {on}: it is {where}")
         return Outcome.success()
+
+    @property
+    def failed_grasps(self) -> int:
+        """Grasps that did not end with the cube in the hand."""
+        return sum(
+            1
+            for e in self.log
+            if isinstance(e.command, PickUp | Unstack)
+            and not e.outcome.ok
+            and ("grasp failed" in e.outcome.reason or "fell" in e.outcome.reason)
+        )
 
     def close(self) -> None:
         """Free the renderers."""
