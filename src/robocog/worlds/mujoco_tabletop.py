@@ -181,7 +181,7 @@ class MujocoTabletop:
                 yaw = self.rng.uniform(-0.25, 0.25)
                 if support in self.fixed:
                     region = self.layout.region(support)
-                    x, y = self._free_slot(support, placed)
+                    x, y = self._free_slot(support, placed, by_hand=True)
                     pos = (x + jitter[0], y + jitter[1], region.top + CUBE / 2 + 0.001)
                 elif support in placed:
                     bx, by, bz, byaw = placed[support]
@@ -236,17 +236,25 @@ class MujocoTabletop:
         targets = [c for c in clear if c != name and truth.get(c) is not None]
         if targets and self.rng.random() < 0.5:
             other = self.rng.choice(targets)
-            (x, y, z), yaw = self.cube_pose(other)
-            self._set_cube(name, (x, y, z + CUBE + 0.002), yaw)
-            where = f"onto the {other}"
+            self.move_by_hand(name, other)
+            return f"the {name} was moved onto the {other}"
+        self.move_by_hand(name, "table")
+        return f"the {name} was moved to the table"
+
+    def move_by_hand(self, name: str, onto: str) -> None:
+        """Set a cube on a free place of a fixed object, or on top of another cube."""
+        if name not in self.present or name == self.held:
+            raise ValueError(f"the {name} is not on the table to be moved")
+        if onto in self.fixed:
+            x, y = self._free_slot(onto, {}, by_hand=True)
+            top = self.layout.region(onto).top
+            self._set_cube(name, (x, y, top + CUBE / 2 + 0.002), self.rng.uniform(-0.4, 0.4))
         else:
-            x, y = self._free_slot("table", {})
-            self._set_cube(name, (x, y, CUBE / 2 + 0.002), self.rng.uniform(-0.4, 0.4))
-            where = "to the table"
+            (x, y, z), yaw = self.cube_pose(onto)
+            self._set_cube(name, (x, y, z + CUBE + 0.002), yaw)
         mujoco.mj_forward(self.model, self.data)
         self._run(0.5)
         self._looked_at = -1.0
-        return f"the {name} was moved {where}"
 
     # -- ground truth, for judging a run (the mind never sees it) --------------------
 
@@ -498,15 +506,21 @@ class MujocoTabletop:
         return Outcome.success()
 
     def _free_slot(
-        self, fixed: str, extra: Mapping[str, tuple[float, float, float, float]]
+        self,
+        fixed: str,
+        extra: Mapping[str, tuple[float, float, float, float]],
+        by_hand: bool = False,
     ) -> tuple[float, float]:
+        """A place on ``fixed`` with no cube near it: as the cameras saw it for the arm,
+        as it is for a placement by hand (``by_hand``, with ``extra`` just placed)."""
         region = self.layout.region(fixed)
-        taken = [(v.centre[0], v.centre[1]) for n, v in self.views.items() if n != self.held]
-        taken += [(p[0], p[1]) for p in extra.values()]
-        if extra or not self.views:
+        taken = [(p[0], p[1]) for p in extra.values()]
+        if by_hand:
             taken += [
                 self.cube_pose(c)[0][:2] for c in self.present if c not in extra and c != self.held
             ]
+        else:
+            taken += [(v.centre[0], v.centre[1]) for n, v in self.views.items() if n != self.held]
         for slot in region.slots:
             if all(math.hypot(slot[0] - tx, slot[1] - ty) > CUBE * 1.3 for tx, ty in taken):
                 return slot

@@ -17,7 +17,10 @@ reads where the simulator keeps its bodies: only images and the calibration.
 
 from __future__ import annotations
 
+import contextlib
 import math
+import os
+from collections.abc import Iterator
 from dataclasses import dataclass
 
 import mujoco
@@ -52,6 +55,23 @@ class CubeView:
     yaw: float
     upright: bool
     seen_from: str
+
+
+@contextlib.contextmanager
+def _quiet_stderr() -> Iterator[None]:
+    """Send file descriptor 2 to /dev/null for a while (C code writes there directly)."""
+    try:
+        saved = os.dup(2)
+    except OSError:
+        yield
+        return
+    try:
+        with open(os.devnull, "wb") as null:
+            os.dup2(null.fileno(), 2)
+            yield
+    finally:
+        os.dup2(saved, 2)
+        os.close(saved)
 
 
 class Eyes:
@@ -96,9 +116,13 @@ class Eyes:
             np.uint8
         )
         t = time.perf_counter()
-        found = self.detector.detect(
-            grey, estimate_tag_pose=True, camera_params=self.intrinsics(camera), tag_size=TAG_SIZE
-        )
+        with _quiet_stderr():  # the library prints pose-solver notes on the C stream
+            found = self.detector.detect(
+                grey,
+                estimate_tag_pose=True,
+                camera_params=self.intrinsics(camera),
+                tag_size=TAG_SIZE,
+            )
         self.detect_seconds += time.perf_counter() - t
         cam = mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_CAMERA, camera)
         origin = data.cam_xpos[cam].copy()
