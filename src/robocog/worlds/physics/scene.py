@@ -26,8 +26,12 @@ from robocog.worlds.physics.tags import BLACK_CELLS, TOTAL_CELLS, png_bytes, tag
 CUBE = 0.05
 """Edge of every cube (metres)."""
 
-TAG_SIZE = CUBE * BLACK_CELLS / TOTAL_CELLS
-"""Edge of a cube tag's black square, what the detector calls the tag size."""
+TAG_FACE = 0.999
+"""Share of a cube's face the tag covers: all of it (a smaller tag is placed less
+surely in depth by the detector, two and a half centimetres off at 0.9 of the face)."""
+
+TAG_SIZE = CUBE * TAG_FACE * BLACK_CELLS / TOTAL_CELLS
+"""Edge of a tag's black square (4 cm), what the detector calls the tag size."""
 
 BIN_INNER = 0.13
 BIN_WALL = 0.008
@@ -131,7 +135,7 @@ class Layout:
 
 #: where the overhead camera hangs and how wide it sees (vertical field of view, degrees)
 CAMERA_POS = (0.0, -0.12, 1.25)
-CAMERA_FOVY = 45.0
+CAMERA_FOVY = 40.0
 #: the front camera, behind the arm, looking down at the bins at about 40 degrees
 FRONT_POS = (0.0, -0.8, 0.7)
 FRONT_XYAXES = "1 0 0 0 0.655 0.756"
@@ -236,7 +240,8 @@ def scene_xml(
         tag_id = fixed_tags[region.name]
         tx, ty = region.tag_at
         bodies.append(
-            f'<geom name="tagplate_{region.name}" type="box" size="{CUBE / 2} {CUBE / 2} 0.0005" '
+            f'<geom name="tagplate_{region.name}" type="box" '
+            f'size="{CUBE * TAG_FACE / 2} {CUBE * TAG_FACE / 2} 0.0005" '
             f'pos="{tx} {ty} 0.0005" material="tag{tag_id}" contype="0" conaffinity="0"/>'
         )
         if region.name in BIN_COLOURS:
@@ -266,17 +271,18 @@ def scene_xml(
         colour = _rgba(CUBE_COLOURS.get(name, (0.8, 0.8, 0.8)))
         x, y, z = OFFSTAGE[0] + 0.1 * i, OFFSTAGE[1], OFFSTAGE[2] + CUBE / 2
         h = CUBE / 2
+        t = h * TAG_FACE
         # the cube's body is its colour; a thin tagged skin on each face shows the tag
         skins = "".join(
             f'<geom type="box" size="{sx} {sy} {sz}" pos="{px} {py} {pz}" material="tag{tag_id}" '
             f'contype="0" conaffinity="0" mass="0"/>'
             for (sx, sy, sz, px, py, pz) in (
-                (h * 0.999, h * 0.999, 0.0003, 0, 0, h),
-                (h * 0.999, h * 0.999, 0.0003, 0, 0, -h),
-                (h * 0.999, 0.0003, h * 0.999, 0, h, 0),
-                (h * 0.999, 0.0003, h * 0.999, 0, -h, 0),
-                (0.0003, h * 0.999, h * 0.999, h, 0, 0),
-                (0.0003, h * 0.999, h * 0.999, -h, 0, 0),
+                (t, t, 0.0003, 0, 0, h),
+                (t, t, 0.0003, 0, 0, -h),
+                (t, 0.0003, t, 0, h, 0),
+                (t, 0.0003, t, 0, -h, 0),
+                (0.0003, t, t, h, 0, 0),
+                (0.0003, t, t, -h, 0, 0),
             )
         )
         bodies.append(
