@@ -280,7 +280,7 @@ def run(args: argparse.Namespace) -> int:
     if getattr(args, "world", "symbolic") == "mujoco":
         from robocog.experiments.assembly_physics import run_physical
 
-        return run_physical(args)
+        return run_physical(args, SEQUENCES, make_world, run_sequence)
     from rich.console import Console
     from rich.progress import Progress
     from rich.table import Table

@@ -12,12 +12,15 @@ from __future__ import annotations
 
 import argparse
 import time
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
 from robocog.atomic import write_json, write_text
-from robocog.experiments.assembly import SEQUENCES, SequenceRun, make_world, run_sequence
 from robocog.experiments.report import provenance, provenance_lines
+
+#: a sequence's run (``robocog.experiments.assembly.SequenceRun``, handed in by it)
+SequenceRun = Any
 
 
 def _row(req: Any) -> dict[str, Any]:
@@ -51,8 +54,17 @@ def save_video(frames: list[Any], path: Path, fps: float = 8.0) -> str | None:
     return path.name
 
 
-def run_physical(args: argparse.Namespace) -> int:
-    """Run the sequences on the physical tabletop; print, report, write JSON."""
+def run_physical(
+    args: argparse.Namespace,
+    sequences: dict[str, Any],
+    make_world: Callable[..., Any],
+    run_sequence: Callable[..., Any],
+) -> int:
+    """Run the sequences on the physical tabletop; print, report, write JSON.
+
+    The assembly module hands in its sequences and runners (it imports this module,
+    so this one does not import it back).
+    """
     import imageio.v3 as iio
     from rich.console import Console
 
@@ -64,7 +76,7 @@ def run_physical(args: argparse.Namespace) -> int:
     films: dict[str, str | None] = {}
     frames: dict[str, list[str]] = {}
     stats: dict[str, dict[str, float]] = {}
-    for name in SEQUENCES:
+    for name in sequences:
         world = make_world("mujoco", args.seed, 0.0, record=video)
         world.frame_every = 0.5
         keys: list[str] = []
@@ -99,8 +111,8 @@ def run_physical(args: argparse.Namespace) -> int:
         }
         world.close()
         console.print(_summary_line(name, run, stats[name]))
-    failing: dict[str, list[SequenceRun]] = {name: [] for name in SEQUENCES}
-    for name in SEQUENCES:
+    failing: dict[str, list[SequenceRun]] = {name: [] for name in sequences}
+    for name in sequences:
         for i in range(args.runs):
             run = run_sequence(
                 name,
