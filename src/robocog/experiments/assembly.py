@@ -136,6 +136,21 @@ def run_sequence(
     physical = world_kind == "mujoco"
     if world is None:
         world = make_world(world_kind, seed, failure_rate)
+        try:
+            return run_sequence(
+                sequence,
+                seed,
+                failure_rate,
+                mode,
+                max_cycles,
+                world_kind,
+                perturb,
+                world,
+                on_request,
+            )
+        finally:
+            if hasattr(world, "close"):  # the physical world's renderers hold GL contexts
+                world.close()
     mind = PlannerMind(mode=mode, perceive_scene=physical)
     loop = Loop(world, mind)
     out = SequenceRun(sequence, seed, failure_rate)

@@ -573,7 +573,8 @@ class MujocoTabletop:
         )
 
     def close(self) -> None:
-        """Free the renderers."""
+        """Free the renderers (their GL contexts are best freed while this one is alive)."""
         self.eyes.close()
         if self._video is not None:
             self._video.close()
+            self._video = None

@@ -22,6 +22,7 @@ import math
 import os
 from collections.abc import Iterator
 from dataclasses import dataclass
+from typing import Any
 
 import mujoco
 import numpy as np
@@ -57,6 +58,20 @@ class CubeView:
     seen_from: str
 
 
+_DETECTOR: Any = None
+
+
+def shared_detector() -> Any:
+    """One tag36h11 detector for the process (its setup is the costly part; it keeps no
+    state between images)."""
+    global _DETECTOR
+    if _DETECTOR is None:
+        from pupil_apriltags import Detector
+
+        _DETECTOR = Detector(families="tag36h11", nthreads=1, quad_decimate=1.0)
+    return _DETECTOR
+
+
 @contextlib.contextmanager
 def _quiet_stderr() -> Iterator[None]:
     """Send file descriptor 2 to /dev/null for a while (C code writes there directly)."""
@@ -78,12 +93,10 @@ class Eyes:
     """Renders the cameras and detects tags; one per model."""
 
     def __init__(self, model: mujoco.MjModel, width: int = 1280, height: int = 960) -> None:
-        from pupil_apriltags import Detector
-
         self.model = model
         self.width, self.height = width, height
-        self.renderer = mujoco.Renderer(model, height, width)
-        self.detector = Detector(families="tag36h11", nthreads=1, quad_decimate=1.0)
+        self.renderer: mujoco.Renderer | None = mujoco.Renderer(model, height, width)
+        self.detector = shared_detector()
         self.frames = 0
         self.render_seconds = 0.0
         self.detect_seconds = 0.0
@@ -101,6 +114,8 @@ class Eyes:
         import time
 
         t = time.perf_counter()
+        if self.renderer is None:
+            raise RuntimeError("these eyes are closed")
         self.renderer.update_scene(data, camera=camera)
         image = self.renderer.render()
         self.render_seconds += time.perf_counter() - t
@@ -158,8 +173,10 @@ class Eyes:
         return out
 
     def close(self) -> None:
-        """Free the renderer's GL context."""
-        self.renderer.close()
+        """Free the renderer's GL context (once)."""
+        if self.renderer is not None:
+            self.renderer.close()
+            self.renderer = None
 
 
 def cube_views(sightings: list[Sighting], names: dict[int, str]) -> dict[str, CubeView]:
