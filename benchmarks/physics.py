@@ -19,6 +19,7 @@ import argparse
 import os
 import time
 
+import robocog.worlds.physics  # noqa: F401  (chooses the GL backend before mujoco loads)
 from robocog.experiments.assembly import make_world, run_sequence
 
 

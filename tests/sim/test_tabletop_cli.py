@@ -22,3 +22,15 @@ def test_a_script_becomes_commands() -> None:
 def test_a_bad_command_is_named(bad: str) -> None:
     with pytest.raises(ValueError, match="command 2"):
         parse_script(f"PickUp X; {bad}")
+
+
+def test_the_core_and_the_commands_load_without_mujoco() -> None:
+    import subprocess
+    import sys
+
+    code = (
+        "import sys, robocog, robocog.worlds, robocog.worlds.tabletop, robocog.sim.cli, "
+        "robocog.experiments.assembly, robocog.minds.planner_mind; "
+        "sys.exit('mujoco' in sys.modules or 'pupil_apriltags' in sys.modules)"
+    )
+    assert subprocess.run([sys.executable, "-c", code], check=False).returncode == 0
