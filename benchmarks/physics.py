@@ -78,6 +78,8 @@ def main() -> None:
             replans = sum(r.record.replans for r in run.requests)
             ok += run.reached
             failed = [r.table for r in run.requests if not r.reached]
+            if run.stopped:
+                failed.append(f"stopped at {run.stopped}")
             print(
                 f"seed {seed}: {'every table reached' if run.reached else f'NOT reached: {failed}'}"
                 f"; {moved[0].table + ': ' + str(moved[0].perturbed) if moved else 'nothing moved'}"

@@ -94,11 +94,12 @@ class SequenceRun:
     seed: int
     failure_rate: float
     requests: list[RequestRun] = field(default_factory=list)
+    stopped: str | None = None
 
     @property
     def reached(self) -> bool:
-        """True when every request's goal held on the tabletop."""
-        return all(r.reached for r in self.requests)
+        """True when every request's goal held on the tabletop (and none was left out)."""
+        return self.stopped is None and all(r.reached for r in self.requests)
 
 
 def make_world(kind: str, seed: int, failure_rate: float, record: bool = False) -> Any:
@@ -159,12 +160,16 @@ def run_sequence(
     candidates = [t for t in requests if len(experiment(t).plan) >= 2 or t in SPLITS]
     perturb_at = rng.choice(candidates) if perturb and physical and candidates else None
     for stage in SEQUENCES[sequence]:
-        if stage[0] == "merge":
-            world.replace_with_block(stage[1], stage[2])
-            continue
-        if stage[0] == "add":
-            world.add_parts(stage[1])
-            continue
+        try:
+            if stage[0] == "merge":
+                world.replace_with_block(stage[1], stage[2])
+                continue
+            if stage[0] == "add":
+                world.add_parts(stage[1])
+                continue
+        except ValueError as exc:  # a request before it failed: the stage cannot be done
+            out.stopped = f"{stage[0]} {stage[-1]}: {exc}"
+            break
         exp = experiment(stage[1])
         start_clock, start_failed = world.time(), world.failed_grasps
         start_wall = time.perf_counter()

@@ -155,6 +155,8 @@ def _summary_line(name: str, run: SequenceRun, stats: dict[str, float] | None) -
     reached = sum(r.reached for r in run.requests)
     replans = sum(r.record.replans for r in run.requests)
     line = f"{name}: {reached}/{len(run.requests)} requests reached, {replans} replans"
+    if run.stopped:
+        line += f", stopped at {run.stopped}"
     if stats:
         rtf = stats["sim_seconds"] / stats["wall_seconds"] if stats["wall_seconds"] else 0.0
         line += (

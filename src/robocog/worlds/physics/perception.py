@@ -180,36 +180,50 @@ class Eyes:
 
 
 def cube_views(sightings: list[Sighting], names: dict[int, str]) -> dict[str, CubeView]:
-    """One view per cube seen: from its top face if seen, else from a side face.
+    """One view per cube seen, fused from every face any camera saw of it.
 
     A face's centre lies half a cube from the cube's centre, against the face's normal.
-    A small tag's pose is well placed but its tilt is uncertain (the two mirror
-    solutions of a planar pose lie close), so a face that looks up by more than 35
-    degrees counts as the top face and one within 20 degrees of the horizon as a side.
+    A small tag is well placed across the image but less surely in depth, and its tilt
+    is uncertain (the two mirror solutions of a planar pose lie close; the wrong one
+    also moves the tag along the line of sight). So a face that looks up by more than
+    35 degrees counts as a top face and one within 20 degrees of the horizon as a side,
+    each gives a centre, and the cube's centre is the median of them: one bad pose
+    among three is outvoted. The yaw comes from the squarest top face.
     """
-    best: dict[int, Sighting] = {}
-
-    def rank(s: Sighting) -> tuple[bool, bool, float]:
-        return (s.normal[2] > TOP_FACE, s.camera == "overhead", s.margin)
-
+    by_id: dict[int, list[Sighting]] = {}
     for s in sightings:
-        if s.id in names and (s.id not in best or rank(s) > rank(best[s.id])):
-            best[s.id] = s
+        if s.id in names:
+            by_id.setdefault(s.id, []).append(s)
     out = {}
-    for tag_id, s in best.items():
-        nx, ny, nz = s.normal
-        px, py, pz = s.position
-        if nz > TOP_FACE:
-            centre, yaw, upright = (px, py, pz - CUBE / 2), s.yaw, True
-        elif abs(nz) < SIDE_FACE:
-            h = math.hypot(nx, ny)
-            centre = (px - nx / h * CUBE / 2, py - ny / h * CUBE / 2, pz)
-            yaw, upright = math.atan2(ny, nx), True
-        else:
-            centre = (px - nx * CUBE / 2, py - ny * CUBE / 2, pz - nz * CUBE / 2)
-            yaw, upright = 0.0, False
+    for tag_id, seen in by_id.items():
+        centres = []
+        tops = []
+        for s in seen:
+            nx, ny, nz = s.normal
+            px, py, pz = s.position
+            if nz > TOP_FACE:
+                centres.append((px, py, pz - CUBE / 2))
+                tops.append(s)
+            elif abs(nz) < SIDE_FACE:
+                h = math.hypot(nx, ny)
+                centres.append((px - nx / h * CUBE / 2, py - ny / h * CUBE / 2, pz))
         name = names[tag_id]
-        out[name] = CubeView(name, tag_id, centre, yaw, upright, s.camera)
+        if not centres:  # every face seen is tilted: the cube lies on an edge
+            s = max(seen, key=lambda t: t.margin)
+            nx, ny, nz = s.normal
+            px, py, pz = s.position
+            centre = (px - nx * CUBE / 2, py - ny * CUBE / 2, pz - nz * CUBE / 2)
+            out[name] = CubeView(name, tag_id, centre, 0.0, False, s.camera)
+            continue
+        arr = np.array(centres)
+        centre = tuple(float(v) for v in np.median(arr, axis=0))
+        if tops:
+            best = max(tops, key=lambda t: t.normal[2])
+            yaw = best.yaw
+        else:
+            best = seen[0]
+            yaw = math.atan2(best.normal[1], best.normal[0])
+        out[name] = CubeView(name, tag_id, centre, yaw, True, best.camera)  # type: ignore[arg-type]
     return out
 
 
