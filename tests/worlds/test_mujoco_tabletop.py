@@ -105,3 +105,27 @@ def test_the_arm_stacks_one_cube_on_another_and_the_camera_sees_it_on_top(
     assert rod and rod[0].normal[2] > 0.8 and abs(rod[0].position[2] - (z + CUBE / 2)) < 0.01
     clamp = [s for s in on_top if s.id == world.tag_ids["BettClamp"] and s.normal[2] > 0.8]
     assert clamp == []
+
+
+def test_planner_mind_sees_a_cube_moved_onto_its_target_and_replans_physically() -> None:
+    from robocog.minds.planner_mind import PlannerMind
+    from robocog.planning.thesis import experiment
+    from robocog.robot.loop import Loop
+
+    world = MujocoTabletop(seed=2)
+    try:
+        mind = PlannerMind(perceive_scene=True)
+        loop = Loop(world, mind)
+        record = mind.request(
+            "The InductionHardenedRod is on the BettClamp.", facts=experiment("5.2").facts
+        )
+        loop.step()
+        assert world.held == "InductionHardenedRod"
+        world.move_by_hand("SnapRing1", "BettClamp")
+        loop.run(20, until=lambda: not mind.busy)
+        assert record.status == "reached", record.message
+        assert record.failures[0] == "seen: the SnapRing1 is on the BettClamp, not on the SnapRing2"
+        assert world.holds(("on", "InductionHardenedRod", "BettClamp"))
+        assert not world.holds(("on", "SnapRing1", "BettClamp"))
+    finally:
+        world.close()

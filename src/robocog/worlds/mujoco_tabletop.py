@@ -42,7 +42,7 @@ choose_gl()  # before mujoco is imported (importing robocog.worlds.physics did i
 
 import mujoco  # noqa: E402
 
-from robocog.worlds.physics.arm import Arm, IKError  # noqa: E402
+from robocog.worlds.physics.arm import Arm, IKError, down_rotation  # noqa: E402
 from robocog.worlds.physics.perception import CubeView, Eyes, cube_views, resting  # noqa: E402
 from robocog.worlds.physics.scene import (  # noqa: E402
     CUBE,
@@ -362,10 +362,10 @@ class MujocoTabletop:
         return float(self.data.time)
 
     def percepts(self) -> list[Percept]:
-        """The tags seen, what each seen cube rests on, and the gripper."""
+        """The tags seen, what each cube rests on (covered ones too), and the gripper."""
         self.look()
         out: list[Percept] = []
-        for name in self.fixed:
+        for name in self.seen_fixed:
             out.append(Tag(self.tag_ids[name], name))
         for name in sorted(self.seen_now, key=lambda n: self.tag_ids[n]):
             out.append(Tag(self.tag_ids[name], name))
@@ -396,8 +396,6 @@ class MujocoTabletop:
         return Outcome.failure(f"the arm cannot {type(command).__name__}")
 
     def _down(self, x: float, y: float, yaw: float | None = None) -> np.ndarray:
-        from robocog.worlds.physics.arm import down_rotation
-
         return down_rotation(self._grip_yaw(x, y, yaw))
 
     def _grip_yaw(self, x: float, y: float, yaw: float | None) -> float:
