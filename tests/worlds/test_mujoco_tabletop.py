@@ -82,9 +82,17 @@ def test_perception_says_what_rests_on_what_in_fig_5_6(world: MujocoTabletop) ->
     assert Gripper(None) in seen
 
 
+@pytest.fixture
+def fresh_world() -> MujocoTabletop:
+    w = MujocoTabletop(seed=1)
+    yield w
+    w.close()
+
+
 def test_the_arm_stacks_one_cube_on_another_and_the_camera_sees_it_on_top(
-    world: MujocoTabletop,
+    fresh_world: MujocoTabletop,
 ) -> None:
+    world = fresh_world
     assert world.execute(PickUp("InductionHardenedRod")).ok
     assert Gripper("InductionHardenedRod") in world.percepts()
     outcome = world.execute(Stack("InductionHardenedRod", "BettClamp"))
