@@ -23,9 +23,23 @@ from robocog.experiments.report import provenance, provenance_lines
 SequenceRun = Any
 
 
+def _same_as_thesis(table: str, plan: Any) -> bool | None:
+    """Whether the first plan is the thesis's for a table (None for a whole assembly)."""
+    from robocog.planning.thesis import experiment
+
+    try:
+        exp = experiment(table)
+    except (KeyError, ValueError):
+        return None
+    if not exp.plan or plan is None:
+        return None
+    return tuple(plan.lines()) == exp.plan
+
+
 def _row(req: Any) -> dict[str, Any]:
     plan = req.record.first_plan
     return {
+        "same_plan_as_thesis": _same_as_thesis(req.table, plan),
         "table": req.table,
         "request": req.record.request,
         "plan": [" ".join((st.name, *st.args)) for st in plan.steps] if plan else [],
@@ -194,15 +208,18 @@ def write_report(
             f"({st['looks']:.0f} looks: {st['render_seconds']:.1f} s rendering, "
             f"{st['detect_seconds']:.1f} s detecting).",
             "",
-            "| table | first plan | executed | replans (why) | planning | arm time | wall time | reached |",
-            "|---|---|---|---|---|---|---|---|",
+            "| table | first plan | thesis's plan | executed | replans (why) | planning | "
+            "arm time | wall time | reached |",
+            "|---|---|---|---|---|---|---|---|---|",
         ]
         for r in table_rows:
             why = "<br>".join(r["why"]) if r["why"] else ""
             if r["perturbed"]:
                 why = f"*{r['perturbed']}*<br>{why}"
             lines.append(
-                f"| {r['table']} | {'<br>'.join(r['plan'])} | {len(r['executed'])} steps | "
+                f"| {r['table']} | {'<br>'.join(r['plan'])} | "
+                f"{ {True: 'same', False: 'other', None: '-'}[r['same_plan_as_thesis']] } | "
+                f"{len(r['executed'])} steps | "
                 f"{r['replans']} {why} | {r['planning_ms']:.1f} ms | {r['sim_seconds']:.0f} s | "
                 f"{r['wall_seconds']:.1f} s | {'yes' if r['reached'] else 'NO ' + r['message']} |"
             )
