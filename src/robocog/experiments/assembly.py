@@ -12,6 +12,13 @@ Each sequence runs once without grasp failures and ``--runs`` times with failure
 injected at ``--failure-rate`` (seeded), which the mind must recover from by
 replanning. Every request's plan, iterations and search time are set beside the
 thesis's, and the world is checked: each request's goal must hold on the tabletop.
+
+``--world mujoco`` runs the same on the physical tabletop
+(:mod:`robocog.worlds.mujoco_tabletop`): the arm moves in MuJoCo, the mind plans from
+what the cameras see (``PlannerMind(perceive_scene=True)``), a slip drops the cube
+where physics lets it fall, and ``--perturb`` moves one of a request's cubes by hand
+in the middle of it. The report adds replans, planning and execution time per request,
+an animated GIF of the run and a key frame after each request.
 """
 
 from __future__ import annotations
@@ -75,6 +82,8 @@ class RequestRun:
     reached: bool
     arm_seconds: float
     failed_grasps: int
+    wall_seconds: float = 0.0
+    perturbed: str | None = None
 
 
 @dataclass
@@ -85,11 +94,23 @@ class SequenceRun:
     seed: int
     failure_rate: float
     requests: list[RequestRun] = field(default_factory=list)
+    stopped: str | None = None
 
     @property
     def reached(self) -> bool:
-        """True when every request's goal held on the tabletop."""
-        return all(r.reached for r in self.requests)
+        """True when every request's goal held on the tabletop (and none was left out)."""
+        return self.stopped is None and all(r.reached for r in self.requests)
+
+
+def make_world(kind: str, seed: int, failure_rate: float, record: bool = False) -> Any:
+    """The tabletop to run on: ``symbolic`` (instant) or ``mujoco`` (physics, cameras)."""
+    if kind == "mujoco":
+        from robocog.worlds.mujoco_tabletop import MujocoTabletop
+
+        return MujocoTabletop(seed=seed, slip_rate=failure_rate, record=record)
+    if kind != "symbolic":
+        raise ValueError(f"unknown world {kind!r}")
+    return TabletopWorld(seed=seed, grasp_failure=failure_rate)
 
 
 def run_sequence(
@@ -98,23 +119,79 @@ def run_sequence(
     failure_rate: float = 0.0,
     mode: str = "astar",
     max_cycles: int = 200,
+    world_kind: str = "symbolic",
+    perturb: bool = False,
+    world: Any = None,
+    on_request: Any = None,
 ) -> SequenceRun:
-    """Run one sequence of stages on a fresh tabletop with one PlannerMind."""
-    world = TabletopWorld(seed=seed, grasp_failure=failure_rate)
-    mind = PlannerMind(mode=mode)
+    """Run one sequence of stages on a fresh tabletop with one PlannerMind.
+
+    On the physical world the mind plans from what it sees; with ``perturb`` one
+    request, drawn by the seed among those of two steps or more, has one of its cubes
+    moved by hand after a random number of steps. ``on_request(table, world)`` is
+    called after each request (for key frames).
+    """
+    import random
+    import time
+
+    physical = world_kind == "mujoco"
+    if world is None:
+        world = make_world(world_kind, seed, failure_rate)
+        try:
+            return run_sequence(
+                sequence,
+                seed,
+                failure_rate,
+                mode,
+                max_cycles,
+                world_kind,
+                perturb,
+                world,
+                on_request,
+            )
+        finally:
+            if hasattr(world, "close"):  # the physical world's renderers hold GL contexts
+                world.close()
+    mind = PlannerMind(mode=mode, perceive_scene=physical)
     loop = Loop(world, mind)
     out = SequenceRun(sequence, seed, failure_rate)
+    rng = random.Random(seed * 7919 + 17)
+    requests = [st[1] for st in SEQUENCES[sequence] if st[0] == "request"]
+    candidates = [t for t in requests if len(experiment(t).plan) >= 2 or t in SPLITS]
+    perturb_at = rng.choice(candidates) if perturb and physical and candidates else None
     for stage in SEQUENCES[sequence]:
-        if stage[0] == "merge":
-            world.replace_with_block(stage[1], stage[2])
-            continue
-        if stage[0] == "add":
-            world.add_parts(stage[1])
-            continue
+        try:
+            if stage[0] == "merge":
+                world.replace_with_block(stage[1], stage[2])
+                continue
+            if stage[0] == "add":
+                world.add_parts(stage[1])
+                continue
+        except ValueError as exc:  # a request before it failed: the stage cannot be done
+            out.stopped = f"{stage[0]} {stage[-1]}: {exc}"
+            break
         exp = experiment(stage[1])
         start_clock, start_failed = world.time(), world.failed_grasps
+        start_wall = time.perf_counter()
         record = mind.request(exp.request, facts=exp.facts)
-        loop.run(max_cycles, until=lambda: not mind.busy)
+        moved: list[str] = []
+        if stage[1] == perturb_at:
+            after = rng.randint(1, max(1, len(exp.plan) - 1) if exp.plan else 3)
+            parts = {f[i] for f in record.goal for i in range(1, len(f))}
+
+            def disturb(
+                step: Any,
+                after: int = after,
+                parts: set[str] = parts,
+                moved: list[str] = moved,
+                record: RequestRecord = record,
+            ) -> None:
+                if not moved and len(record.executed) >= after:
+                    moved.append(world.perturb(parts) or "nothing could be moved")
+
+            loop.run(max_cycles, until=lambda: not mind.busy, on_step=disturb)
+        else:
+            loop.run(max_cycles, until=lambda: not mind.busy)
         reached = record.status == "reached" and all(world.holds(f) for f in record.goal)
         out.requests.append(
             RequestRun(
@@ -123,8 +200,12 @@ def run_sequence(
                 reached,
                 world.time() - start_clock,
                 world.failed_grasps - start_failed,
+                time.perf_counter() - start_wall,
+                moved[0] if moved else None,
             )
         )
+        if on_request is not None:
+            on_request(exp.table, world)
     return out
 
 
@@ -155,6 +236,20 @@ def configure(parser: argparse.ArgumentParser) -> None:
         help="search mode: astar (default), or the thesis's BFS first/quick",
     )
     parser.add_argument("--no-plots", action="store_true", help="skip the PNG plot")
+    parser.add_argument(
+        "--world",
+        default="symbolic",
+        choices=("symbolic", "mujoco"),
+        help="symbolic tabletop (default) or the physical one in MuJoCo (the physics extra)",
+    )
+    parser.add_argument(
+        "--perturb",
+        action="store_true",
+        help="physical world: move one of a request's cubes by hand mid-run",
+    )
+    parser.add_argument(
+        "--no-video", action="store_true", help="physical world: skip the GIF and key frames"
+    )
 
 
 def _row(req: RequestRun) -> dict[str, Any]:
@@ -180,6 +275,10 @@ def _row(req: RequestRun) -> dict[str, Any]:
         "replans": req.record.replans,
         "failed_grasps": req.failed_grasps,
         "arm_seconds": req.arm_seconds,
+        "planning_seconds": req.record.planning_seconds,
+        "wall_seconds": req.wall_seconds,
+        "perturbed": req.perturbed,
+        "failures": req.record.failures,
         "executed": req.record.executed,
     }
 
@@ -198,6 +297,10 @@ def _mind_summary(runs: list[SequenceRun]) -> dict[str, Any]:
 
 def run(args: argparse.Namespace) -> int:
     """Run both sequences with and without failures; print, report, write JSON."""
+    if getattr(args, "world", "symbolic") == "mujoco":
+        from robocog.experiments.assembly_physics import run_physical
+
+        return run_physical(args, SEQUENCES, make_world, run_sequence)
     from rich.console import Console
     from rich.progress import Progress
     from rich.table import Table

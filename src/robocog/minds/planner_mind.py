@@ -11,6 +11,16 @@ The phases of Chapter 4 of the thesis, one mind:
   fails (a grasp slips), the mind plans again from the scene as it now stands and goes
   on with the new plan, up to ``max_replans`` times.
 
+With ``perceive_scene`` the mind also trusts its eyes over its bookkeeping: a body that
+reports what each object rests on (:class:`~robocog.robot.percepts.Resting`, the
+physical tabletop reads it from tag poses) gives the scene the planner starts from, and
+after every step the mind compares what it sees with what the plan predicted. A cube
+that slipped, fell or was moved by someone differs from the prediction, and the mind
+plans again from what it sees; a request counts as reached only once a look confirms
+its last step. An object resting on the fixed object where it was first seen in the
+request rests "where it was found", as the thesis's scenes say of the parts in their
+bins; the sentences still declare the fixed objects and what no camera can see.
+
 Every search is kept (plan, iterations, seconds) so an experiment can set them beside
 the thesis's tables.
 """
@@ -31,7 +41,7 @@ from robocog.planning.planner import (
 from robocog.planning.task import Fact
 from robocog.planning.world import Scene, SceneError
 from robocog.robot.commands import Command, Outcome, PickUp, PutDown, Stack, Unstack
-from robocog.robot.percepts import Gripper, Percept, Tag
+from robocog.robot.percepts import Gripper, Percept, Resting, Tag
 
 
 def command_for_step(step: Step) -> Command:
@@ -87,6 +97,7 @@ class PlannerMind:
         planner: Planner | None = None,
         mode: str = "astar",
         max_replans: int = 20,
+        perceive_scene: bool = False,
     ) -> None:
         self.facts = facts
         self.planner = planner or Planner()
@@ -99,6 +110,11 @@ class PlannerMind:
         self._steps: list[Step] = []
         self._next = 0
         self._running: Step | None = None
+        self.perceive_scene = perceive_scene
+        self.resting: dict[str, str] = {}
+        self._seen_now: list[str] = []
+        self._fresh = False
+        self._found: dict[str, str] | None = None
 
     # -- phases -------------------------------------------------------------------
 
@@ -112,6 +128,7 @@ class PlannerMind:
         record = RequestRecord(sentences, [])
         self.records.append(record)
         self._steps, self._next, self._running = [], 0, None
+        self._found = None
         try:
             record.goal = goal_from_english(sentences)
             if facts is not None:
@@ -138,6 +155,9 @@ class PlannerMind:
         seen = [p.name for p in percepts if isinstance(p, Tag)]
         if seen:
             self.seen = list(dict.fromkeys(seen))
+            self._seen_now = self.seen
+            self.resting = {p.obj: p.on for p in percepts if isinstance(p, Resting)}
+            self._fresh = True
         for p in percepts:
             if isinstance(p, Gripper):
                 self.holding = p.holding
@@ -153,8 +173,25 @@ class PlannerMind:
             except (PlanningError, ValueError) as exc:
                 record.status, record.message = "failed", f"learning phase: {exc}"
                 return []
+            if self.perceive_scene:
+                self.scene = self._seen_scene(self.scene)
+        if self.perceive_scene and self._fresh and record.status == "executing":
+            self._fresh = False
+            seen_scene = self._seen_scene(self.scene)
+            differences = self._differences(self.scene, seen_scene)
+            if differences:
+                record.failures.append("seen: " + "; ".join(differences))
+                self.scene = seen_scene
+                if record.replans >= self.max_replans:
+                    record.status = "failed"
+                    record.message = f"gave up after {record.replans} replans"
+                    return []
+                record.status = "planning"
         if record.status == "planning":
-            self._sync_hand()
+            if self.perceive_scene:
+                self.scene = self._seen_scene(self.scene)
+            else:
+                self._sync_hand()
             if not self._plan(record):
                 return []
         if self._next >= len(self._steps):
@@ -183,8 +220,8 @@ class PlannerMind:
                 return
             record.executed.append(str(step))
             self._next += 1
-            if self._next >= len(self._steps):
-                record.status = "reached"
+            if self._next >= len(self._steps) and not self.perceive_scene:
+                record.status = "reached"  # with eyes, the next look confirms it
             return
         record.failures.append(f"{step}: {outcome.reason}")
         if record.replans >= self.max_replans:
@@ -210,6 +247,65 @@ class PlannerMind:
         else:
             return
         self.scene = scene
+
+    def _seen_scene(self, base: Scene) -> Scene:
+        """``base`` with what the last look saw: each object in view on what it rests on.
+
+        An object in view resting on nothing known (in the hand, in the air, tilted) is on
+        nothing; one on the fixed object where it was first seen in this request rests
+        where it was found. Objects out of view keep what ``base`` says of them.
+        """
+        scene = base.copy()
+        fixed = set(scene.fixed)
+        if self._found is None:  # the request's first look: where each part was found
+            self._found = {n: on for n, on in self.resting.items() if on in fixed}
+        for name in self._seen_now:
+            if name in fixed:
+                continue
+            scene.add_object(name)
+            on = self.resting.get(name)
+            if on is None or on == name:
+                scene.on.pop(name, None)
+            elif on in fixed and self._found.get(name) == on:
+                scene.on.pop(name, None)
+            else:
+                scene.add_object(on, fixed=on in fixed)
+                scene.on[name] = on
+        scene.held = self.holding if self.holding in scene.objects else None
+        if scene.held is not None:
+            scene.on.pop(scene.held, None)
+            scene.on = {top: below for top, below in scene.on.items() if below != scene.held}
+        try:
+            scene.check()
+        except SceneError:
+            return base  # a look that cannot be (two cubes on one): keep the prediction
+        return scene
+
+    def _differences(self, predicted: Scene, seen: Scene) -> list[str]:
+        """What the look shows otherwise than the plan predicted, in words.
+
+        An object the plan left on nothing that is seen on a fixed object is where the
+        plan put it (a put-down returns a part to a fixed place), not a difference.
+        """
+        out = []
+        fixed = set(seen.fixed)
+        for name in self._seen_now:
+            if name in fixed:
+                continue
+            want, have = predicted.on.get(name), seen.on.get(name)
+            if want == have or (want is None and (have is None or have in fixed)):
+                continue
+            if want is None and have in fixed:
+                continue
+            out.append(
+                f"the {name} is on {'the ' + have if have else 'nothing known'}, "
+                f"not on {'the ' + want if want else 'nothing'}"
+            )
+        if predicted.held != seen.held:
+            out.append(
+                f"the hand holds {seen.held or 'nothing'}, not {predicted.held or 'nothing'}"
+            )
+        return out
 
     def _plan(self, record: RequestRecord) -> bool:
         assert self.scene is not None

@@ -18,7 +18,16 @@ from robocog.robot.commands import (
     Turn,
     Unstack,
 )
-from robocog.robot.percepts import Detection, Gripper, Obstacle, Percept, Pose, Range, Tag
+from robocog.robot.percepts import (
+    Detection,
+    Gripper,
+    Obstacle,
+    Percept,
+    Pose,
+    Range,
+    Resting,
+    Tag,
+)
 from robocog.robot.protocols import Body, Mind
 
 __all__ = [
@@ -40,6 +49,7 @@ __all__ = [
     "Pose",
     "PutDown",
     "Range",
+    "Resting",
     "Stack",
     "Status",
     "Tag",

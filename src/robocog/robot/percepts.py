@@ -57,6 +57,18 @@ class Tag:
 
 
 @dataclass(frozen=True, slots=True)
+class Resting:
+    """What the camera sees an object resting on: ``obj`` stands on ``on``.
+
+    A body that sees where its tags are (a stack from heights and overlap, a cube over a
+    bin) reports it; a mind may plan from it instead of being told in sentences.
+    """
+
+    obj: str
+    on: str
+
+
+@dataclass(frozen=True, slots=True)
 class Range:
     """One range sensor's reading (an ultrasonic sensor, for instance)."""
 
@@ -64,4 +76,4 @@ class Range:
     distance: float
 
 
-Percept = Detection | Obstacle | Pose | Gripper | Tag | Range
+Percept = Detection | Obstacle | Pose | Gripper | Tag | Resting | Range

@@ -1,5 +1,8 @@
 """``robocog sim garbage --ros2|--ros1``: an embedded world served as a ROS robot.
 
+``robocog sim tabletop --physics`` runs the physical tabletop on its own instead (see
+:mod:`robocog.sim.tabletop`).
+
 Run it in one terminal and ``robocog bridge ros2 --loopback --mind nars`` (or ``bdi``)
 in another; any ROS 2 node on rmw_cyclonedds in the same domain sees the robot too.
 With ``--ros1`` the field is a rospy node (run by the Python that has rospy) serving
@@ -16,7 +19,7 @@ import sys
 from pathlib import Path
 from typing import Any
 
-WORLDS = ("garbage",)
+WORLDS = ("garbage", "tabletop")
 
 
 def configure(parser: argparse.ArgumentParser) -> None:
@@ -56,10 +59,33 @@ def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--record", type=Path, metavar="FILE.mcap", help="record every message")
     parser.add_argument("--max-frames", type=int, help="end after this many frames")
     parser.add_argument("-v", "--verbose", action="store_true", help="log more")
+    tabletop = parser.add_argument_group("tabletop")
+    tabletop.add_argument(
+        "--physics", action="store_true", help="tabletop: the MuJoCo arm, cameras and tags"
+    )
+    tabletop.add_argument(
+        "--do",
+        default=None,
+        metavar="SCRIPT",
+        help="tabletop: commands such as 'PickUp A; Stack A B' (default: Table 5.2's plan)",
+    )
+    tabletop.add_argument(
+        "--perturb", action="store_true", help="tabletop: move a cube by hand halfway through"
+    )
+    tabletop.add_argument("--no-video", action="store_true", help="tabletop: no GIF or frame")
+    tabletop.add_argument(
+        "--out", default="reports/sim_tabletop", metavar="DIR", help="tabletop: film folder"
+    )
 
 
 def run(args: argparse.Namespace) -> int:
     """Serve the world until its mission ends or the process is stopped."""
+    if args.world == "tabletop":
+        from robocog.sim.tabletop import DEFAULT_SCRIPT, run_tabletop
+
+        if args.do is None:
+            args.do = DEFAULT_SCRIPT
+        return run_tabletop(args)
     logging.basicConfig(
         level=logging.DEBUG if args.verbose else logging.INFO,
         format="%(asctime)s %(levelname)s %(name)s: %(message)s",
