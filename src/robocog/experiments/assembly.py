@@ -17,6 +17,7 @@ thesis's, and the world is checked: each request's goal must hold on the tableto
 from __future__ import annotations
 
 import argparse
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -98,11 +99,15 @@ def run_sequence(
     failure_rate: float = 0.0,
     mode: str = "astar",
     max_cycles: int = 200,
+    watch: Callable[..., Any] | None = None,
 ) -> SequenceRun:
-    """Run one sequence of stages on a fresh tabletop with one PlannerMind."""
+    """Run one sequence of stages on a fresh tabletop with one PlannerMind (``watch``,
+    given the world, the mind and the loop, returns the loop's ``on_step``: the
+    inspector's hook)."""
     world = TabletopWorld(seed=seed, grasp_failure=failure_rate)
     mind = PlannerMind(mode=mode)
     loop = Loop(world, mind)
+    on_step = watch(world, mind, loop) if watch else None
     out = SequenceRun(sequence, seed, failure_rate)
     for stage in SEQUENCES[sequence]:
         if stage[0] == "merge":
@@ -114,7 +119,7 @@ def run_sequence(
         exp = experiment(stage[1])
         start_clock, start_failed = world.time(), world.failed_grasps
         record = mind.request(exp.request, facts=exp.facts)
-        loop.run(max_cycles, until=lambda: not mind.busy)
+        loop.run(max_cycles, until=lambda: not mind.busy, on_step=on_step)
         reached = record.status == "reached" and all(world.holds(f) for f in record.goal)
         out.requests.append(
             RequestRun(
@@ -155,6 +160,9 @@ def configure(parser: argparse.ArgumentParser) -> None:
         help="search mode: astar (default), or the thesis's BFS first/quick",
     )
     parser.add_argument("--no-plots", action="store_true", help="skip the PNG plot")
+    from robocog.inspector.cli import add_arguments
+
+    add_arguments(parser)
 
 
 def _row(req: RequestRun) -> dict[str, Any]:
@@ -206,14 +214,20 @@ def run(args: argparse.Namespace) -> int:
     clean: dict[str, SequenceRun] = {}
     failing: dict[str, list[SequenceRun]] = {name: [] for name in SEQUENCES}
     total = len(SEQUENCES) * (1 + args.runs)
-    with Progress(console=console, transient=True) as progress:
+    from robocog.inspector.cli import session
+
+    with (
+        session(args, "robocog experiment assembly") as inspecting,
+        Progress(console=console, transient=True) as progress,
+    ):
+        watch = inspecting.watcher() if inspecting else None
         task = progress.add_task("assembly", total=total)
         for name in SEQUENCES:
-            clean[name] = run_sequence(name, args.seed, 0.0, args.mode)
+            clean[name] = run_sequence(name, args.seed, 0.0, args.mode, watch=watch)
             progress.advance(task)
             for i in range(args.runs):
                 failing[name].append(
-                    run_sequence(name, args.seed + 1 + i, args.failure_rate, args.mode)
+                    run_sequence(name, args.seed + 1 + i, args.failure_rate, args.mode, watch=watch)
                 )
                 progress.advance(task)
 
