@@ -332,14 +332,19 @@ class InspectorServer:
     """Serves an Inspector from a thread: ``start()`` returns the page's address."""
 
     def __init__(
-        self, inspector: Inspector, host: str = "127.0.0.1", port: int = 0, token: str | None = None
+        self,
+        inspector: Inspector,
+        host: str = "127.0.0.1",
+        port: int = 0,
+        token: str | None = None,
+        rate: float = 5.0,
     ) -> None:
         self.inspector = inspector
         self.host = host
         self.port = port
         loopback = is_loopback(host)
         self.token = token if token is not None else (None if loopback else new_token())
-        self.app = make_app(inspector, self.token, allow_any_host=not loopback)
+        self.app = make_app(inspector, self.token, allow_any_host=not loopback, rate=rate)
         self._server: Any = None
         self._thread: threading.Thread | None = None
 

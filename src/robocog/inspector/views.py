@@ -46,7 +46,7 @@ def thin(
         chosen = list(points)
     else:
         recent = 100
-        step = max(1, (n - recent) // (limit - recent))
+        step = max(1, -(-(n - recent) // (limit - recent)))  # rounded up
         chosen = list(points[: n - recent : step]) + list(points[n - recent :])
     return [[_r(x, 2), _r(y, 2)] for x, y in chosen]
 

@@ -353,6 +353,8 @@ function lineChart(svg, lines, opts) {
 async function loadSeries() {
   let d;
   try { d = await getJSON("/api/series"); } catch (e) { return; }
+  $("chart-collected").parentElement.hidden = !d.collected.length;
+  $("chart-hyp").parentElement.hidden = !Object.keys(d.hypotheses).length;
   lineChart($("chart-collected"), [{ name: "collected", points: d.collected, color: "#2f855a" }], { y0: 0, digits: 0, marks: d.runs });
   lineChart($("chart-cycle"), [{ name: "cycle", points: d.cycle_ms, color: "#2b6cb0" }], { y0: 0, digits: 2, marks: d.runs });
   const places = Object.keys(d.hypotheses).sort();
@@ -366,4 +368,5 @@ async function loadSeries() {
   lineChart($("chart-hyp"), chosen.map((p) => ({ name: p, points: d.hypotheses[p], color: colors[places.indexOf(p) % colors.length] })), { y0: 0, y1: 1, digits: 1, marks: d.runs });
 }
 
+setInterval(() => { if (ui.follow) loadSeries(); }, 2000);
 getJSON("/api/snapshot").then((d) => { receive(d); connect(); loadSeries(); }).catch((e) => { $("loop-state").textContent = "error: " + e.message; });
