@@ -178,9 +178,14 @@ class AtomBrowser:
 
 
 def make_app(
-    inspector: Inspector, token: str | None = None, allow_any_host: bool = False, rate: float = 5.0
+    inspector: Inspector,
+    token: str | None = None,
+    allow_any_host: bool = False,
+    rate: float = 5.0,
+    stopping: threading.Event | None = None,
 ):  # noqa: ANN201 - an ASGI app
-    """The ASGI application serving ``inspector``."""
+    """The ASGI application serving ``inspector``; streams end once ``stopping`` is set."""
+    stopping = stopping or threading.Event()
     from starlette.applications import Starlette
     from starlette.requests import Request
     from starlette.responses import Response, StreamingResponse
@@ -264,7 +269,7 @@ def make_app(
             console = -1
             wait = 1.0 / rate
             yield b"retry: 1000\n\n"
-            while not await request.is_disconnected():
+            while not stopping.is_set() and not await request.is_disconnected():
                 snap = inspector.history.latest()
                 entries = inspector.console_entries()
                 ver = max((e["id"] * 10 + (e["status"] != "queued") for e in entries), default=0)
@@ -323,7 +328,11 @@ def make_app(
                 )
                 await send({"type": "http.response.body", "body": body})
                 return
-        await app(scope, receive, send)
+        try:
+            await app(scope, receive, send)
+        except asyncio.CancelledError:
+            if not stopping.is_set():
+                raise  # a stream cut while stopping (a client that never read) is no error
 
     return guarded
 
@@ -344,7 +353,10 @@ class InspectorServer:
         self.port = port
         loopback = is_loopback(host)
         self.token = token if token is not None else (None if loopback else new_token())
-        self.app = make_app(inspector, self.token, allow_any_host=not loopback, rate=rate)
+        self.stopping = threading.Event()
+        self.app = make_app(
+            inspector, self.token, allow_any_host=not loopback, rate=rate, stopping=self.stopping
+        )
         self._server: Any = None
         self._thread: threading.Thread | None = None
 
@@ -387,8 +399,11 @@ class InspectorServer:
 
     def stop(self) -> None:
         """Stop serving (open streams are cut)."""
+        self.stopping.set()
         if self._server is not None:
             self._server.should_exit = True
-            self._server.force_exit = True
         if self._thread is not None:
-            self._thread.join(timeout=5)
+            self._thread.join(timeout=1.5)
+            if self._thread.is_alive() and self._server is not None:
+                self._server.force_exit = True  # a stream whose client never reads
+                self._thread.join(timeout=5)

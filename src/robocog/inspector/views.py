@@ -70,50 +70,92 @@ def _detections(percepts: Sequence[Percept] | None) -> list[Json]:
 # ---- worlds --------------------------------------------------------------------------
 
 
-def garbage_view(world: Any, percepts: Sequence[Percept] | None = None) -> Json:
-    """The garbage field: fence, checkpoints, objects of this round, robot, path."""
-    c = world.config
-    hot = {world.route[i]: w for i, w in c.hotspots.items() if i < len(world.route)}
-    objects = []
-    for t in world.trash:
-        if t.round != world.rounds and not t.held:
-            continue
-        state = "held" if t.held else "collected" if t.collected else "field"
-        objects.append(
-            {
-                "id": t.instance,
-                "label": t.label,
-                "x": _r(t.x, 2),
-                "y": _r(t.y, 2),
-                "upright": t.upright,
-                "state": state,
-                "seen": t.times_seen,
-                "checkpoint": t.checkpoint,
-            }
+class GarbageViewer:
+    """The garbage field: fence, checkpoints, objects of this round, robot, path.
+
+    Taken after every cycle, so what does not change is made once (the checkpoints)
+    and the path is rounded as it grows; every view still gets lists of its own (the
+    points inside are never changed once made).
+    """
+
+    def __init__(self) -> None:
+        self._world: Any = None
+        self._fixed: Json = {}
+        self._points: list[list[float]] = []
+
+    def _setup(self, world: Any) -> None:
+        c = world.config
+        hot = {world.route[i]: w for i, w in c.hotspots.items() if i < len(world.route)}
+        self._world = world
+        self._points = []
+        self._fixed = {
+            "kind": "garbage",
+            "size": c.size,
+            "fov": _r(c.camera_fov),
+            "camera_range": c.camera_range,
+            "start": [_r(world.start[0], 2), _r(world.start[1], 2)],
+            "checkpoints": [
+                {"name": n, "x": _r(x, 2), "y": _r(y, 2), "hot": hot.get(n, 1.0)}
+                for n, (x, y) in world.checkpoints.items()
+            ],
+        }
+
+    def _path(self, trajectory: Sequence[tuple[float, float]]) -> list[list[float]]:
+        points = self._points
+        if len(points) > len(trajectory):  # a path that shrank: start again
+            points.clear()
+        for x, y in trajectory[len(points) :]:
+            points.append([round(x, 2), round(y, 2)])
+        n = len(points)
+        if n <= TRAJECTORY_POINTS:
+            return points[:]
+        recent = 100
+        step = -(-(n - recent) // (TRAJECTORY_POINTS - recent))
+        return points[: n - recent : step] + points[n - recent :]
+
+    def __call__(self, world: Any, percepts: Sequence[Percept] | None = None) -> Json:
+        if world is not self._world:
+            self._setup(world)
+        rounds = world.rounds
+        objects = []
+        collected_round = 0
+        for t in world.trash:
+            if t.round != rounds and not t.held:
+                continue
+            state = "held" if t.held else "collected" if t.collected else "field"
+            collected_round += state == "collected"
+            objects.append(
+                {
+                    "id": t.instance,
+                    "label": t.label,
+                    "x": round(t.x, 2),
+                    "y": round(t.y, 2),
+                    "upright": t.upright,
+                    "state": state,
+                    "seen": t.times_seen,
+                }
+            )
+        view = dict(self._fixed)
+        view.update(
+            time=round(world.clock, 2),
+            round=rounds,
+            robot={"x": round(world.x, 2), "y": round(world.y, 2), "theta": round(world.theta, 3)},
+            holding=world.holding.instance if world.holding is not None else None,
+            visited=list(world.visited),
+            objects=objects,
+            collected=sum(t.collected for t in world.trash),
+            collected_round=collected_round,
+            trajectory=self._path(world.trajectory),
+            detections=_detections(percepts),
+            done=bool(world.done),
+            events=[[e.time, e.kind, e.detail] for e in world.events[-8:]],
         )
-    return {
-        "kind": "garbage",
-        "size": c.size,
-        "time": _r(world.clock, 2),
-        "round": world.rounds,
-        "robot": {"x": _r(world.x, 2), "y": _r(world.y, 2), "theta": _r(world.theta)},
-        "fov": _r(c.camera_fov),
-        "camera_range": c.camera_range,
-        "holding": world.holding.instance if world.holding is not None else None,
-        "start": [_r(world.start[0], 2), _r(world.start[1], 2)],
-        "checkpoints": [
-            {"name": n, "x": _r(x, 2), "y": _r(y, 2), "hot": hot.get(n, 1.0)}
-            for n, (x, y) in world.checkpoints.items()
-        ],
-        "visited": list(world.visited),
-        "objects": objects,
-        "collected": world.collected(),
-        "collected_round": sum(1 for o in objects if o["state"] == "collected"),
-        "trajectory": thin(world.trajectory),
-        "detections": _detections(percepts),
-        "done": bool(world.done),
-        "events": [[e.time, e.kind, e.detail] for e in world.events[-8:]],
-    }
+        return view
+
+
+def garbage_view(world: Any, percepts: Sequence[Percept] | None = None) -> Json:
+    """The garbage field's view, made afresh (the inspector keeps a GarbageViewer)."""
+    return GarbageViewer()(world, percepts)
 
 
 def stacks(on: dict[str, str], fixed: Sequence[str]) -> dict[str, list[list[str]]]:
@@ -177,7 +219,7 @@ def world_viewer(world: Any) -> Callable[[Any, Sequence[Percept] | None], Json]:
     from robocog.worlds.tabletop import TabletopWorld
 
     if isinstance(world, GarbageField):
-        return garbage_view
+        return GarbageViewer()
     if isinstance(world, TabletopWorld):
         return tabletop_view
     return generic_world_view
