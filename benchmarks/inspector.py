@@ -51,6 +51,12 @@ class Reader(threading.Thread):
         self.bytes = 0
 
     def run(self) -> None:
+        try:
+            self.read()
+        except (OSError, http.client.HTTPException):
+            pass  # the server stopped under it
+
+    def read(self) -> None:
         conn = http.client.HTTPConnection("127.0.0.1", self.port, timeout=30)
         conn.request("GET", "/api/stream")
         resp = conn.getresponse()
@@ -102,7 +108,9 @@ def one_run(mind: str, mode: str, seed: int, rounds: int) -> dict[str, Any]:
     server = reader = stalled = None
     if mode in ("open", "stalled"):
         assert inspector is not None
-        server = InspectorServer(inspector, port=0)
+        # the stalled client's stream runs at 50 a second, so that its socket's buffers
+        # (several MB on loopback) fill within a run
+        server = InspectorServer(inspector, port=0, rate=5.0 if mode == "open" else 50.0)
         server.start()
         if mode == "open":
             reader = Reader(server.port)
@@ -141,6 +149,8 @@ def one_run(mind: str, mode: str, seed: int, rounds: int) -> dict[str, Any]:
         reader.stop.set()
         out["events"] = reader.events
         out["bytes"] = reader.bytes
+    if server is not None:
+        out["stream_sent"] = server.app.stats["sent"]
     if stalled is not None:
         out["unread"] = unread(stalled)
         stalled.close()
@@ -170,7 +180,7 @@ def main(argv: list[str] | None = None) -> int:
             got = one_run(args.mind, mode, args.seed + i, args.rounds)
             times[mode] += got["intervals"]
             cpus[mode] += got["cpu"]
-            for k in ("events", "bytes", "unread", "snapshots", "wall"):
+            for k in ("events", "bytes", "stream_sent", "unread", "snapshots", "wall"):
                 if k in got:
                     extra[mode][k] = extra[mode].get(k, 0) + got[k]
     base = percentile(times["none"], 50)

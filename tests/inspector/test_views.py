@@ -115,3 +115,20 @@ def test_the_planner_view_follows_the_plan_step_by_step() -> None:
     v = view.view()
     assert v["request"]["status"] == "reached" and v["step"] == 4
     assert v["scene"]["on"]["InductionHardenedRod"] == "BettClamp"
+
+
+def test_the_room_exit_run_is_shown_with_its_walls_and_path() -> None:
+    from robocog.experiments.room_exit import run_once
+    from robocog.inspector.hub import Inspector
+
+    ins = Inspector()
+    run_once(3, "bdi", watch=ins.watcher())
+    ins.finish()
+    last = ins.history.latest()
+    json.dumps(last.to_json(), allow_nan=False)
+    world = last.world
+    assert world["kind"] == "room" and len(world["walls"]) >= 7
+    assert {t["id"] for t in world["targets"]} == {"door", "opposite_door", "doorway"}
+    assert len(world["trajectory"]) > 5
+    assert last.mind["kind"] == "bdi" and last.mind_seq == last.seq
+    assert any(b.startswith("found_target(") for b in last.mind["beliefs"])

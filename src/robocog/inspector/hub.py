@@ -107,6 +107,7 @@ class Inspector:
 
     def watch(self, world: Any, mind: Any, loop: Loop, label: str = "") -> Callable[[Step], None]:
         """Hook ``loop`` (running ``mind`` on ``world``): returns its ``on_step``."""
+        self.finish()
         if self._mind_view is not None and hasattr(self._mind_view, "detach"):
             self._mind_view.detach()
         self.world, self.mind, self.loop = world, mind, loop
@@ -121,6 +122,15 @@ class Inspector:
         self._next_mind = 0.0
         self.snapshot(None, force_mind=True)
         return self.on_step
+
+    def finish(self) -> None:
+        """Snapshot the last run as it ended, its mind included (the budget may have
+        skipped the mind's last cycles); nothing when that is already the newest."""
+        latest = self.history.latest()
+        if self._world_view is None or latest is None:
+            return
+        if latest.mind_seq != latest.seq or latest.run != self.run_label:
+            self.snapshot(None, force_mind=True)
 
     def watcher(self, label: Callable[[Any, Any], str] | None = None) -> Callable[..., Any]:
         """A ``watch`` for code that makes its own loops: ``(world, mind, loop) -> on_step``."""
@@ -276,6 +286,7 @@ class Inspector:
         commands, and run the loop while the mind has work (a planner's request) or the
         page asks for steps. Returns when ``stop()`` is true or the inspector is closed."""
         ran = 0
+        self.finish()
         while not self.closed and not (stop and stop()):
             with self._lock:
                 if not self._queue and not self._steps and not self._busy():

@@ -186,6 +186,9 @@ def make_app(
 ):  # noqa: ANN201 - an ASGI app
     """The ASGI application serving ``inspector``; streams end once ``stopping`` is set."""
     stopping = stopping or threading.Event()
+    #: how many stream messages were handed to the network (each counted once its send
+    #: returned: a client that stops reading stops this count)
+    stats = {"streams": 0, "sent": 0}
     from starlette.applications import Starlette
     from starlette.requests import Request
     from starlette.responses import Response, StreamingResponse
@@ -268,6 +271,7 @@ def make_app(
             sent = -2
             console = -1
             wait = 1.0 / rate
+            stats["streams"] += 1
             yield b"retry: 1000\n\n"
             while not stopping.is_set() and not await request.is_disconnected():
                 snap = inspector.history.latest()
@@ -277,6 +281,7 @@ def make_app(
                 if seq != sent or ver != console:
                     sent, console = seq, ver
                     yield b"data: " + dumps(snapshot_json(snap, inspector)) + b"\n\n"
+                    stats["sent"] += 1
                 await asyncio.sleep(wait)
 
         return StreamingResponse(
@@ -334,6 +339,7 @@ def make_app(
             if not stopping.is_set():
                 raise  # a stream cut while stopping (a client that never read) is no error
 
+    guarded.stats = stats  # type: ignore[attr-defined]
     return guarded
 
 

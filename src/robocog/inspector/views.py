@@ -194,6 +194,31 @@ def tabletop_view(world: Any, percepts: Sequence[Percept] | None = None) -> Json
     }
 
 
+def room_view(world: Any, percepts: Sequence[Percept] | None = None) -> Json:
+    """The room of Fujita et al.: walls, the door leaf, targets, the Q.bo and its path."""
+
+    def seg(g: Any) -> list[float]:
+        return [_r(g.ax, 2), _r(g.ay, 2), _r(g.bx, 2), _r(g.by, 2)]
+
+    path = [(p.x, p.y) for p in world.trajectory]
+    return {
+        "kind": "room",
+        "time": _r(world.clock, 2),
+        "phase": world.phase,
+        "robot": {"x": _r(world.x, 2), "y": _r(world.y, 2), "theta": _r(world.theta)},
+        "walls": [seg(g) for g in world.solids],
+        "targets": [{"id": t.id, "label": t.label, "face": seg(t.face)} for t in world.targets],
+        "trajectory": thin(path),
+        "marks": [[_r(x, 2), _r(y, 2), str(m)] for x, y, m in world.marks[-50:]],
+        "seen": {
+            k: {"source": v.source, "certainty": _r(v.certainty)}
+            for k, v in world.last_seen.items()
+        },
+        "detections": _detections(percepts),
+        "exited": bool(world.exited()),
+    }
+
+
 def generic_world_view(world: Any, percepts: Sequence[Percept] | None = None) -> Json:
     """Any other Body: its clock, pose when it has one, and what it senses."""
     out: Json = {"kind": "generic", "name": type(world).__name__}
@@ -216,12 +241,15 @@ def generic_world_view(world: Any, percepts: Sequence[Percept] | None = None) ->
 def world_viewer(world: Any) -> Callable[[Any, Sequence[Percept] | None], Json]:
     """The view function for this world's type."""
     from robocog.worlds.garbage import GarbageField
+    from robocog.worlds.room import RoomWorld
     from robocog.worlds.tabletop import TabletopWorld
 
     if isinstance(world, GarbageField):
         return GarbageViewer()
     if isinstance(world, TabletopWorld):
         return tabletop_view
+    if isinstance(world, RoomWorld):
+        return room_view
     return generic_world_view
 
 

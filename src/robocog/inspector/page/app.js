@@ -128,6 +128,7 @@ function renderWorld(w, snap) {
   const facts = [];
   if (w.kind === "garbage") drawGarbage(svg, w, facts);
   else if (w.kind === "tabletop") drawTabletop(svg, w, facts);
+  else if (w.kind === "room") drawRoom(svg, w, facts);
   else { svg.setAttribute("viewBox", "0 0 100 20"); svg.replaceChildren(s("text", { x: 2, y: 10, "font-size": 4 }, w.name || "world")); }
   if (snap.stats && snap.stats.cycle_ms !== undefined) facts.push(["cycle", fmt(snap.stats.cycle_ms, 2) + " ms"]);
   for (const a of snap.actions || []) facts.push(["action", a[0] + " → " + a[1] + (a[2] ? " (" + a[2] + ")" : "")]);
@@ -171,6 +172,25 @@ function drawGarbage(svg, w, facts) {
   facts.push(["round", w.round], ["collected", w.collected + " (this round " + w.collected_round + ")"], ["holding", w.holding || "nothing"],
     ["robot", `(${fmt(r.x, 1)}, ${fmt(r.y, 1)})`], ["detections", (w.detections || []).map((d) => d.instance || d.label).join(", ") || "none"]);
   if (w.done) facts.push(["mission", "over"]);
+}
+
+function drawRoom(svg, w, facts) {
+  const xs = w.walls.flatMap((g) => [g[0], g[2]]), ys = w.walls.flatMap((g) => [g[1], g[3]]);
+  const x0 = Math.min(...xs) - 0.3, x1 = Math.max(...xs) + 0.3, y0 = Math.min(...ys) - 0.3, y1 = Math.max(...ys) + 0.3;
+  const Y = (y) => y1 - y;
+  svg.setAttribute("viewBox", `${x0} ${0} ${x1 - x0} ${y1 - y0}`);
+  const line = (g, attrs) => s("line", { x1: g[0], y1: Y(g[1]), x2: g[2], y2: Y(g[3]), ...attrs });
+  const g = w.walls.map((seg) => line(seg, { stroke: "#4a5568", "stroke-width": 0.06 }));
+  const colors = { door: "#c05621", opposite_door: "#805ad5", doorway: "#2f855a" };
+  for (const t of w.targets) g.push(line(t.face, { class: "target", "data-id": t.id, stroke: colors[t.id] || "#d53f8c", "stroke-width": 0.1 }));
+  if (w.trajectory.length > 1) g.push(s("polyline", { id: "trajectory", points: w.trajectory.map(([x, y]) => x + "," + Y(y)).join(" "), fill: "none", stroke: "#2b6cb0", "stroke-width": 0.03 }));
+  for (const [x, y, m] of w.marks) g.push(s("circle", { cx: x, cy: Y(y), r: 0.04, fill: "#d69e2e" }, s("title", {}, m)));
+  const r = w.robot, deg = (-r.theta * 180) / Math.PI;
+  g.push(s("g", { id: "robot", "data-x": r.x, "data-y": r.y, transform: `translate(${r.x} ${Y(r.y)}) rotate(${deg})` },
+    s("polygon", { points: "0.2,0 -0.13,0.12 -0.13,-0.12", fill: "#1a202c" })));
+  svg.replaceChildren(...g);
+  facts.push(["phase", w.phase || "-"], ["robot", `(${fmt(r.x, 2)}, ${fmt(r.y, 2)})`], ["left the room", w.exited ? "yes" : "no"]);
+  for (const [k, v] of Object.entries(w.seen)) facts.push(["saw " + k, v.source + " " + fmt(v.certainty, 2)]);
 }
 
 function drawTabletop(svg, w, facts) {
