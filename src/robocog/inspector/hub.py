@@ -68,6 +68,10 @@ class Recorder:
         """The body's clock."""
         return self.body.time()
 
+    def __getattr__(self, name: str) -> Any:
+        # everything else a runner asks of its body (a bridge's waits and halts)
+        return getattr(self.body, name)
+
 
 class Inspector:
     """Snapshots of one running world and mind, and the page's commands for them."""
@@ -105,8 +109,11 @@ class Inspector:
 
     # ---- hooking a loop (robot thread) -----------------------------------------
 
-    def watch(self, world: Any, mind: Any, loop: Loop, label: str = "") -> Callable[[Step], None]:
-        """Hook ``loop`` (running ``mind`` on ``world``): returns its ``on_step``."""
+    def watch(self, world: Any, mind: Any, loop: Any, label: str = "") -> Callable[[Step], None]:
+        """Hook ``loop`` (running ``mind`` on ``world``): returns its ``on_step``.
+
+        ``loop`` is a :class:`Loop`, or anything that reads its body from a ``body``
+        attribute and calls ``on_step`` after each cycle (a bridge's runner)."""
         self.finish()
         if self._mind_view is not None and hasattr(self._mind_view, "detach"):
             self._mind_view.detach()

@@ -18,7 +18,7 @@ from collections import deque
 from collections.abc import Callable, Sequence
 from typing import Any
 
-from robocog.robot.percepts import Detection, Percept
+from robocog.robot.percepts import Detection, Percept, Pose
 
 #: the most points of a trajectory one view carries (older ones are thinned out)
 TRAJECTORY_POINTS = 300
@@ -219,23 +219,48 @@ def room_view(world: Any, percepts: Sequence[Percept] | None = None) -> Json:
     }
 
 
+class BodyViewer:
+    """Any other Body (a real robot behind a bridge): its clock, and what its percepts
+    say: the pose (and the path it makes, kept bounded), detections, obstacles; the
+    named places of its configuration when it has one."""
+
+    def __init__(self, keep: int = 5000) -> None:
+        self._path: deque[tuple[float, float]] = deque(maxlen=keep)
+        self._pose: Json | None = None
+
+    def __call__(self, world: Any, percepts: Sequence[Percept] | None = None) -> Json:
+        out: Json = {"kind": "generic", "name": type(world).__name__}
+        try:
+            out["time"] = _r(world.time(), 2)
+        except Exception:  # a body whose clock fails still shows the rest
+            out["time"] = None
+        for p in percepts or ():
+            if isinstance(p, Pose):
+                self._pose = {
+                    "x": _r(p.x, 2),
+                    "y": _r(p.y, 2),
+                    "theta": _r(p.theta),
+                    "place": p.place,
+                }
+                self._path.append((p.x, p.y))
+        if self._pose is not None:
+            out["robot"] = dict(self._pose)
+            out["trajectory"] = thin(list(self._path))
+        places = getattr(getattr(world, "config", None), "places", None)
+        if isinstance(places, dict):
+            out["places"] = [
+                {"name": str(n), "x": _r(v[0], 2), "y": _r(v[1], 2)}
+                for n, v in list(places.items())[:200]
+                if isinstance(v, tuple | list) and len(v) >= 2
+            ]
+        out["percepts"] = [repr(p) for p in (percepts or ()) if not isinstance(p, Detection)][:20]
+        out["detections"] = _detections(percepts)
+        return out
+
+
 def generic_world_view(world: Any, percepts: Sequence[Percept] | None = None) -> Json:
-    """Any other Body: its clock, pose when it has one, and what it senses."""
-    out: Json = {"kind": "generic", "name": type(world).__name__}
-    try:
-        out["time"] = _r(world.time(), 2)
-    except Exception:  # a body whose clock fails still shows the rest
-        out["time"] = None
-    for name in ("x", "y", "theta"):
-        value = getattr(world, name, None)
-        if isinstance(value, int | float):
-            out[name] = _r(value, 2)
-    trajectory = getattr(world, "trajectory", None)
-    if isinstance(trajectory, list) and trajectory and isinstance(trajectory[0], tuple):
-        out["trajectory"] = thin(trajectory)
-    out["percepts"] = [repr(p) for p in (percepts or ())][:20]
-    out["detections"] = _detections(percepts)
-    return out
+    """Any other Body's view, made afresh (the inspector keeps a BodyViewer)."""
+    return BodyViewer()(world, percepts)
 
 
 def world_viewer(world: Any) -> Callable[[Any, Sequence[Percept] | None], Json]:
@@ -250,7 +275,7 @@ def world_viewer(world: Any) -> Callable[[Any, Sequence[Percept] | None], Json]:
         return tabletop_view
     if isinstance(world, RoomWorld):
         return room_view
-    return generic_world_view
+    return BodyViewer()
 
 
 # ---- NARS ----------------------------------------------------------------------------

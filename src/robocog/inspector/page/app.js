@@ -129,7 +129,7 @@ function renderWorld(w, snap) {
   if (w.kind === "garbage") drawGarbage(svg, w, facts);
   else if (w.kind === "tabletop") drawTabletop(svg, w, facts);
   else if (w.kind === "room") drawRoom(svg, w, facts);
-  else { svg.setAttribute("viewBox", "0 0 100 20"); svg.replaceChildren(s("text", { x: 2, y: 10, "font-size": 4 }, w.name || "world")); }
+  else drawGeneric(svg, w, facts);
   if (snap.stats && snap.stats.cycle_ms !== undefined) facts.push(["cycle", fmt(snap.stats.cycle_ms, 2) + " ms"]);
   for (const a of snap.actions || []) facts.push(["action", a[0] + " → " + a[1] + (a[2] ? " (" + a[2] + ")" : "")]);
   $("world-facts").replaceChildren(...facts.map(([k, v]) => h("span", {}, h("b", { text: k + ": " }), v)));
@@ -191,6 +191,29 @@ function drawRoom(svg, w, facts) {
   svg.replaceChildren(...g);
   facts.push(["phase", w.phase || "-"], ["robot", `(${fmt(r.x, 2)}, ${fmt(r.y, 2)})`], ["left the room", w.exited ? "yes" : "no"]);
   for (const [k, v] of Object.entries(w.seen)) facts.push(["saw " + k, v.source + " " + fmt(v.certainty, 2)]);
+}
+
+function drawGeneric(svg, w, facts) {
+  facts.push(["body", w.name]);
+  for (const p of w.percepts || []) facts.push(["percept", p]);
+  if (!w.robot) { svg.setAttribute("viewBox", "0 0 100 20"); svg.replaceChildren(s("text", { x: 2, y: 10, "font-size": 4 }, (w.name || "world") + ": no pose yet")); return; }
+  const pts = [...(w.trajectory || []), ...(w.places || []).map((p) => [p.x, p.y]), [w.robot.x, w.robot.y]];
+  const xs = pts.map((p) => p[0]), ys = pts.map((p) => p[1]);
+  const pad = 1.5, x0 = Math.min(...xs) - pad, x1 = Math.max(...xs) + pad, y0 = Math.min(...ys) - pad, y1 = Math.max(...ys) + pad;
+  const size = Math.max(x1 - x0, y1 - y0), Y = (y) => y1 - y, k = size / 22;
+  svg.setAttribute("viewBox", `${x0} 0 ${size} ${size}`);
+  const g = [];
+  for (const p of w.places || []) {
+    g.push(s("circle", { cx: p.x, cy: Y(p.y), r: 0.6 * k, fill: "rgba(214,158,46,0.3)", stroke: "#a0aec0", "stroke-width": 0.08 * k }));
+    g.push(s("text", { x: p.x, y: Y(p.y) + 0.3 * k, "font-size": 0.8 * k, "text-anchor": "middle" }, p.name));
+  }
+  if ((w.trajectory || []).length > 1) g.push(s("polyline", { id: "trajectory", points: w.trajectory.map(([x, y]) => x + "," + Y(y)).join(" "), fill: "none", stroke: "#2b6cb0", "stroke-width": 0.08 * k }));
+  const r = w.robot, deg = (-r.theta * 180) / Math.PI;
+  g.push(s("g", { id: "robot", "data-x": r.x, "data-y": r.y, transform: `translate(${r.x} ${Y(r.y)}) rotate(${deg}) scale(${k})` },
+    ...(w.detections || []).map((d) => s("line", { class: "detection", x1: 0, y1: 0, x2: (d.distance * Math.cos(d.bearing)) / k, y2: (-d.distance * Math.sin(d.bearing)) / k, stroke: "#d53f8c", "stroke-width": 0.07 })),
+    s("polygon", { points: "0.6,0 -0.4,0.35 -0.4,-0.35", fill: "#1a202c" })));
+  svg.replaceChildren(...g);
+  facts.push(["robot", `(${fmt(r.x, 2)}, ${fmt(r.y, 2)})` + (r.place ? " at " + r.place : "")]);
 }
 
 function drawTabletop(svg, w, facts) {
