@@ -98,13 +98,15 @@ def unread(s: socket.socket) -> int:
     return total
 
 
-def one_run(mind: str, mode: str, seed: int, rounds: int) -> dict[str, Any]:
+def one_run(
+    mind: str, mode: str, seed: int, rounds: int, world_budget: float | None = None
+) -> dict[str, Any]:
     """One learning run in one mode: the iteration times and what the clients saw."""
     intervals: list[float] = []
     cpu: list[float] = []
     last = [0.0]
     last_cpu = [0.0]
-    inspector = Inspector() if mode != "none" else None
+    inspector = Inspector(world_budget=world_budget) if mode != "none" else None
     server = reader = stalled = None
     if mode in ("open", "stalled"):
         assert inspector is not None
@@ -168,16 +170,24 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--runs", type=int, default=3)
     parser.add_argument("--rounds", type=int, default=4)
     parser.add_argument("--seed", type=int, default=0)
+    parser.add_argument(
+        "--world-budget",
+        type=float,
+        help="the inspector's world_budget (default: every cycle is snapshotted)",
+    )
     parser.add_argument("--json", help="write the figures here")
     args = parser.parse_args(argv)
-    print(f"engine: {ENGINE}; mind {args.mind}; {args.runs} runs of {args.rounds} rounds")
+    print(
+        f"engine: {ENGINE}; mind {args.mind}; {args.runs} runs of {args.rounds} rounds; "
+        f"world budget {args.world_budget or 'none (every cycle)'}"
+    )
     times: dict[str, list[float]] = {m: [] for m in MODES}
     cpus: dict[str, list[float]] = {m: [] for m in MODES}
     extra: dict[str, dict[str, float]] = {m: {} for m in MODES}
     for i in range(args.runs):
         order = MODES if i % 2 == 0 else tuple(reversed(MODES))
         for mode in order:
-            got = one_run(args.mind, mode, args.seed + i, args.rounds)
+            got = one_run(args.mind, mode, args.seed + i, args.rounds, args.world_budget)
             times[mode] += got["intervals"]
             cpus[mode] += got["cpu"]
             for k in ("events", "bytes", "stream_sent", "unread", "snapshots", "wall"):

@@ -36,7 +36,7 @@ def test_a_bridge_runner_is_watched_and_instructed_like_a_loop() -> None:
     feeding.start()
     mind = BdiMind("ready.\n")  # an agent that only listens: the robot stays put
     runner = BridgeRunner(body, mind)
-    ins = Inspector()
+    ins = Inspector(world_budget=None)
     runner.on_cycle = ins.watch(body, mind, runner, "ros2 bridge, mind bdi")
     ins.submit("belief", "visited(p9)")
     try:

@@ -11,6 +11,7 @@ import pytest
 
 from robocog.experiments.garbage import default_minds, learn_accumulation, run_once
 from robocog.inspector.hub import MAX_INPUT, MAX_QUEUED, Inspector
+from robocog.inspector.snapshot import dumps
 from robocog.minds.bdi_mind import BdiMind
 from robocog.robot.loop import Loop
 from robocog.worlds.garbage import GarbageConfig, GarbageField
@@ -24,7 +25,7 @@ def bdi_loop(inspector: Inspector, seed: int = 1) -> tuple[GarbageField, BdiMind
 
 
 def test_every_cycle_is_snapshotted_and_serialisable() -> None:
-    ins = Inspector()
+    ins = Inspector(world_budget=None)
     world, mind, loop = bdi_loop(ins)
     hook = ins.watch(world, mind, loop)
     ran = loop.run(40, on_step=hook)
@@ -34,9 +35,8 @@ def test_every_cycle_is_snapshotted_and_serialisable() -> None:
     assert snap.world["kind"] == "garbage" and snap.mind["kind"] == "bdi"
     assert snap.world["robot"]["x"] == round(world.x, 2)
     assert "cycle_ms" in snap.stats
-    json.dumps(snap.to_json(), allow_nan=False)
+    shown = {d["instance"] for d in json.loads(dumps(snap.to_json()))["world"]["detections"]}
     # what the mind saw is what the snapshot shows
-    shown = {d["instance"] for d in snap.world["detections"]}
     assert shown == {p.instance for p in loop.body.last if hasattr(p, "instance")}
 
 
@@ -117,6 +117,20 @@ def test_pause_holds_the_loop_and_step_lets_one_cycle_through() -> None:
     ins.submit("resume")
     runner.join(timeout=30)
     assert loop.cycles == 50
+
+
+def test_a_fast_loop_is_sampled_within_the_budget() -> None:
+    ins = Inspector(world_budget=0.01)  # snapshots may cost 1% of the time
+    world, mind, loop = bdi_loop(ins)
+    hook = ins.watch(world, mind, loop)
+    loop.run(1000, on_step=hook)
+    first, last = ins.history.bounds()
+    assert 1 <= last - first < 1000, "some cycles were taken, not every one"
+    cycles = [s.cycle for s in ins.history.all()]
+    assert cycles == sorted(cycles) and cycles[-1] <= 1000
+    ins.submit("query", "trash(cup)")
+    loop.run(1, on_step=hook)
+    assert ins.history.latest().cycle == 1001, "a cycle after a command is always taken"
 
 
 def test_close_lets_a_paused_loop_go() -> None:

@@ -18,7 +18,7 @@ pytestmark = [server_needed, pytest.mark.filterwarnings("ignore:Using `httpx`")]
 
 
 def running(cycles: int = 20) -> tuple[Inspector, Loop]:
-    ins = Inspector()
+    ins = Inspector(world_budget=None)
     world = GarbageField(GarbageConfig(), seed=5)
     mind = BdiMind()
     loop = Loop(world, mind)

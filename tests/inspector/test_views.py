@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 
+from robocog.inspector.snapshot import dumps
 from robocog.inspector.views import (
     BdiView,
     NarsView,
@@ -35,8 +36,7 @@ def test_a_long_path_is_thinned_but_keeps_its_newest_points() -> None:
 def test_the_garbage_view_is_the_field_now() -> None:
     world = GarbageField(GarbageConfig(), seed=1)
     seen = Detection("bottle", 0.1, 1.5, 0.8, "bottle3")
-    view = garbage_view(world, [seen])
-    json.dumps(view, allow_nan=False)
+    view = json.loads(dumps(garbage_view(world, [seen])))
     assert view["size"] == 22.0 and len(view["checkpoints"]) == 8
     hot = {c["name"]: c["hot"] for c in view["checkpoints"]}
     assert hot["p2"] == 4.0 and hot["p0"] == 1.0
@@ -125,7 +125,7 @@ def test_the_room_exit_run_is_shown_with_its_walls_and_path() -> None:
     run_once(3, "bdi", watch=ins.watcher())
     ins.finish()
     last = ins.history.latest()
-    json.dumps(last.to_json(), allow_nan=False)
+    dumps(last.to_json())
     world = last.world
     assert world["kind"] == "room" and len(world["walls"]) >= 7
     assert {t["id"] for t in world["targets"]} == {"door", "opposite_door", "doorway"}

@@ -81,9 +81,13 @@ class Inspector:
         capacity: int = 3000,
         mind_budget: float = 0.03,
         min_mind_interval: float = 0.1,
+        world_budget: float | None = None,
     ) -> None:
         self.history = History(capacity)
         self.mind_budget = mind_budget
+        #: the share of wall time snapshots of the world may take (None: every cycle)
+        self.world_budget = world_budget
+        self._next_world = 0.0
         self.min_mind_interval = min_mind_interval
         self._lock = threading.Lock()
         self._wake = threading.Condition(self._lock)
@@ -148,10 +152,17 @@ class Inspector:
         return hook
 
     def on_step(self, step: Step | None) -> None:
-        """After each cycle: apply commands, snapshot, and wait while paused."""
+        """After each cycle: apply commands, snapshot, and wait while paused.
+
+        Every cycle is snapshotted, unless a ``world_budget`` is given: then a loop
+        so fast that snapshotting every cycle would cost more than that share of its
+        time (a BDI agent on the garbage field decides in a tenth of a millisecond)
+        is sampled so that it does not. Cycles after a command, or while paused or
+        stepping, are always taken."""
         self._cycle += 1
         applied = self.apply_commands()
-        self.snapshot(step, force_mind=applied or self.paused)
+        if applied or self.paused or time.perf_counter() >= self._next_world:
+            self.snapshot(step, force_mind=applied or self.paused)
         if self.paused:
             self.hold()
 
@@ -174,16 +185,18 @@ class Inspector:
         if self._world_view is None:
             return
         now = time.perf_counter()
+        # (the cost of this snapshot, the mind's view aside, sets when the next is due)
         percepts = self._recorder.last if self._recorder is not None else None
         world = self._world_view(self.world, percepts)
         seq = self.history.next_seq
+        mind_cost = 0.0
         if self._mind_view is not None and (force_mind or now >= self._next_mind):
             started = time.perf_counter()
             try:
                 self._mind_json = self._mind_view.view()
             except Exception as exc:  # a view must never stop the robot
                 self._mind_json = {"kind": "error", "error": f"{type(exc).__name__}: {exc}"}
-            cost = time.perf_counter() - started
+            cost = mind_cost = time.perf_counter() - started
             self._mind_seq = seq
             self._next_mind = started + max(self.min_mind_interval, cost / self.mind_budget)
         stats: Json = {}
@@ -207,6 +220,9 @@ class Inspector:
                 actions=actions,
             )
         )
+        if self.world_budget:
+            spent = time.perf_counter() - now - mind_cost
+            self._next_world = now + spent / self.world_budget
 
     # ---- commands (server thread submits, robot thread applies) ----------------------
 

@@ -27,6 +27,7 @@ from typing import Any
 
 from robocog.inspector.hub import MAX_INPUT, Inspector
 from robocog.inspector.snapshot import Snapshot
+from robocog.inspector.snapshot import dumps as snapshot_dumps
 
 #: the largest request body accepted (bytes)
 MAX_BODY = MAX_INPUT * 4 + 256
@@ -68,12 +69,16 @@ def series(inspector: Inspector) -> dict[str, Any]:
     ``SERIES_POINTS`` points each."""
     snaps = inspector.history.all()
     step = max(1, len(snaps) // SERIES_POINTS)
-    collected, cycle_ms, runs = [], [], []
-    last_run = None
+    collected, cycle_ms, runs, rounds = [], [], [], []
+    last_run = last_round = None
     for i, s in enumerate(snaps):
         if s.run != last_run:
             runs.append([s.seq, s.run])
             last_run = s.run
+        if s.world.get("round") != last_round:
+            if last_round is not None:
+                rounds.append([s.seq, s.world.get("round")])
+            last_round = s.world.get("round")
         if i % step and i != len(snaps) - 1:
             continue
         w = s.world
@@ -93,7 +98,13 @@ def series(inspector: Inspector) -> dict[str, Any]:
         if len(pts) > SERIES_POINTS:
             k = len(pts) // SERIES_POINTS + 1
             hyp[place] = pts[::k] + ([pts[-1]] if (len(pts) - 1) % k else [])
-    return {"collected": collected, "cycle_ms": cycle_ms, "runs": runs, "hypotheses": hyp}
+    return {
+        "collected": collected,
+        "cycle_ms": cycle_ms,
+        "runs": runs,
+        "rounds": rounds,
+        "hypotheses": hyp,
+    }
 
 
 class AtomBrowser:
@@ -209,7 +220,7 @@ def make_app(
     }
 
     def dumps(obj: Any) -> bytes:
-        return json.dumps(obj, separators=(",", ":"), allow_nan=False).encode("utf-8")
+        return snapshot_dumps(obj).encode("utf-8")
 
     def reply(obj: Any, status: int = 200) -> Response:
         return Response(dumps(obj), status, headers=headers, media_type="application/json")

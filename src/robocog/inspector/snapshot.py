@@ -23,6 +23,7 @@ field and the size of every line, and names the line of the first fault.
 from __future__ import annotations
 
 import bisect
+import dataclasses
 import json
 import threading
 from collections import deque
@@ -40,7 +41,7 @@ MAX_FILE = 1 << 30
 DEFAULT_RECORD_BYTES = 200 << 20
 
 
-@dataclass
+@dataclass(slots=True)
 class Snapshot:
     """One cycle as shown: the world, the mind's latest view, timing and actions."""
 
@@ -69,6 +70,18 @@ class Snapshot:
         if with_mind:
             out["mind"] = self.mind
         return out
+
+
+def encode(obj: Any) -> Any:
+    """JSON for what views keep as it is: frozen dataclasses (a frame's percepts)."""
+    if dataclasses.is_dataclass(obj) and not isinstance(obj, type):
+        return {f.name: getattr(obj, f.name) for f in dataclasses.fields(obj)}
+    raise TypeError(f"{type(obj).__name__} is not JSON")
+
+
+def dumps(obj: Any) -> str:
+    """One compact JSON text (no NaN), as the log and the server write it."""
+    return json.dumps(obj, separators=(",", ":"), allow_nan=False, default=encode)
 
 
 class History:
@@ -181,7 +194,7 @@ class LogWriter:
         self._thread.start()
 
     def _line(self, obj: dict[str, Any]) -> None:
-        text = json.dumps(obj, separators=(",", ":"), allow_nan=False) + "\n"
+        text = dumps(obj) + "\n"
         self._file.write(text)
         self.bytes += len(text.encode("utf-8"))
 
@@ -193,7 +206,7 @@ class LogWriter:
             obj = snap.to_json(with_mind=snap.mind_seq > self._mind_written)
             if "mind" in obj:
                 self._mind_written = snap.mind_seq
-            text = json.dumps(obj, separators=(",", ":"), allow_nan=False) + "\n"
+            text = dumps(obj) + "\n"
             size = len(text.encode("utf-8"))
             if self.bytes + size > self.max_bytes or size > MAX_LINE:
                 self._line({"end": "size limit", "bytes": self.bytes})

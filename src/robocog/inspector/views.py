@@ -82,12 +82,19 @@ class GarbageViewer:
         self._world: Any = None
         self._fixed: Json = {}
         self._points: list[list[float]] = []
+        self._last: Json | None = None
+        self._key: tuple[int, ...] = ()
+        self._objects: dict[str, Json] = {}
+        self._thinned: list[list[float]] | None = None
 
     def _setup(self, world: Any) -> None:
         c = world.config
         hot = {world.route[i]: w for i, w in c.hotspots.items() if i < len(world.route)}
         self._world = world
         self._points = []
+        self._objects = {}
+        self._thinned = None
+        self._last, self._key = None, ()
         self._fixed = {
             "kind": "garbage",
             "size": c.size,
@@ -104,53 +111,77 @@ class GarbageViewer:
         points = self._points
         if len(points) > len(trajectory):  # a path that shrank: start again
             points.clear()
+        elif len(points) == len(trajectory) and self._thinned is not None:
+            return self._thinned  # shared by the views: never changed once made
         for x, y in trajectory[len(points) :]:
             points.append([round(x, 2), round(y, 2)])
         n = len(points)
         if n <= TRAJECTORY_POINTS:
-            return points[:]
-        recent = 100
-        step = -(-(n - recent) // (TRAJECTORY_POINTS - recent))
-        return points[: n - recent : step] + points[n - recent :]
+            self._thinned = points[:]
+        else:
+            recent = 100
+            step = -(-(n - recent) // (TRAJECTORY_POINTS - recent))
+            self._thinned = points[: n - recent : step] + points[n - recent :]
+        return self._thinned
 
     def __call__(self, world: Any, percepts: Sequence[Percept] | None = None) -> Json:
         if world is not self._world:
             self._setup(world)
+        # What the objects are doing changes only through events the field logs (pick,
+        # tip, drop, arrival, a new round): the part of the view about them is made
+        # again only then, and shared (never changed) by the views in between.
+        key = (len(world.events), world.rounds)
+        if key != self._key or self._last is None:
+            self._key = key
+            self._last = self._objects_part(world)
+        view = dict(self._last)
+        view["time"] = round(world.clock, 2)
+        view["robot"] = {
+            "x": round(world.x, 2),
+            "y": round(world.y, 2),
+            "theta": round(world.theta, 3),
+        }
+        view["trajectory"] = self._path(world.trajectory)
+        # the frame's Detection percepts themselves (frozen): made JSON when sent
+        view["detections"] = (
+            tuple(p for p in percepts if isinstance(p, Detection)) if percepts else ()
+        )
+        view["done"] = world.done
+        return view
+
+    def _objects_part(self, world: Any) -> Json:
         rounds = world.rounds
         objects = []
-        collected_round = 0
+        collected = collected_round = 0
+        static = self._objects
         for t in world.trash:
+            if t.collected:
+                collected += 1
             if t.round != rounds and not t.held:
                 continue
             state = "held" if t.held else "collected" if t.collected else "field"
-            collected_round += state == "collected"
-            objects.append(
-                {
+            if state == "collected":
+                collected_round += 1
+            fixed = static.get(t.instance)
+            if fixed is None:  # an object does not move while it lies on the field
+                fixed = static[t.instance] = {
                     "id": t.instance,
                     "label": t.label,
                     "x": round(t.x, 2),
                     "y": round(t.y, 2),
-                    "upright": t.upright,
-                    "state": state,
-                    "seen": t.times_seen,
                 }
-            )
-        view = dict(self._fixed)
-        view.update(
-            time=round(world.clock, 2),
+            objects.append({**fixed, "upright": t.upright, "state": state, "seen": t.times_seen})
+        part = dict(self._fixed)
+        part.update(
             round=rounds,
-            robot={"x": round(world.x, 2), "y": round(world.y, 2), "theta": round(world.theta, 3)},
             holding=world.holding.instance if world.holding is not None else None,
             visited=list(world.visited),
             objects=objects,
-            collected=sum(t.collected for t in world.trash),
+            collected=collected,
             collected_round=collected_round,
-            trajectory=self._path(world.trajectory),
-            detections=_detections(percepts),
-            done=bool(world.done),
             events=[[e.time, e.kind, e.detail] for e in world.events[-8:]],
         )
-        return view
+        return part
 
 
 def garbage_view(world: Any, percepts: Sequence[Percept] | None = None) -> Json:

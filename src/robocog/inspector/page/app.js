@@ -389,7 +389,8 @@ function lineChart(svg, lines, opts) {
   const g = [s("line", { x1: L, y1: H - B, x2: W - R, y2: H - B, stroke: "#cbd5e0" }), s("line", { x1: L, y1: T, x2: L, y2: H - B, stroke: "#cbd5e0" }),
     s("text", { x: 2, y: T + 6 }, fmt(y1, opts.digits ?? 1)), s("text", { x: 2, y: H - B }, fmt(y0, opts.digits ?? 1)),
     s("text", { x: L, y: H - 2 }, "cycle " + x0), s("text", { x: W - R - 50, y: H - 2 }, "cycle " + x1)];
-  for (const m of opts.marks || []) if (m[0] >= x0) g.push(s("line", { x1: X(m[0]), x2: X(m[0]), y1: T, y2: H - B, stroke: "#e2e8f0", "stroke-dasharray": "2 2" }));
+  for (const m of opts.marks || []) if (m[0] >= x0) g.push(s("line", { x1: X(m[0]), x2: X(m[0]), y1: T, y2: H - B, stroke: "#cbd5e0", "stroke-dasharray": "2 2" }));
+  for (const m of opts.labels || []) if (m[0] >= x0) g.push(s("text", { x: X(m[0]) + 2, y: T + 8 }, "round " + m[1]));
   lines.forEach((l) => { if (l.points.length) g.push(s("polyline", { class: "series", "data-name": l.name, points: l.points.map((p) => X(p[0]) + "," + Yc(p[1])).join(" "), fill: "none", stroke: l.color, "stroke-width": 1.4 })); });
   svg.replaceChildren(...g);
 }
@@ -408,7 +409,7 @@ async function loadSeries() {
   }
   const colors = ["#2b6cb0", "#c53030", "#2f855a", "#b7791f", "#6b46c1", "#d53f8c", "#319795", "#4a5568"];
   const chosen = places.filter((p) => !ui.hypPlace || p === ui.hypPlace);
-  lineChart($("chart-hyp"), chosen.map((p) => ({ name: p, points: d.hypotheses[p], color: colors[places.indexOf(p) % colors.length] })), { y0: 0, y1: 1, digits: 1, marks: d.runs });
+  lineChart($("chart-hyp"), chosen.map((p) => ({ name: p, points: d.hypotheses[p], color: colors[places.indexOf(p) % colors.length] })), { y0: 0, y1: 1, digits: 1, marks: d.runs.concat(d.rounds), labels: d.rounds });
 }
 
 setInterval(() => { if (ui.follow) loadSeries(); }, 2000);
