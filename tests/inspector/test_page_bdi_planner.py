@@ -24,9 +24,13 @@ def test_a_bdi_agent_shows_its_intention_stack_and_takes_beliefs(live, page, scr
     lv = live(run, paused=True)
     page.goto(lv.url)
     expect(page.locator("#mind-caption")).to_contain_text("BDI")
+    expect(page.locator("#loop-state")).to_have_text("paused")
     for _ in range(3):
+        before = page.locator("#seq").inner_text().split()[0]
         page.click("#step")
-        page.wait_for_timeout(150)
+        page.wait_for_function(
+            "(s) => document.querySelector('#seq').innerText.split(' ')[0] !== s", arg=before
+        )
     frame = page.locator("#intentions .intention .frame").first
     expect(frame).to_contain_text("+!collect", timeout=20_000)
     assert page.locator("#beliefs li").count() > 0, "the belief base is listed"
