@@ -96,12 +96,27 @@ function addConsole(entries) {
     li.replaceChildren(h("span", { class: "cmd", text: "> " + text }), h("span", { class: "reply", text: e.status === "queued" ? "(waiting for the loop)" : e.reply || "" }));
   }
 }
+const history = { lines: [], at: 0 };
 $("console-form").addEventListener("submit", (ev) => {
   ev.preventDefault();
   const text = $("console-input").value;
   if (!text.trim()) return;
+  history.lines.push(text); history.at = history.lines.length;
   send($("console-kind").value, text).then((b) => { if (!b.error) $("console-input").value = ""; });
 });
+$("console-input").addEventListener("keydown", (ev) => {  // the lines sent before, as in a shell
+  if (ev.key !== "ArrowUp" && ev.key !== "ArrowDown") return;
+  ev.preventDefault();
+  history.at = Math.max(0, Math.min(history.lines.length, history.at + (ev.key === "ArrowUp" ? -1 : 1)));
+  $("console-input").value = history.lines[history.at] || "";
+});
+// a term clicked in the mind's lists becomes a question in the console
+function askAbout(kind, text) {
+  const sel = $("console-kind");
+  if ([...sel.options].some((o) => o.value === kind)) sel.value = kind;
+  $("console-input").value = text;
+  $("console-input").focus();
+}
 $("pause").onclick = () => send("pause");
 $("step").onclick = () => send("step");
 $("resume").onclick = () => send("resume");
@@ -120,7 +135,14 @@ function render(snap) {
   ui.shown = snap;
   $("seq").textContent = snap.seq + " (" + snap.run + ", cycle " + snap.cycle + ")";
   renderWorld(snap.world, snap);
-  renderMind(snap);
+  // the mind's lists are drawn again only when its view is new (it is taken less
+  // often than the world's), so a click or a selection in them is not swept away
+  const age = snap.seq - snap.mind_seq;
+  if (snap.mind_seq !== ui.mindShown || snap.run !== ui.runShown) {
+    ui.mindShown = snap.mind_seq; ui.runShown = snap.run;
+    renderMind(snap);
+  }
+  $("mind-caption").textContent = (snap.mind ? snap.mind.kind.toUpperCase() : "") + (age > 0 ? ` (view of ${age} cycles ago)` : "");
 }
 
 function renderWorld(w, snap) {
@@ -259,8 +281,6 @@ function renderMind(snap) {
   const box = $("mind");
   if (!m) { box.replaceChildren(h("p", { class: "muted", text: "this mind offers no view" })); return; }
   setKinds(m.kind);
-  const age = snap.seq - snap.mind_seq;
-  $("mind-caption").textContent = m.kind.toUpperCase() + (age > 0 ? ` (view of ${age} cycles ago)` : "");
   if (m.kind === "nars") box.replaceChildren(...nars(m));
   else if (m.kind === "bdi") box.replaceChildren(...bdi(m));
   else if (m.kind === "planner") box.replaceChildren(...planner(m, snap));
@@ -271,7 +291,7 @@ function nars(m) {
   const out = [];
   const hyp = Object.values(m.hypotheses || {}).sort((a, b) => a.place.localeCompare(b.place));
   out.push(h("h3", { text: "Where trash is seen: <<({SELF} * {p}) --> at> =/> <trash --> [see]>>" }));
-  out.push(table(["place", "f", "c", "expectation", ""], hyp.map((r) => h("tr", { "data-place": r.place },
+  out.push(table(["place", "f", "c", "expectation", ""], hyp.map((r) => h("tr", { "data-place": r.place, title: "click to ask", onclick: () => askAbout("ask", r.term + "?") },
     h("td", { text: r.place }), h("td", { class: "num f", text: fmt(r.f) }), h("td", { class: "num c", text: fmt(r.c) }),
     h("td", { class: "num exp", text: fmt(r.exp) }), h("td", {}, bar(r.exp)))), { id: "hypotheses" }));
   if (!hyp.length) out.push(h("p", { class: "muted", text: "no checkpoint hypothesis yet" }));
@@ -284,7 +304,7 @@ function nars(m) {
     h("td", { class: "term", text: g.term }), h("td", { class: "num", text: g.layer }), h("td", { class: "num", text: fmt(g.priority) }),
     h("td", { class: "num", text: fmt(g.f) }), h("td", { class: "num", text: fmt(g.c) })))));
   out.push(h("h3", { text: `Concepts by priority (${m.memory.concepts} of ${m.memory.capacity} held)` }));
-  out.push(table(["concept", "priority", "belief f", "c", "links"], m.concepts.filter((c) => match(c.term)).map((c) => h("tr", {},
+  out.push(table(["concept", "priority", "belief f", "c", "links"], m.concepts.filter((c) => match(c.term)).map((c) => h("tr", { title: "click to ask", onclick: () => askAbout("ask", c.term + "?") },
     h("td", { class: "term", text: c.term }), h("td", { class: "num", text: fmt(c.priority, 4) }),
     h("td", { class: "num", text: c.belief ? fmt(c.belief.f) : "-" }), h("td", { class: "num", text: c.belief ? fmt(c.belief.c) : "-" }),
     h("td", { class: "num", text: c.links }))), { id: "concepts" }));
@@ -319,7 +339,7 @@ function bdi(m) {
   out.push(h("ol", { id: "events", class: "term" }, m.events.slice(0, 20).map((e) => h("li", { text: e }))));
   const beliefs = m.beliefs.filter(match);
   out.push(h("h3", { text: `Belief base (${m.beliefs.length})` }));
-  out.push(h("ul", { id: "beliefs", class: "term" }, beliefs.slice(0, 150).map((b) => h("li", { text: b }))));
+  out.push(h("ul", { id: "beliefs", class: "term" }, beliefs.slice(0, 150).map((b) => h("li", { text: b, title: "click to query", onclick: () => askAbout("query", b.replace(/\[.*\]$/, "")) }))));
   if (m.actions) { out.push(h("h3", { text: "Actions" })); out.push(h("div", { class: "term", text: m.actions.slice(-12).join(" · ") })); }
   if (m.output && m.output.length) { out.push(h("h3", { text: "Output" })); out.push(h("pre", { class: "term", text: m.output.slice(-10).join("\n") })); }
   return out;
@@ -351,7 +371,9 @@ function atomBrowser(snap) {
   const box = h("div", { id: "atoms" });
   const typeSel = h("select", { id: "atom-type" }, ["", "ConceptNode", "PredicateNode", "EvaluationLink", "InheritanceLink", "ListLink"].map((t) => h("option", { value: t, text: t || "any type" })));
   typeSel.value = atomState.type;
+  typeSel.onchange = () => { atomState.type = typeSel.value; };
   const name = h("input", { id: "atom-name", placeholder: "name contains", value: atomState.name, maxlength: 200 });
+  name.oninput = () => { atomState.name = name.value; };
   const results = h("div", { id: "atom-results" });
   const search = async () => {
     atomState.type = typeSel.value; atomState.name = name.value; atomState.key = "";
