@@ -162,7 +162,10 @@ def test_nars_views_show_the_checkpoint_hypotheses_as_they_form() -> None:
     assert last["concepts"] and last["concepts"][0]["priority"] >= last["concepts"][-1]["priority"]
     assert last["hypotheses"], "some checkpoint has a hypothesis after two rounds"
     place, row = next(iter(last["hypotheses"].items()))
-    assert "{" + place + "}" in row["term"] and "=/> <trash --> [see]>" in row["term"]
+    assert row["term"] == f"<<({{SELF}} * {{{place}}}) --> at> =/> <trash --> [see]>>"
+    # the same evidence the mind's own question finds
+    asked = {p: (f, c) for p, f, c, _e in ins.mind.trash_places()}
+    assert (row["f"], row["c"]) == tuple(round(x, 3) for x in asked[place])
     assert 0 < row["c"] < 1
     confidences = {m["hypotheses"][place]["c"] for m in minds if place in m["hypotheses"]}
     assert len(confidences) > 1, "the hypothesis's confidence changed while the robot collected"

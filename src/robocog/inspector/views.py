@@ -311,7 +311,9 @@ def world_viewer(world: Any) -> Callable[[Any, Sequence[Percept] | None], Json]:
 
 # ---- NARS ----------------------------------------------------------------------------
 
-_PLACE = re.compile(r"\{SELF\} \* \{([^}]+)\}\) --> at>")
+#: a checkpoint's hypothesis of Hammer et al., Section V.D (not the longer sequences
+#: that end the same way)
+_HYPOTHESIS = re.compile(r"<<\(\{SELF\} \* \{([^}]+)\}\) --> at> =/> <trash --> \[see\]>>")
 _DECISION = re.compile(
     r"decision expectation=([0-9.]+) implication: (.*?)\. Stamp=.*precondition: (.*?)\. :\|:"
 )
@@ -365,20 +367,20 @@ class NarsView:
         if self.nar.output == self._tap:
             self.nar.output = self._before
 
-    def _table(self, concept: Any) -> list[Json]:
+    def _table(self, concept: Any, limit: int | None = TABLE_ITEMS) -> list[Json]:
         rows = []
         names = self.nar.op_names
         for opi, table in enumerate(concept.precondition_beliefs or ()):
-            for imp in table.items[:TABLE_ITEMS]:
+            for imp in table.items[:limit]:
                 row = {"term": str(imp.term), **_truth(imp.truth), "dt": _r(imp.dt, 1)}
                 if opi:
                     row["op"] = names[opi - 1] if opi - 1 < len(names) else f"op{opi}"
-                m = _PLACE.search(row["term"])
+                m = _HYPOTHESIS.fullmatch(row["term"])
                 if m:
                     row["place"] = m.group(1)
                 rows.append(row)
         rows.sort(key=lambda r: -r["exp"])
-        return rows[:TABLE_ITEMS]
+        return rows[:limit]
 
     def view(self) -> Json:
         nar = self.nar
@@ -402,10 +404,14 @@ class NarsView:
             )
         tables = []
         shown: set[str] = set()
+        hypotheses: dict[str, Json] = {}
         for term in self.watched:
             c = memory.find(term)
             if c is not None:
-                tables.append({"consequent": str(c.term), "rows": self._table(c)})
+                rows = self._table(c, None)  # the whole table (bounded by its size)
+                if not hypotheses:
+                    hypotheses = {r["place"]: r for r in reversed(rows) if "place" in r}
+                tables.append({"consequent": str(c.term), "rows": rows[:TABLE_ITEMS]})
                 shown.add(str(c.term))
         for c in top:
             if len(tables) >= 8:
@@ -434,16 +440,13 @@ class NarsView:
                     {"term": str(p.term), **_truth(p.truth), "time": p.occurrence_time}
                 )
         anticipations.sort(key=lambda a: -a["time"])
-        hypotheses = []
-        for table in tables[:1]:
-            hypotheses = [r for r in table["rows"] if "place" in r]
         out: Json = {
             "kind": "nars",
             "time": now,
             "concepts": concepts,
             "memory": {"concepts": len(memory), "capacity": memory.capacity},
             "tables": tables,
-            "hypotheses": {r["place"]: r for r in hypotheses},
+            "hypotheses": hypotheses,
             "goals": goals[:EVENTS],
             "threshold": nar.config.decision_threshold,
             "decisions": list(self.decisions),
