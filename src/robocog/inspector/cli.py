@@ -104,12 +104,16 @@ def session(args: argparse.Namespace, source: str = "") -> Iterator[Session | No
         )
     writer = None
     if args.inspect_record is not None:
-        writer = LogWriter(
-            inspector.history,
-            args.inspect_record,
-            source=source,
-            max_bytes=max(1, args.inspect_record_limit) << 20,
-        )
+        try:
+            writer = LogWriter(
+                inspector.history,
+                args.inspect_record,
+                source=source,
+                max_bytes=max(1, args.inspect_record_limit) << 20,
+            )
+        except OSError as exc:
+            server.stop()
+            raise SystemExit(f"the inspector cannot write {args.inspect_record}: {exc}") from exc
     live = Session(inspector, server, writer)
     try:
         yield live
