@@ -107,9 +107,15 @@ def test_a_question_typed_in_the_console_gets_its_answer(live, page, screenshot)
     page.goto(lv.url)
     from playwright.sync_api import expect
 
-    page.select_option("#console-kind", "tell")
-    page.fill("#console-input", "<{bottle9} --> bottle>.")
-    page.click("#console-send")
+    def tell(line: str) -> None:
+        page.select_option("#console-kind", "tell")
+        page.fill("#console-input", line)
+        page.click("#console-send")
+        reply = page.locator("#console-log li.ok", has_text=f"tell {line}").first
+        expect(reply).to_be_visible(timeout=60_000)
+
+    tell("<{bottle9} --> bottle>.")
+    tell("20")  # cycles to derive in, whether the robot's loop still runs or not
     page.select_option("#console-kind", "ask")
     page.fill("#console-input", "<{bottle9} --> trash>?")
     page.click("#console-send")

@@ -89,7 +89,8 @@ function addConsole(entries) {
   for (const e of entries) {
     let li = ui.consoleSeen.get(e.id);
     if (!li) { li = h("li", { "data-id": e.id }); ui.consoleSeen.set(e.id, li); log.prepend(li); }
-    else if (li.dataset.status === e.status) continue;
+    // the reply to the post may come after the stream has told how the command ended
+    else if (li.dataset.status === e.status || e.status === "queued") continue;
     li.dataset.status = e.status;
     li.className = e.status;
     const text = e.kind + (e.text ? " " + e.text : "");
