@@ -193,3 +193,32 @@ def test_the_line_counter_sees_a_long_module(tmp_path: Path) -> None:
     (tmp_path / "pkg").mkdir()
     (tmp_path / "pkg" / "long.py").write_text("x = 1\n" * 4)
     assert long_modules(tmp_path, most=3) == {"pkg/long.py": 4}
+
+
+def private_reads(path: Path) -> list[str]:
+    """``obj._name`` where ``obj`` is not ``self`` or ``cls`` (a dunder is no private
+    name): reading another object's private state ties a module to its insides."""
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    found = []
+    for node in ast.walk(tree):
+        if not isinstance(node, ast.Attribute):
+            continue
+        name = node.attr
+        if not name.startswith("_") or (name.startswith("__") and name.endswith("__")):
+            continue
+        if isinstance(node.value, ast.Name) and node.value.id in ("self", "cls"):
+            continue
+        found.append(f"{path.name}:{node.lineno} {ast.unparse(node)}")
+    return found
+
+
+def test_the_inspector_reads_no_private_attribute() -> None:
+    """The inspector reads minds, worlds and engines through what they offer publicly."""
+    found = [r for p in sorted((SRC / "inspector").rglob("*.py")) for r in private_reads(p)]
+    assert found == []
+
+
+def test_the_private_read_checker_sees_one(tmp_path: Path) -> None:
+    module = tmp_path / "m.py"
+    module.write_text("def f(nar):\n    return nar._priority, nar.memory, nar.__class__, self._x\n")
+    assert private_reads(module) == ["m.py:2 nar._priority"]

@@ -25,6 +25,10 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "bridge": ("robocog.bridges.cli", "drive a real robot over ROS 2 or ROS 1"),
     "sim": ("robocog.sim.cli", "serve an embedded world as a ROS 2 robot"),
     "replay": ("robocog.bridges.replay", "feed a recorded run's percepts to a mind"),
+    "inspect": (
+        "robocog.inspector.cli",
+        "show a run recorded with --inspect-record in the inspector",
+    ),
 }
 
 

@@ -94,3 +94,19 @@ def test_the_gripper_percept_corrects_the_scene_before_replanning() -> None:
     run(world, mind)
     assert record.status == "reached" and record.replans == 1
     assert all(world.holds(fact) for fact in record.goal)
+
+
+def test_plan_progress_names_the_plan_and_its_next_step() -> None:
+    exp = experiment("5.2")
+    world = TabletopWorld()
+    mind = PlannerMind()
+    assert mind.plan_progress() == ([], 0)
+    mind.request(exp.request, facts=exp.facts)
+    loop = Loop(world, mind)
+    loop.step()
+    steps, index = mind.plan_progress()
+    assert [str(s) for s in steps] == list(exp.plan) and index == 1
+    steps.clear()  # a copy: the mind's plan stays
+    assert len(mind.plan_progress()[0]) == len(exp.plan)
+    loop.run(20, until=lambda: not mind.busy)
+    assert mind.plan_progress()[1] == len(exp.plan)

@@ -98,6 +98,8 @@ def configure(parser: argparse.ArgumentParser) -> None:
         default="/usr/bin/python3",
         help="ROS 1: the Python that has rospy (default /usr/bin/python3)",
     )
+    # by name, as the minds are: the inspector reads minds, and the bridges know none
+    importlib.import_module("robocog.inspector.cli").add_arguments(parser)
     parser.add_argument("-v", "--verbose", action="store_true", help="log every command")
 
 
@@ -129,10 +131,16 @@ def run(args: argparse.Namespace) -> int:
         runner.stop()
 
     signal.signal(signal.SIGTERM, _terminate)
+    inspector_cli = importlib.import_module("robocog.inspector.cli")
+    args.inspect_exit = True  # the page closes with the bridge: its robot is stopped then
     try:
-        body.start()
-        log.info("bridge %s up, mind %s", args.middleware, args.mind)
-        code = runner.run(duration=args.duration)
+        with inspector_cli.session(args, f"robocog bridge {args.middleware}") as inspecting:
+            if inspecting is not None:
+                label = f"{args.middleware} bridge, mind {args.mind}"
+                runner.on_cycle = inspecting.inspector.watch(body, mind, runner, label)
+            body.start()
+            log.info("bridge %s up, mind %s", args.middleware, args.mind)
+            code = runner.run(duration=args.duration)
     except KeyboardInterrupt:
         code = 0
     except (RuntimeError, OSError) as exc:

@@ -17,7 +17,8 @@ from collections import deque
 from collections.abc import Callable
 
 from robocog.bridges.body import RobotBody
-from robocog.robot.loop import CycleStats
+from robocog.robot.commands import Command, Outcome
+from robocog.robot.loop import CycleStats, Step
 from robocog.robot.protocols import Mind
 
 log = logging.getLogger("robocog.bridges")
@@ -38,9 +39,14 @@ def text_input_of(mind: Mind) -> Callable[[str], object] | None:
 class BridgeRunner:
     """Runs a mind on a ``RobotBody`` until told to stop, guarded by a watchdog."""
 
-    def __init__(self, body: RobotBody, mind: Mind) -> None:
+    def __init__(
+        self, body: RobotBody, mind: Mind, on_cycle: Callable[[Step], None] | None = None
+    ) -> None:
         self.body = body
         self.mind = mind
+        #: called after each cycle with what it did (the inspector's hook); it must not
+        #: block, and an exception from it is logged, never stops the robot
+        self.on_cycle = on_cycle
         self.config = body.config
         self.stats = CycleStats()
         self.cycles = 0
@@ -135,8 +141,10 @@ class BridgeRunner:
         reasoned = time.perf_counter()
         if self._trip == "mind":
             self._clear("the mind answers again; resuming")
+        actions: list[tuple[Command, Outcome]] = []
         for command in commands:
             outcome = self.body.execute(command)
+            actions.append((command, outcome))
             log.debug("%s -> %s %s", command, outcome.status.value, outcome.reason)
             try:
                 self.mind.on_outcome(command, outcome)
@@ -146,6 +154,11 @@ class BridgeRunner:
         end = time.perf_counter()
         self.cycles += 1
         self.stats.record(reasoned - start, end - start)
+        if self.on_cycle is not None:
+            try:
+                self.on_cycle(Step(actions, reasoned - start, end - start))
+            except Exception as exc:  # noqa: BLE001 - an observer never stops the robot
+                log.error("the cycle's observer failed: %s: %s", type(exc).__name__, exc)
         return True
 
     def _mind_failed(self, exc: BaseException) -> None:

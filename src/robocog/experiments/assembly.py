@@ -24,6 +24,7 @@ an animated GIF of the run and a key frame after each request.
 from __future__ import annotations
 
 import argparse
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -123,13 +124,15 @@ def run_sequence(
     perturb: bool = False,
     world: Any = None,
     on_request: Any = None,
+    watch: Callable[..., Any] | None = None,
 ) -> SequenceRun:
     """Run one sequence of stages on a fresh tabletop with one PlannerMind.
 
     On the physical world the mind plans from what it sees; with ``perturb`` one
     request, drawn by the seed among those of two steps or more, has one of its cubes
     moved by hand after a random number of steps. ``on_request(table, world)`` is
-    called after each request (for key frames).
+    called after each request (for key frames). ``watch``, given the world, the mind
+    and the loop, returns the loop's ``on_step`` (the inspector's hook).
     """
     import random
     import time
@@ -148,12 +151,14 @@ def run_sequence(
                 perturb,
                 world,
                 on_request,
+                watch,
             )
         finally:
             if hasattr(world, "close"):  # the physical world's renderers hold GL contexts
                 world.close()
     mind = PlannerMind(mode=mode, perceive_scene=physical)
     loop = Loop(world, mind)
+    on_step = watch(world, mind, loop) if watch else None
     out = SequenceRun(sequence, seed, failure_rate)
     rng = random.Random(seed * 7919 + 17)
     requests = [st[1] for st in SEQUENCES[sequence] if st[0] == "request"]
@@ -188,10 +193,12 @@ def run_sequence(
             ) -> None:
                 if not moved and len(record.executed) >= after:
                     moved.append(world.perturb(parts) or "nothing could be moved")
+                if on_step is not None:
+                    on_step(step)
 
             loop.run(max_cycles, until=lambda: not mind.busy, on_step=disturb)
         else:
-            loop.run(max_cycles, until=lambda: not mind.busy)
+            loop.run(max_cycles, until=lambda: not mind.busy, on_step=on_step)
         reached = record.status == "reached" and all(world.holds(f) for f in record.goal)
         out.requests.append(
             RequestRun(
@@ -250,6 +257,9 @@ def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--no-video", action="store_true", help="physical world: skip the GIF and key frames"
     )
+    from robocog.inspector.cli import add_arguments
+
+    add_arguments(parser)
 
 
 def _row(req: RequestRun) -> dict[str, Any]:
@@ -309,14 +319,20 @@ def run(args: argparse.Namespace) -> int:
     clean: dict[str, SequenceRun] = {}
     failing: dict[str, list[SequenceRun]] = {name: [] for name in SEQUENCES}
     total = len(SEQUENCES) * (1 + args.runs)
-    with Progress(console=console, transient=True) as progress:
+    from robocog.inspector.cli import session
+
+    with (
+        session(args, "robocog experiment assembly") as inspecting,
+        Progress(console=console, transient=True) as progress,
+    ):
+        watch = inspecting.watcher() if inspecting else None
         task = progress.add_task("assembly", total=total)
         for name in SEQUENCES:
-            clean[name] = run_sequence(name, args.seed, 0.0, args.mode)
+            clean[name] = run_sequence(name, args.seed, 0.0, args.mode, watch=watch)
             progress.advance(task)
             for i in range(args.runs):
                 failing[name].append(
-                    run_sequence(name, args.seed + 1 + i, args.failure_rate, args.mode)
+                    run_sequence(name, args.seed + 1 + i, args.failure_rate, args.mode, watch=watch)
                 )
                 progress.advance(task)
 

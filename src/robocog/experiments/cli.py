@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING
 from robocog.worlds.garbage import LIGHTS
 
 if TYPE_CHECKING:
-    from robocog.experiments.garbage import ExperimentResult, MindSpec
+    from robocog.experiments.garbage import ExperimentResult, MindSpec, Watch
 
 #: experiment name -> (module with configure/run, or None for the garbage field here, help)
 EXPERIMENTS: dict[str, tuple[str | None, str]] = {
@@ -73,6 +73,9 @@ def configure_garbage(parser: argparse.ArgumentParser) -> None:
         "--out", type=Path, default=Path("reports/garbage"), metavar="DIR", help="report folder"
     )
     parser.add_argument("--no-report", action="store_true", help="skip the markdown and plots")
+    from robocog.inspector.cli import add_arguments
+
+    add_arguments(parser)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -107,15 +110,19 @@ def run_garbage_args(args: argparse.Namespace) -> int:
         return 2
     if getattr(args, "over", "process") == "ros2":
         return run_garbage_over_ros2(args, specs)
-    result = run_garbage(
-        specs,
-        runs=args.runs,
-        seed=args.seed,
-        light=args.light,
-        rounds=args.rounds,
-        json_path=args.json,
-        out=None if args.no_report else args.out,
-    )
+    from robocog.inspector.cli import session
+
+    with session(args, "robocog experiment garbage") as inspecting:
+        result = run_garbage(
+            specs,
+            runs=args.runs,
+            seed=args.seed,
+            light=args.light,
+            rounds=args.rounds,
+            json_path=args.json,
+            out=None if args.no_report else args.out,
+            watch=inspecting.watcher() if inspecting else None,
+        )
     return 0 if all(m.ok for m in result.minds.values()) else 1
 
 
@@ -128,8 +135,10 @@ def run_garbage(
     json_path: Path | None,
     out: Path | None,
     config_overrides: dict[str, float] | None = None,
+    watch: Watch | None = None,
 ) -> ExperimentResult:
-    """Shared by ``experiment garbage`` and ``demo``: run, print the table, write files."""
+    """Shared by ``experiment garbage`` and ``demo``: run, print the table, write files
+    (``watch`` hooks every loop, for ``--inspect``)."""
     from rich.console import Console
     from rich.markup import escape
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TimeElapsedColumn
@@ -156,6 +165,7 @@ def run_garbage(
             config=config,
             rounds=rounds,
             advance=lambda: progress.advance(task),
+            watch=watch,
         )
     console.print(summary_table(result))
     for m in result.minds.values():

@@ -25,6 +25,9 @@ def configure(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument("--out", type=Path, default=Path("robocog-demo"), metavar="DIR")
     parser.add_argument("--json", type=Path, metavar="FILE", help="also write the results as JSON")
+    from robocog.inspector.cli import add_arguments
+
+    add_arguments(parser)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -38,13 +41,17 @@ def run(args: argparse.Namespace) -> int:
         f"knowledge; {runs} runs per mind from seed {args.seed} in {args.light} light, then "
         f"{args.rounds} learning rounds for NARS"
     )
-    result = run_garbage(
-        default_minds(["bdi", "nars"]),  # the quick one first
-        runs=runs,
-        seed=args.seed,
-        light=args.light,
-        rounds=args.rounds,
-        json_path=args.json,
-        out=args.out,
-    )
+    from robocog.inspector.cli import session
+
+    with session(args, "robocog demo") as inspecting:
+        result = run_garbage(
+            default_minds(["bdi", "nars"]),  # the quick one first
+            runs=runs,
+            seed=args.seed,
+            light=args.light,
+            rounds=args.rounds,
+            json_path=args.json,
+            out=args.out,
+            watch=inspecting.watcher() if inspecting else None,
+        )
     return 0 if any(m.runs for m in result.minds.values()) else 1

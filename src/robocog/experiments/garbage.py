@@ -18,9 +18,13 @@ from collections.abc import Callable, Sequence
 from dataclasses import asdict, dataclass, field, replace
 from typing import Any
 
-from robocog.robot.loop import Loop
+from robocog.robot.loop import Loop, Step
 from robocog.robot.protocols import Mind
 from robocog.worlds.garbage import GarbageConfig, GarbageField
+
+#: a hook that watches each loop an experiment makes (the inspector's): called with the
+#: world, the mind and the loop before it runs, it returns the loop's ``on_step`` or None
+Watch = Callable[[Any, Mind, Loop], Callable[[Step], None] | None]
 
 #: Table II of Hammer et al.: success rate over 30 runs each, sunny light
 PAPER: dict[str, float] = {"NARS": 0.68, "BDI": 0.56}
@@ -255,15 +259,20 @@ def frame_budget(config: GarbageConfig, rounds: int = 1) -> int:
 
 
 def run_once(
-    spec: MindSpec, config: GarbageConfig, seed: int, keep_path: bool = False
+    spec: MindSpec,
+    config: GarbageConfig,
+    seed: int,
+    keep_path: bool = False,
+    watch: Watch | None = None,
 ) -> RunResult:
-    """One mission of a fresh mind on a fresh field."""
+    """One mission of a fresh mind on a fresh field (``watch`` hooks its loop)."""
     world = GarbageField(config, seed=seed)
     mind = spec.make(world, seed)
     loop = Loop(world, mind)
+    on_step = watch(world, mind, loop) if watch else None
     evidence: dict[str, tuple[float, float]] = {}
     try:
-        loop.run(frame_budget(config), until=lambda: world.done)
+        loop.run(frame_budget(config), until=lambda: world.done, on_step=on_step)
         ask = getattr(mind, "pick_evidence", None)
         if callable(ask):
             tipped = [t.instance for t in world.objects() if not t.upright]
@@ -315,6 +324,7 @@ def run_mind(
     config: GarbageConfig,
     seeds: Sequence[int],
     advance: Callable[[], None] | None = None,
+    watch: Watch | None = None,
 ) -> MindResult:
     """Every run of one mind; a mind that cannot run is reported, not raised.
 
@@ -330,7 +340,7 @@ def run_mind(
         return result
     for i, seed in enumerate(seeds):
         try:
-            result.runs.append(run_once(spec, config, seed, keep_path=i == 0))
+            result.runs.append(run_once(spec, config, seed, keep_path=i == 0, watch=watch))
         except Exception as exc:
             result.error = f"run {i} (seed {seed}) failed: {type(exc).__name__}: {exc}"
             break
@@ -344,6 +354,7 @@ def learn_accumulation(
     config: GarbageConfig,
     seed: int,
     rounds: int,
+    watch: Watch | None = None,
 ) -> Accumulation:
     """Let a NARS mind collect for several rounds of one field, then ask where trash is
     seen (the mind must offer ``ask``, ``trash_places`` and ``new_round``).
@@ -366,6 +377,7 @@ def learn_accumulation(
         return Accumulation(rounds, None, [], {}, hotspots, unavailable=why, mind=spec.name)
     mind: Any = spec.make(world, seed)
     loop = Loop(world, mind)
+    on_step = watch(world, mind, loop) if watch else None
     seen: dict[str, int] = dict.fromkeys(world.route, 0)
     try:
         for r in range(rounds):
@@ -374,7 +386,9 @@ def learn_accumulation(
                 mind.new_round()
             ends = world.time() + config.mission_time
             loop.run(
-                frame_budget(config), until=lambda e=ends: world.route_complete or world.time() > e
+                frame_budget(config),
+                until=lambda e=ends: world.route_complete or world.time() > e,
+                on_step=on_step,
             )
             for t in world.objects(world.rounds):
                 if t.times_seen:
@@ -465,24 +479,26 @@ def run_experiment(
     config: GarbageConfig | None = None,
     rounds: int = 0,
     advance: Callable[[], None] | None = None,
+    watch: Watch | None = None,
 ) -> ExperimentResult:
     """Every mind on the same ``runs`` seeds; then, if ``rounds``, NARS's learning phase.
 
     The result depends on the seeds and the configuration alone; only ``wall_seconds``
-    and the cycle-time figures tell how long it took.
+    and the cycle-time figures tell how long it took. ``watch`` hooks every loop (the
+    inspector's ``--inspect``).
     """
     import time
 
     start = time.perf_counter()
     config = config or GarbageConfig()
     seeds = mission_seeds(seed, runs)
-    minds = {s.name: run_mind(s, config, seeds, advance) for s in specs}
+    minds = {s.name: run_mind(s, config, seeds, advance, watch) for s in specs}
     accumulation = None
     learners = [s for s in specs if s.name in ("NARS", "ONA")]
     ready = [s for s in learners if minds[s.name].ok] or learners
     if rounds > 0 and ready:
         try:
-            accumulation = learn_accumulation(ready[0], config, seed, rounds)
+            accumulation = learn_accumulation(ready[0], config, seed, rounds, watch)
         except Exception as exc:
             accumulation = Accumulation(
                 rounds, None, [], {}, [], unavailable=f"{type(exc).__name__}: {exc}"

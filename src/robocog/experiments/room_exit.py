@@ -24,6 +24,7 @@ from __future__ import annotations
 import argparse
 import math
 from collections import Counter
+from collections.abc import Callable
 from dataclasses import asdict, dataclass, field
 from importlib import resources
 from pathlib import Path
@@ -104,11 +105,14 @@ def run_once(
     config: RoomConfig | None = None,
     max_commands: int = 400,
     keep_route: bool = True,
+    watch: Callable[..., Any] | None = None,
 ) -> RunResult:
-    """Run one mind on one seeded room until it leaves, falls idle or runs out of budget."""
+    """Run one mind on one seeded room until it leaves, falls idle or runs out of budget
+    (``watch(world, mind, loop)`` returns a hook called after each cycle: the inspector's)."""
     world = RoomWorld(seed, config)
     mind, perception = build_mind(mind_name)
     loop = Loop(world, mind)
+    on_step = watch(world, mind, loop) if watch else None
     stop: tuple[float, float] | None = None
     stop_source: str | None = None
     correct: bool | None = None
@@ -122,6 +126,8 @@ def run_once(
         phase_before = perception.looking_for or "door"
         world.phase = phase_before
         step = loop.step()
+        if on_step is not None:
+            on_step(step)
         idle = 0 if step.actions else idle + 1
         looked = any(type(c).__name__ == "Look" for c, _ in step.actions)
         if looked and phase_before == "door":
@@ -250,6 +256,9 @@ def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--obstacles", type=int, default=0, help="boxes placed in the room")
     parser.add_argument("--particles", type=int, default=2000, help="convergence particles")
     parser.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
+    from robocog.inspector.cli import add_arguments
+
+    add_arguments(parser)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -263,13 +272,21 @@ def run(args: argparse.Namespace) -> int:
     names = list(MINDS) if args.mind == "both" else [args.mind]
     results: dict[str, list[RunResult]] = {}
     unavailable: dict[str, str] = {}
-    with Progress(console=console, transient=True) as progress:
+    from robocog.inspector.cli import session
+
+    with (
+        session(args, "robocog experiment room-exit") as inspecting,
+        Progress(console=console, transient=True) as progress,
+    ):
+        watch = inspecting.watcher() if inspecting else None
         for name in names:
             task = progress.add_task(f"room-exit {name}", total=args.runs)
             runs: list[RunResult] = []
             try:
                 for i in range(args.runs):
-                    runs.append(run_once(args.seed + i, name, config, args.max_commands))
+                    runs.append(
+                        run_once(args.seed + i, name, config, args.max_commands, watch=watch)
+                    )
                     progress.advance(task)
             except MindUnavailable as exc:
                 unavailable[name] = str(exc)

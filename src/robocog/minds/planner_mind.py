@@ -148,6 +148,11 @@ class PlannerMind:
         """True while the latest request is being planned or executed."""
         return self.current is not None and self.current.status in ("planning", "executing")
 
+    def plan_progress(self) -> tuple[list[Step], int]:
+        """The plan being executed and the index of its next step (the inspector shows
+        which step runs; the list is a copy)."""
+        return list(self._steps), self._next
+
     # -- Mind ---------------------------------------------------------------------
 
     def perceive(self, percepts: Sequence[Percept]) -> None:

@@ -1,0 +1,113 @@
+"""Shared pieces of the inspector's tests: a live inspector on a loop in a thread, and
+a browser (Debian's chromium under pytest-playwright) to drive its page."""
+
+from __future__ import annotations
+
+import importlib.util
+import os
+import shutil
+import threading
+from collections.abc import Callable, Iterator
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+#: where each browser test leaves its screenshot
+RESULTS = Path(
+    os.environ.get(
+        "ROBOCOG_TEST_RESULTS", Path(__file__).resolve().parents[2] / "tmp" / "test-results"
+    )
+)
+CHROMIUM = (
+    os.environ.get("ROBOCOG_CHROMIUM")
+    or shutil.which("chromium")
+    or shutil.which("chromium-browser")
+)
+HAVE_PLAYWRIGHT = importlib.util.find_spec("pytest_playwright") is not None
+HAVE_SERVER = (
+    importlib.util.find_spec("starlette") is not None
+    and importlib.util.find_spec("uvicorn") is not None
+)
+
+_needs_browser = pytest.mark.skipif(
+    not (CHROMIUM and HAVE_PLAYWRIGHT and HAVE_SERVER),
+    reason="needs chromium (apt-get install chromium), pytest-playwright and the inspect extra"
+    + f" (chromium: {CHROMIUM or 'absent'}, pytest-playwright: {HAVE_PLAYWRIGHT}, server: {HAVE_SERVER})",
+)
+
+
+def browser(test: Callable[..., Any]) -> Callable[..., Any]:
+    """The marks of every test that drives the page in a browser."""
+    return pytest.mark.browser(_needs_browser(test))
+
+
+server_needed = pytest.mark.skipif(
+    not HAVE_SERVER, reason="needs the inspect extra (starlette, uvicorn)"
+)
+
+
+@pytest.fixture(scope="session")
+def browser_type_launch_args(browser_type_launch_args: dict[str, Any]) -> dict[str, Any]:
+    """Playwright launches Debian's chromium (its own browser download is not used)."""
+    return {**browser_type_launch_args, "executable_path": CHROMIUM}
+
+
+@pytest.fixture
+def screenshot(request: pytest.FixtureRequest) -> Callable[[Any, str], Path]:
+    """``screenshot(page, name)`` saves a full-page PNG under tmp/test-results."""
+
+    def take(page: Any, name: str = "") -> Path:
+        RESULTS.mkdir(parents=True, exist_ok=True)
+        path = RESULTS / f"{request.node.name}{'-' + name if name else ''}.png"
+        page.screenshot(path=str(path), full_page=True)
+        return path
+
+    return take
+
+
+class Live:
+    """An inspector served on loopback, its robot loop running in a thread."""
+
+    def __init__(self, run: Callable[[Any], None], paused: bool = False) -> None:
+        from robocog.inspector.hub import Inspector
+        from robocog.inspector.server import InspectorServer
+
+        self.inspector = Inspector()
+        self.server = InspectorServer(self.inspector, port=0)
+        self.url = self.server.start()
+        if paused:
+            self.inspector.submit("pause")
+        self.error: BaseException | None = None
+
+        def body() -> None:
+            try:
+                run(self.inspector)
+                self.inspector.linger()
+            except BaseException as exc:  # reported by the test
+                self.error = exc
+
+        self.thread = threading.Thread(target=body, daemon=True)
+        self.thread.start()
+
+    def close(self) -> None:
+        self.inspector.close()
+        self.thread.join(timeout=30)
+        self.server.stop()
+
+
+@pytest.fixture
+def live() -> Iterator[Callable[..., Live]]:
+    """``live(run, paused=False)`` starts one; all are closed after the test."""
+    made: list[Live] = []
+
+    def make(run: Callable[[Any], None], paused: bool = False) -> Live:
+        lv = Live(run, paused)
+        made.append(lv)
+        return lv
+
+    yield make
+    for lv in made:
+        lv.close()
+    for lv in made:
+        assert lv.error is None, f"the robot loop failed: {lv.error!r}"
