@@ -79,8 +79,8 @@ class Inspector:
     def __init__(
         self,
         capacity: int = 3000,
-        mind_budget: float = 0.03,
-        min_mind_interval: float = 0.1,
+        mind_budget: float = 0.01,
+        min_mind_interval: float = 0.5,
         world_budget: float | None = None,
     ) -> None:
         self.history = History(capacity)
