@@ -183,6 +183,10 @@ def compare(names, pairs, clears, work, rounds: int, with_hyperon: bool):  # noq
             return sum(len(r_space.execute(g).out) for g in gets)
 
         fns: dict[str, Callable[[], int]] = {"cold": cold, "warm": warm, "get": getlink}
+        for fn in fns.values():
+            # one untimed round first: a fresh process's first queries run up to twice
+            # slower here, and the GetLinks' first round adds their SetLinks
+            fn()
         if h is not None:
             hp = [h[2][kind](b) for b in work[kind]]
 
