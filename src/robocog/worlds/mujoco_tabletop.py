@@ -29,14 +29,14 @@ from __future__ import annotations
 import math
 import random
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass, replace
+from dataclasses import replace
 
 import numpy as np
 
 from robocog.robot.commands import Command, Outcome, PickUp, PutDown, Stack, Unstack
 from robocog.robot.percepts import Gripper, Percept, Resting, Tag
 from robocog.worlds.physics.gl import choose_gl
-from robocog.worlds.tabletop import BLOCK_C_BINS, FIXED_OBJECTS, INITIAL_BINS
+from robocog.worlds.tabletop import BLOCK_C_BINS, FIXED_OBJECTS, INITIAL_BINS, Executed
 
 choose_gl()  # before mujoco is imported (importing robocog.worlds.physics did it too)
 
@@ -75,15 +75,6 @@ def _segment_distance(
     length = dx * dx + dy * dy
     t = 0.0 if length == 0 else max(0.0, min(1.0, ((p[0] - ax) * dx + (p[1] - ay) * dy) / length))
     return math.hypot(p[0] - ax - t * dx, p[1] - ay - t * dy)
-
-
-@dataclass(frozen=True, slots=True)
-class Executed:
-    """One command the arm was given, when (simulated seconds), and how it ended."""
-
-    t: float
-    command: Command
-    outcome: Outcome
 
 
 class MujocoTabletop:
