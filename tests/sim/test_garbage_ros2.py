@@ -167,7 +167,13 @@ def test_the_two_commands_of_the_readme_collect_trash() -> None:
         out, err = sim.communicate(timeout=120)
     finally:
         bridge.terminate()
-        _, bridge_err = bridge.communicate(timeout=30)
+        try:
+            _, bridge_err = bridge.communicate(timeout=30)
+        except subprocess.TimeoutExpired:
+            # it stops in under a second on a quiet machine; on a loaded one a stop that
+            # comes while it is still starting can take longer: what it wrote is enough
+            bridge.kill()
+            _, bridge_err = bridge.communicate(timeout=30)
         if sim.poll() is None:
             sim.kill()
     assert sim.returncode == 0, err[-2000:]
