@@ -54,6 +54,8 @@ class Message:
 
 
 def _receivers(ag: Agent, to: Term) -> list[str]:
+    if to.__class__ is Literal:
+        return [to.functor]  # one receiver, the usual case
     names = list(iter_list(to)) if is_list(to) else [to]
     out = []
     for n in names:

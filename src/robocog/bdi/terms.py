@@ -366,8 +366,19 @@ SOURCE_PERCEPT = Literal("source", (PERCEPT,))
 
 
 def source(name: str | Term) -> Literal:
-    """The annotation ``source(name)``."""
-    return Literal("source", (Literal(name) if isinstance(name, str) else name,))
+    """The annotation ``source(name)`` (one instance per agent name: every message
+    received and every belief told carries one)."""
+    if name.__class__ is str:
+        got = _SOURCES.get(name)
+        if got is None:
+            got = Literal("source", (Literal(name),))
+            if len(_SOURCES) < 10_000:  # agent names: a bounded set in any real system
+                _SOURCES[name] = got
+        return got
+    return Literal("source", (name,))
+
+
+_SOURCES: dict[str, Literal] = {}
 
 
 # ---------------------------------------------------------------------------
