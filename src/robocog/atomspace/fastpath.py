@@ -443,6 +443,8 @@ def _two(rel_get, p: Atom, q: Atom, atoms: bool = False) -> list | None:  # noqa
             s = rel_get((x, j, c, typ, itype, 2))
             if s is not None and (x if w == v else w) in s:
                 found.append(x if atoms else {v: x})
+        if atoms:
+            found.sort()  # the SetLink's order
         return found
     if not atoms:
         for x in best:
@@ -478,27 +480,16 @@ def get_set(space: AtomSpace, body: Atom) -> list[Atom] | None:
         out = body[1]
         if len(out) != 2:
             return None
-        found = _two(space._relations.get, out[0], out[1], True)
-        if found is not None and found and found[0].__class__ is Node:
-            found.sort()  # one variable (the other end a constant): atoms, not pairs
-        return found
+        return _two(space._relations.get, out[0], out[1], True)
     pc = _pair_clause(body)
-    if pc is None or pc[4] != 2:
-        return None
-    a0, a1 = pc[3]
-    if (a0[0] == _VAR) == (a1[0] == _VAR):
-        return None  # both leaves known, or both asked: the general answer
-    typ, c, itype = pc[0], pc[1], pc[2]
-    best = space._relations.get(
-        (a1, 1, c, typ, itype, 2) if a0[0] == _VAR else (a0, 0, c, typ, itype, 2)
-    )
-    return [] if best is None else sorted(best)
+    return None if pc is None else _pair_one(space._relations.get, pc, True)
 
 
-def _pair_one(rel_get, clause: tuple) -> list[Bindings] | None:  # noqa: ANN001
+def _pair_one(rel_get, clause: tuple, atoms: bool = False) -> list | None:  # noqa: ANN001
     """Every grounding of one ``(R c (L leaves...))`` clause (None if no leaf is a
     constant); the single-clause case of :func:`_pair_join`, unrolled for two leaves
-    because it is the query asked most."""
+    because it is the query asked most. With ``atoms``, the groundings of its one
+    variable as a GetLink gives them (sorted), or None for any other shape."""
     typ, c, itype, leaves, m = clause
     if m == 2:
         a0, a1 = leaves
@@ -510,11 +501,15 @@ def _pair_one(rel_get, clause: tuple) -> list[Bindings] | None:  # noqa: ANN001
         else:
             best = rel_get((a0, 0, c, typ, itype, 2))
             if a1[0] != _VAR:  # ground
+                if atoms:
+                    return None  # a GetLink without variables: the general answer
                 return [{}] if best is not None and a1 in best else []
             v = a1
         if best is None:
             return []
-        return [{v: x} for x in best]
+        return sorted(best) if atoms else [{v: x} for x in best]
+    if atoms:
+        return None
     found: list[Bindings] = []
     if _pair_join(rel_get, [clause], _NO_BINDINGS, found):
         return found
