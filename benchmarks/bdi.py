@@ -176,18 +176,27 @@ def run_robocog(source: str, goals: int, env: Corridor | None) -> Result:
     return Result(dt, goals, finished[0] if finished else None)
 
 
-def run_python_agentspeak(source: str, goals: int, env: Corridor | None) -> Result:
+def _python_agentspeak_actions(finished: list[object]):  # noqa: ANN202
+    """python-agentspeak's standard actions and ``done(X)``, which records X."""
     import agentspeak
-    import agentspeak.runtime
     import agentspeak.stdlib
 
-    finished: list[object] = []
     actions = agentspeak.Actions(agentspeak.stdlib.actions)
 
     @actions.add("done", 1)
     def _done(agent, term, intention):  # noqa: ANN001, ANN202
         finished.append(agentspeak.grounded(term.args[0], intention.scope))
         yield
+
+    return actions
+
+
+def run_python_agentspeak(source: str, goals: int, env: Corridor | None) -> Result:
+    import agentspeak
+    import agentspeak.runtime
+
+    finished: list[object] = []
+    actions = _python_agentspeak_actions(finished)
 
     if env is not None:
 
@@ -238,17 +247,10 @@ def run_robocog_ring(laps: int, size: int) -> Result:
 
 
 def run_python_agentspeak_ring(laps: int, size: int) -> Result:
-    import agentspeak
     import agentspeak.runtime
-    import agentspeak.stdlib
 
     finished: list[object] = []
-    actions = agentspeak.Actions(agentspeak.stdlib.actions)
-
-    @actions.add("done", 1)
-    def _done(agent, term, intention):  # noqa: ANN001, ANN202
-        finished.append(agentspeak.grounded(term.args[0], intention.scope))
-        yield
+    actions = _python_agentspeak_actions(finished)
 
     envr = agentspeak.runtime.Environment()
     names = ring_names(size)

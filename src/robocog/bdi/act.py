@@ -54,20 +54,7 @@ def process_feedback(self: Agent) -> None:
     if self.C.pending.pop(i.id, None) is None or i.dropped:
         return
     if ok:
-        # the action succeeded: on to the next formula (``_advance``)
-        stack = i.stack
-        im = stack[-1]
-        cur = im.cur
-        if cur is not None:
-            cur = im.cur = cur[1]
-        if cur is None:
-            self._clear(i)
-            if not stack:
-                return
-        if self._has_atomic:
-            self._requeue(i)
-        else:
-            self.C.running.append(i)
+        self._advance(i)  # the action succeeded: on to the next formula
     else:
         noenv = (Literal("noenv"),) if reason == NO_ENVIRONMENT else ()
         self.fail_intention(i, "action_failed", reason, noenv)

@@ -128,15 +128,7 @@ def fail_intention(
 def drop(self: Agent, i: Intention) -> None:
     """Forget an intention everywhere it may be waiting."""
     i.dropped = True
-    C = self.C
-    C.pending.pop(i.id, None)
-    if C.atomic_intention is i:
-        C.atomic_intention = None
-    if C.atomic_event is not None and C.atomic_event.intention is i:
-        C.atomic_event = None
-    if i in C.running:
-        C.running.remove(i)
-    C.keep_events(lambda e: e.intention is not i)
+    self._unschedule(i)
 
 
 def intentions(self: Agent) -> list[Intention]:
@@ -240,6 +232,7 @@ def resume(self: Agent, i: Intention) -> bool:
 
 
 def unschedule(self: Agent, i: Intention) -> None:
+    """Take ``i`` out of every queue and wait it is in (it stays alive)."""
     C = self.C
     C.pending.pop(i.id, None)
     if C.atomic_intention is i:

@@ -63,7 +63,7 @@ class MultiAgentSystem:
         if ag is None:
             raise ActionError(f"no agent named {msg.receiver}")
         ag.mailbox.append(msg)
-        self._awake[ag.name] = self._place[ag.name]
+        self.wake(ag)
 
     def step(self) -> None:
         """One reasoning cycle of every agent, in the order they were added."""

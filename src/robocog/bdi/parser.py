@@ -604,17 +604,13 @@ def _ns_chain(chain: P.Chain, ns: str) -> P.Chain:
             st = P.Step(st.kind, _ns_lit(st.term, ns), st.blocks, st.line, st.state)
         elif st.kind == P.TEST_STEP:
             st = P.Step(st.kind, _ns_formula(st.term, ns), st.blocks, st.line, st.state)
-        elif st.kind in (P.IF, P.WHILE, P.FOR):
-            blocks = tuple(
-                (_ns_formula(b[0], ns), _ns_chain(b[1], ns))
-                if isinstance(b, tuple) and len(b) == 2 and not isinstance(b[0], P.Step)
-                else _ns_chain(b, ns)
-                for b in st.blocks
-            )
-            state = (
-                _ns_chain(st.state, ns) if st.kind == P.IF and st.state is not None else st.state
-            )
-            st = P.Step(st.kind, _ns_formula(st.term, ns), blocks, st.line, state)
+        elif st.kind == P.IF:
+            # blocks: (condition, chain) per branch; state: the else chain
+            blocks = tuple((_ns_formula(c, ns), _ns_chain(b, ns)) for c, b in st.blocks)
+            st = P.Step(st.kind, _ns_formula(st.term, ns), blocks, st.line, _ns_chain(st.state, ns))
+        elif st.kind in (P.WHILE, P.FOR):
+            blocks = tuple(_ns_chain(b, ns) for b in st.blocks)  # the body
+            st = P.Step(st.kind, _ns_formula(st.term, ns), blocks, st.line, st.state)
         elif st.kind == P.FORK:
             st = P.Step(st.kind, st.term, tuple(_ns_chain(b, ns) for b in st.blocks), st.line)
         steps.append(st)

@@ -164,7 +164,7 @@ def _delete(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
     else:
         nxt = 1
     v = resolve(args[nxt], s)
-    target = args[nxt + 1] if nxt + 1 < len(args) else args[-1]
+    target = args[nxt + 1]
     if rng is not None:
         if v.__class__ is str:
             return bind(v[: rng[0]] + v[rng[1] :], target, s, trail)
