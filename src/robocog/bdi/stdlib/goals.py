@@ -10,7 +10,7 @@ from robocog.bdi import plans as P
 from robocog.bdi.logic import ActionError
 from robocog.bdi.signals import DONE, SUSPEND
 from robocog.bdi.stdlib.base import bind_each, internal, need_args
-from robocog.bdi.terms import Literal, print_str
+from robocog.bdi.terms import Literal, Term, print_str
 from robocog.bdi.unifier import resolve, undo, unify
 
 if TYPE_CHECKING:
@@ -172,29 +172,31 @@ def _drop_all_events(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> 
     return True
 
 
-@internal("intend")
-def _intend(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Iterator[None]:
-    need_args(args, 1, "intend")
+def _intended_goals(ag: Agent, ctx: Any) -> list[Term]:
+    """The achievement goals of every live intention, the running one included."""
     goals = []
     live = ag.C.intentions() + ([ctx[0]] if ctx else [])
     for i in live:
         for im in i.stack:
             if im.trigger.kind == P.ACHIEVE and im.trigger.op == "+":
                 goals.append(resolve(im.trigger.literal, im.s))
-    return bind_each(iter(goals), args[0], s, trail)
+    return goals
+
+
+@internal("intend")
+def _intend(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Iterator[None]:
+    need_args(args, 1, "intend")
+    return bind_each(iter(_intended_goals(ag, ctx)), args[0], s, trail)
 
 
 @internal("desire")
 def _desire(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Iterator[None]:
+    """What is intended, and the achievement goals still waiting as events."""
     need_args(args, 1, "desire")
     goals = [
         e.trigger.literal
         for e in ag.C.events
         if e.trigger.kind == P.ACHIEVE and e.trigger.op == "+"
     ]
-    live = ag.C.intentions() + ([ctx[0]] if ctx else [])
-    for i in live:
-        for im in i.stack:
-            if im.trigger.kind == P.ACHIEVE and im.trigger.op == "+":
-                goals.append(resolve(im.trigger.literal, im.s))
+    goals += _intended_goals(ag, ctx)
     return bind_each(iter(goals), args[0], s, trail)
