@@ -33,6 +33,7 @@ ENGINE_MODULES = (
     "event",
     "table",
     "memory",
+    "state",
     "unify",
     "rules",
     "inference",

@@ -6,6 +6,7 @@ import random
 
 from robocog.nars import NAR
 from robocog.nars.narsese import parse_term
+from robocog.nars.sensorimotor import source_spike, spike_groups
 from robocog.nars.unify import unify
 
 
@@ -38,11 +39,11 @@ def test_indexed_precondition_lookup_matches_scan() -> None:
     for _ in range(120):
         a, b = rng.choice(names), rng.choice(names)
         nar.add_input(f"<{a} --> [{b}]>. :|:")
-    groups = nar._spike_groups()
+    groups = spike_groups(nar)
     found = 0
     for s in _sources(names):
         want = _scan(nar, s)
-        assert nar._source_spike(s, groups) is want
+        assert source_spike(nar, s, groups) is want
         found += want is not None
     assert found > len(names)  # the check compared real events, not only misses
 
@@ -55,7 +56,7 @@ def test_groups_follow_the_index_as_it_fills_overflows_and_loses_concepts() -> N
     nar.output = lambda _line: None
     names = [f"n{i}" for i in range(12)]
     sources = _sources(names[:4])
-    nar._spike_groups()  # built early, then only maintained
+    spike_groups(nar)  # built early, then only maintained
     compared = 0
     for step in range(300):
         a, b = rng.choice(names), rng.choice(names)
@@ -63,12 +64,12 @@ def test_groups_follow_the_index_as_it_fills_overflows_and_loses_concepts() -> N
         if step % 10 == 0:
             for s in sources:
                 want = _scan(nar, s)
-                assert nar._source_spike(s) is want
+                assert source_spike(nar, s) is want
                 compared += want is not None
     assert len(nar.time_index) == 16
     assert nar.memory.evictions > 0
     # what was maintained is what a fresh build gives, group by group, in order
-    kept = {k: list(v) for k, v in nar._spike_groups().items()}
-    nar._groups = None
-    assert kept == {k: list(v) for k, v in nar._spike_groups().items()}
+    kept = {k: list(v) for k, v in spike_groups(nar).items()}
+    nar.groups = None
+    assert kept == {k: list(v) for k, v in spike_groups(nar).items()}
     assert compared > 50

@@ -17,8 +17,9 @@ from typing import TYPE_CHECKING
 from . import truth as tf
 from .event import BELIEF, GOAL, Event, Implication, revised_or_chosen
 from .memory import EventQueue
-from .sensorimotor import executable, split_precondition
+from .sensorimotor import add_implication, executable, split_precondition
 from .stamp import fmt, merge
+from .state import emit, shows
 from .terms import SEQUENCE, Term, atom, compound
 from .truth import Truth, expectation
 from .unify import apply, unify
@@ -118,8 +119,8 @@ class DecisionMixin:
             if popped is None:
                 continue
             priority, g = popped
-            if self._shows(priority):  # type: ignore[attr-defined]
-                self._print("Selected: " + g.line(priority))  # type: ignore[attr-defined]
+            if shows(self, priority):  # type: ignore[attr-defined]
+                emit(self, "Selected: " + g.line(priority))  # type: ignore[attr-defined]
             d = self._goal(g, priority, layer)
             if d is not None:
                 self._execute(d)
@@ -299,12 +300,13 @@ class DecisionMixin:
             return None
         imp, pre = best.implication, best.precondition
         if imp is not None and pre is not None:
-            self._print(  # type: ignore[attr-defined]
+            emit(
+                self,  # type: ignore[arg-type]
                 f"decision expectation={best.desire:f} implication: {imp.term}. "
                 f"Stamp={fmt(imp.stamp)} Truth: frequency={imp.truth.f:f} "
                 f"confidence={imp.truth.c:f} dt={imp.dt:f} precondition: {pre.term}. :|: "
                 f"Stamp={fmt(pre.stamp)} Truth: frequency={pre.truth.f:f} "
-                f"confidence={pre.truth.c:f} occurrenceTime={pre.occurrence_time}"
+                f"confidence={pre.truth.c:f} occurrenceTime={pre.occurrence_time}",
             )
         return best
 
@@ -390,8 +392,8 @@ class DecisionMixin:
         c = self.memory.find(g.term)  # type: ignore[attr-defined]
         if c is not None and c.goal_spike is not None and c.goal_spike.same(g):
             return
-        if self._add_goal(g, priority, layer + 1) and self._shows(priority):  # type: ignore[attr-defined]
-            self._print("Derived: " + g.line(priority))  # type: ignore[attr-defined]
+        if self._add_goal(g, priority, layer + 1) and shows(self, priority):  # type: ignore[attr-defined]
+            emit(self, "Derived: " + g.line(priority))  # type: ignore[attr-defined]
 
     # -------------------------------------------------------------- execution
     def _execute(self, d: Decision) -> None:
@@ -403,11 +405,11 @@ class DecisionMixin:
         else:
             name, arg = op.args[1].name, op.args[0]
             shown = str(arg)
-        self._print(f"{name} executed with args {shown}")  # type: ignore[attr-defined]
+        emit(self, f"{name} executed with args {shown}")  # type: ignore[attr-defined]
         fn = self.operations.get(name)  # type: ignore[attr-defined]
         if fn is not None:
             fn(arg)
-        for cb in self._execution_cbs:  # type: ignore[attr-defined]
+        for cb in self.execution_cbs:  # type: ignore[attr-defined]
             cb(name, arg)
         e = Event(
             op,
@@ -429,7 +431,8 @@ class DecisionMixin:
                 d.precondition.truth, 0, round(general.dt) if general is not None else 0
             )
             neg = tf.eternalize(tf.induction(Truth(0.0, cfg.anticipation_confidence), past))
-            self._add_implication(  # type: ignore[attr-defined]
+            add_implication(
+                self,  # type: ignore[arg-type]
                 d.missing_specific,
                 neg,
                 (),

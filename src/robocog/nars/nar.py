@@ -12,19 +12,20 @@ import itertools
 import math
 import os
 from collections.abc import Callable
-from pathlib import Path
+from functools import partial
 
-from . import commands, memfile
+from . import commands, memfile, sensorimotor
 from . import truth as tf
 from .config import MAX_TIME, Config
 from .decision import DecisionMixin
 from .event import BELIEF, ETERNAL, GOAL, Event, Implication, revised_or_chosen
 from .inference import Derivation, apply_double, apply_single, special
-from .memory import Concept, Memory
+from .memory import Concept
 from .narsese import MAX_LINE, NarseseError, Sentence, parse_sentence
 from .rules import RuleTable, rejected
-from .sensorimotor import SensorimotorMixin
 from .stamp import fmt, has_duplicate, merge, overlap
+from .state import DEFAULT_OPERATIONS, Reasoner, clear, clear_caches, emit, shows
+from .state import rand as _rand
 from .terms import F_COMPOSED, TEMPORAL_IMPLICATION, Term, atom
 from .truth import Truth, expectation
 from .unify import unify
@@ -33,18 +34,6 @@ PENDING_QUESTIONS = 32
 #: the most cycles one input line may ask for (a bare number): ONA's examples ask for
 #: a thousand at most; a hundred million is hours of work, so more is a typo
 MAX_CYCLES_PER_LINE = 100_000_000
-DEFAULT_OPERATIONS = (
-    "^left",
-    "^right",
-    "^up",
-    "^down",
-    "^say",
-    "^pick",
-    "^drop",
-    "^go",
-    "^activate",
-    "^deactivate",
-)
 
 _RULE_TABLES: dict[int, RuleTable] = {}
 
@@ -56,72 +45,50 @@ def _rule_table(level: int) -> RuleTable:
     return t
 
 
-class NAR(SensorimotorMixin, DecisionMixin):
+class NAR(Reasoner, DecisionMixin):
     """A Non-Axiomatic Reasoner with ONA's behaviour and a bounded memory."""
 
     def __init__(self, seed: int = 666, **config_overrides: object) -> None:
-        self.config = Config()
-        self.config.update(**config_overrides)
-        self.seed = seed
-        self._rand_state = seed
-        self._answer_cbs: list[Callable[[Event], None]] = []
-        self._derivation_cbs: list[Callable[[Event], None]] = []
-        self._execution_cbs: list[Callable[[str, Term | None], None]] = []
-        self.output: Callable[[str], None] | None = None
-        self.operations: dict[str, Callable[[Term | None], object] | None] = {}
-        #: where ``*save``/``*load`` lines may write and read (None: they are refused)
-        self.memory_dir: Path | None = None
-        self.reset()
+        config = Config()
+        config.update(**config_overrides)
+        Reasoner.__init__(self, config, seed)
+        self.memory.on_remove = partial(sensorimotor.forget_concept, self)
 
     # ------------------------------------------------------------------ state
     def reset(self) -> None:
         """Forget everything (ONA's ``*reset``); the random generator is not reseeded."""
-        c = self.config
-        self.memory = Memory(
-            c.concepts_max, c.operations_max, c.table_size, c.cycling_belief_events_max
-        )
-        self.time = 1
-        self.stamp_base = 1
-        self.concept_threshold = 0.0
-        self.matched_total = 0
-        self.op_names: list[str] = list(DEFAULT_OPERATIONS)
+        clear(self)
         for name, fn in list(self.operations.items()):
             del self.operations[name]
             self.register_operation(name, fn)  # type: ignore[arg-type]
-        self.process_id = 0
-        self.stats = {"inputs": 0, "derived": 0, "selected": 0, "answers": 0}
-        self.pending_questions: dict[Term, None] = {}
-        self._init_sensorimotor()
-        self._init_goals()
-        self.memory.on_remove = self._forget_concept
+        self.memory.on_remove = partial(sensorimotor.forget_concept, self)
 
     def random_state(self) -> int:
         """The random generator's state, as a saved memory keeps it."""
-        return self._rand_state
+        return self.rand_state
 
     def set_random_state(self, state: int) -> None:
         """Continue the random sequence from ``state`` (a value of :meth:`random_state`)."""
         if not -(1 << 63) <= state < 1 << 64:
             raise ValueError(f"a random state is in [-2**63, 2**64), not {state}")
-        self._rand_state = state
+        self.rand_state = state
 
     def rand(self) -> int:
         """ONA's ``myrand``: the POSIX example LCG, 0..32767."""
-        self._rand_state = (self._rand_state * 1103515245 + 12345) & 0xFFFFFFFFFFFFFFFF
-        return (self._rand_state // 65536) % 32768
+        return _rand(self)
 
     # --------------------------------------------------------------- callbacks
     def on_answer(self, cb: Callable[[Event], None]) -> None:
         """Call ``cb(event)`` with every answer found."""
-        self._answer_cbs.append(cb)
+        self.answer_cbs.append(cb)
 
     def on_derivation(self, cb: Callable[[Event], None]) -> None:
         """Call ``cb(event)`` with every derived event that enters the event queue."""
-        self._derivation_cbs.append(cb)
+        self.derivation_cbs.append(cb)
 
     def on_execution(self, cb: Callable[[str, Term | None], None]) -> None:
         """Call ``cb(op_name, argument)`` whenever an operation is executed."""
-        self._execution_cbs.append(cb)
+        self.execution_cbs.append(cb)
 
     def register_operation(self, name: str, fn: Callable[[Term | None], object]) -> None:
         """Make ``name`` (e.g. ``^pick``) executable, calling ``fn(argument)`` when it is."""
@@ -142,13 +109,9 @@ class NAR(SensorimotorMixin, DecisionMixin):
                 raise ValueError(f"no free operation slot for {name}")
         self.operations[name] = fn
 
-    def _print(self, line: str) -> None:
-        if self.output is not None:
-            self.output(line)
-
     def emit(self, line: str) -> None:
         """Write one output line (to ``output``, if set), as the reasoner's own are."""
-        self._print(line)
+        emit(self, line)
 
     def name_operation(self, k: int, name: str) -> None:
         """ONA's ``*setopname k name``: operation ``k`` (1-based) is called ``name``."""
@@ -164,8 +127,9 @@ class NAR(SensorimotorMixin, DecisionMixin):
         names[k - 1] = name
         self.op_names = [n for i, n in enumerate(names) if i < k or n != name]
 
-    def _shows(self, priority: float) -> bool:
-        return self.config.print_derivations and priority > self.config.volume_threshold
+    def op_id(self, op: Term) -> int:
+        """1-based id of the operation ``op`` (``^name`` or ``<args --> ^name>``); 0 if unknown."""
+        return sensorimotor.op_id(self, op)
 
     # ------------------------------------------------------------------ input
     def add_input(self, text: str) -> None:
@@ -176,7 +140,7 @@ class NAR(SensorimotorMixin, DecisionMixin):
             self.cycles(1)
             return
         if line.startswith("//"):
-            self._print("Comment: " + line[2:])
+            emit(self, "Comment: " + line[2:])
             return
         if len(line) > MAX_LINE:
             raise NarseseError(1, MAX_LINE + 1, f"line longer than {MAX_LINE} characters")
@@ -186,9 +150,9 @@ class NAR(SensorimotorMixin, DecisionMixin):
             n = int(line)
             if n > MAX_CYCLES_PER_LINE:
                 raise NarseseError(1, 1, f"at most {MAX_CYCLES_PER_LINE} cycles per line")
-            self._print(f"performing {n} inference steps:")
+            emit(self, f"performing {n} inference steps:")
             self.cycles(n)
-            self._print(f"done with {n} additional inference steps.")
+            emit(self, f"done with {n} additional inference steps.")
             return
         if line.startswith("*"):
             self._command(line)
@@ -283,7 +247,7 @@ class NAR(SensorimotorMixin, DecisionMixin):
             return
         if e.type == GOAL:
             if is_input:
-                self._print("Input: " + e.line(priority))
+                emit(self, "Input: " + e.line(priority))
             self._add_goal(e, priority, 0)
             return
         self._store(e, priority, is_input, revised, True)
@@ -296,9 +260,9 @@ class NAR(SensorimotorMixin, DecisionMixin):
             added = self._queue(e, priority)  # only input implications become events
         if added and not is_input:
             self.stats["derived"] += 1
-            if self._shows(priority):
-                self._print(("Revised: " if revised else "Derived: ") + e.line(priority))
-            for cb in self._derivation_cbs:
+            if shows(self, priority):
+                emit(self, ("Revised: " if revised else "Derived: ") + e.line(priority))
+            for cb in self.derivation_cbs:
                 cb(e)
         self._process_new_belief(e, priority, is_input, index)
 
@@ -326,8 +290,8 @@ class NAR(SensorimotorMixin, DecisionMixin):
         eternal_input = is_input and e.occurrence_time == ETERNAL
         if e.term.op == TEMPORAL_IMPLICATION:
             if is_input:
-                self._print("Input: " + e.line(priority))
-            self._add_implication(e.term, e.truth, e.stamp, e.dt, is_input, priority)
+                emit(self, "Input: " + e.line(priority))
+            sensorimotor.add_implication(self, e.term, e.truth, e.stamp, e.dt, is_input, priority)
             return
         c: Concept = self.memory.conceptualize(e.term, now)
         c.use(now, eternal_input, self.config.eternal_input_usage_boost)
@@ -337,7 +301,7 @@ class NAR(SensorimotorMixin, DecisionMixin):
                 # derived compositions stay out of the occurrence-time index: they
                 # serve semantic inference and answers, while temporal induction and
                 # anticipation see what they saw when compositions needed a concept
-                self._note_event(c)
+                sensorimotor.note_event(self, c)
             stamp_size = self.config.stamp_size
             if e.occurrence_time <= now:
                 c.belief_spike = revised_or_chosen(c.belief_spike, e, stamp_size)[0]
@@ -345,7 +309,7 @@ class NAR(SensorimotorMixin, DecisionMixin):
                 c.predicted_belief = revised_or_chosen(c.predicted_belief, e, stamp_size)[0]
             if not self.config.eternalize_events:
                 if is_input:
-                    self._print("Input: " + e.line(priority))
+                    emit(self, "Input: " + e.line(priority))
                 return
             # ONA 0.9.2 also keeps the event's evidence as a (weaker) eternal belief
             eternal = Event(e.term, BELIEF, tf.eternalize(e.truth), e.stamp, ETERNAL, now, e.dt)
@@ -353,7 +317,7 @@ class NAR(SensorimotorMixin, DecisionMixin):
             belief.creation_time = now
             c.belief = belief
             if is_input:
-                self._print("Input: " + e.line(priority))
+                emit(self, "Input: " + e.line(priority))
             if revised:
                 self._add_event(belief, priority, revised=True)
             return
@@ -366,14 +330,14 @@ class NAR(SensorimotorMixin, DecisionMixin):
         belief.creation_time = now
         c.belief = belief
         if e.term.op in ("==>", "<=>"):
-            self._note_link(e.term)
+            sensorimotor.note_link(self, e.term)
         if self.pending_questions:
             self._check_pending(c)
         if is_input:
-            self._print("Input: " + e.line(priority))
+            emit(self, "Input: " + e.line(priority))
         if revised:
-            if self._shows(priority):
-                self._print("Revised: " + belief.line(priority))
+            if shows(self, priority):
+                emit(self, "Revised: " + belief.line(priority))
             self._add_event(belief, priority, revised=True)
 
     def _derived(
@@ -417,14 +381,14 @@ class NAR(SensorimotorMixin, DecisionMixin):
         if popped is not None:
             priority, e = popped
             self.stats["selected"] += 1
-            if self._shows(priority):
-                self._print("Selected: " + e.line(priority))
+            if shows(self, priority):
+                emit(self, "Selected: " + e.line(priority))
             if e.occurrence_time != ETERNAL:
                 sc = self.memory.find(e.term)
                 if sc is not None:
                     sc.selected_time = self.time
-                self._process_belief_event(e, priority)
-        self._forward_links()
+                sensorimotor.process_belief_event(self, e, priority)
+        sensorimotor.forward_links(self)
         self._process_goals()
         if popped is not None:
             self._semantic_inference(popped[1], popped[0])
@@ -492,7 +456,7 @@ class NAR(SensorimotorMixin, DecisionMixin):
     # -------------------------------------------------------------- questions
     def answer(self, question: Term, tense: str | None = None) -> Event | None:
         """Answer a question at once with the best belief, printing ONA's lines."""
-        self._print(f"Input: {question}?" + (f" {tense}" if tense else ""))
+        emit(self, f"Input: {question}?" + (f" {tense}" if tense else ""))
         best: Event | None = None
         best_c: Concept | None = None
         best_e = -1.0
@@ -515,7 +479,7 @@ class NAR(SensorimotorMixin, DecisionMixin):
                 if ex >= best_e:
                     best, best_c, best_e = b, c, ex
         if best is None:
-            self._print("Answer: None.")
+            emit(self, "Answer: None.")
             if tense is None:
                 self._pend(question)
             return None
@@ -543,7 +507,7 @@ class NAR(SensorimotorMixin, DecisionMixin):
                             if ex >= best_e:
                                 best, best_e = imp, ex
         if best is None:
-            self._print("Answer: None.")
+            emit(self, "Answer: None.")
             return None
         e = Event(best.term, BELIEF, best.truth, best.stamp, ETERNAL, best.creation_time, best.dt)
         self._report_answer(e)
@@ -552,16 +516,18 @@ class NAR(SensorimotorMixin, DecisionMixin):
     def _report_answer(self, best: Event) -> None:
         self.stats["answers"] += 1
         if best.occurrence_time == ETERNAL:
-            self._print(
+            emit(
+                self,
                 f"Answer: {best.term}. creationTime={best.creation_time} "
-                f"Stamp={fmt(best.stamp)} {best.truth}"
+                f"Stamp={fmt(best.stamp)} {best.truth}",
             )
         else:
-            self._print(
+            emit(
+                self,
                 f"Answer: {best.term}. :|: occurrenceTime={best.occurrence_time} "
-                f"creationTime={best.creation_time} Stamp={fmt(best.stamp)} {best.truth}"
+                f"creationTime={best.creation_time} Stamp={fmt(best.stamp)} {best.truth}",
             )
-        for cb in self._answer_cbs:
+        for cb in self.answer_cbs:
             cb(best)
 
     def _pend(self, question: Term) -> None:
@@ -693,7 +659,7 @@ class NAR(SensorimotorMixin, DecisionMixin):
         for k, v in snap.config.items():
             setattr(self.config, k, v)
         self.seed = snap.seed
-        self._rand_state = snap.rand
+        self.rand_state = snap.rand
         self.memory = snap.memory
         self.time = snap.time
         self.stamp_base = snap.stamp_base
@@ -704,14 +670,14 @@ class NAR(SensorimotorMixin, DecisionMixin):
         self.stats = snap.stats
         self.pending_questions = snap.pending_questions
         # the sensorimotor indexes' caches start empty, as they do after a reset
-        self._init_sensorimotor()
+        clear_caches(self)
         self.time_index = snap.time_index
         self.table_index = snap.table_index
         self.links_by_subject = snap.links_by_subject
         self.general_links = snap.general_links
         self.goal_layers = snap.goal_layers
         self.recent_goal_concepts = snap.recent_goal_concepts
-        self.memory.on_remove = self._forget_concept
+        self.memory.on_remove = partial(sensorimotor.forget_concept, self)
 
 
 _IMAGES = frozenset({"/1", "/2", "\\1", "\\2"})

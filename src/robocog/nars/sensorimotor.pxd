@@ -11,6 +11,7 @@ from robocog.nars.event cimport Event, Implication, revised_or_chosen
 from robocog.nars.memory cimport Concept
 from robocog.nars.table cimport Table
 from robocog.nars.unify cimport apply, unify
+from robocog.nars.state cimport Reasoner, emit, shows
 
 cdef class _Pattern:
     cdef public Term source

@@ -1,6 +1,7 @@
 """Events in time: temporal and procedural induction, implication tables, anticipation.
 
-Mixed into :class:`~robocog.nars.nar.NAR`. Each concept that received an event sits in
+Functions over a :class:`~robocog.nars.state.Reasoner` (ONA's Cycle.c and Memory.c
+parts for events in time). Each concept that received an event sits in
 an occurrence-time index (a bounded FIFO, newest first); a selected event is paired
 with the recent events there to induce ``<a =/> b>`` and ``<(a &/ ^op) =/> b>``. The
 implications are stored in the predicate concept's table for the operation, and the
@@ -10,7 +11,6 @@ anticipation scans the whole memory.
 
 from __future__ import annotations
 
-from collections import deque
 from collections.abc import Sequence
 from typing import TYPE_CHECKING, TypeVar
 
@@ -19,6 +19,7 @@ from .event import BELIEF, ETERNAL, Event, Implication, revised_or_chosen
 from .rules import hol_component_invalid, introduce_implication_variables
 from .spikegroups import group_add, group_keys, group_remove
 from .stamp import fmt, merge, overlap
+from .state import Reasoner, emit, shows
 from .terms import SEQUENCE, TEMPORAL_IMPLICATION, Term, compound
 from .truth import Truth, expectation
 from .unify import apply, unify
@@ -28,7 +29,7 @@ if TYPE_CHECKING:
     from .table import Table
 
 
-#: what anticipation keeps per precondition term (see ``_anticipate``)
+#: what anticipation keeps per precondition term (see ``anticipate``)
 _Source = tuple[
     Event,
     float,
@@ -97,641 +98,617 @@ def executable(op: Term) -> bool:
     return first.name == "SELF" or first.is_var
 
 
-class SensorimotorMixin:
-    """Temporal reasoning for :class:`NAR` (uses its memory, config, time and output)."""
+# ------------------------------------------------------------- operations
+def op_id(s: Reasoner, op: Term) -> int:
+    """1-based id of the operation ``op`` (``^name`` or ``<args --> ^name>``); 0 if unknown."""
+    name = op.name if op.op is None else op.args[1].name
+    try:
+        return s.op_names.index(name) + 1
+    except ValueError:
+        return 0
 
-    def _init_sensorimotor(self) -> None:
-        self.time_index: deque[Concept] = deque(maxlen=self.config.occurrence_time_index_size)  # type: ignore[attr-defined]
-        #: the index's concepts grouped by term shape (see ``_spike_groups``), or None
-        #: until anticipation first needs them
-        self._groups: dict[object, dict[Concept, None]] | None = None
-        #: (link, precondition instance) -> the link's consequence for that instance
-        self._outcomes: dict[tuple[Term, Term], Term] = {}
-        #: precondition with variables -> where its instances are found (``_source_spike``)
-        self._patterns: dict[Term, _Pattern] = {}
-        #: concept term -> its groups' keys (``group_keys``): a concept moves to the
-        #: newest end of its groups at every event, so they are not recomputed each time
-        self._term_keys: dict[Term, list[object]] = {}
-        #: induced link -> its forms with variables (``_variable_forms``)
-        self._var_forms: dict[Term, tuple[Term, ...]] = {}
-        #: precondition truth -> offset -> ``_failure``, for the anticipation confidence
-        #: ``_failures_for``
-        self._failures: dict[Truth, dict[int, tuple[Truth, float]]] = {}
-        self._failures_for = -1.0
-        #: (event stamp, link stamp, size) -> their merge: a prediction's stamp, which
-        #: is the same at every input while the precondition's event stays
-        self._merged: dict[tuple[tuple[int, ...], tuple[int, ...], int], tuple[int, ...]] = {}
-        #: op id -> concepts with implications in that table
-        self.table_index: dict[int, dict[Concept, None]] = {}
-        #: declarative links by subject: ground subject -> {link term}; general ones apart
-        self.links_by_subject: dict[Term, dict[Term, None]] = {}
-        self.general_links: dict[Term, None] = {}
 
-    # ------------------------------------------------------------- operations
-    def op_id(self, op: Term) -> int:
-        """1-based id of the operation ``op`` (``^name`` or ``<args --> ^name>``); 0 if unknown."""
-        name = op.name if op.op is None else op.args[1].name
-        try:
-            return self.op_names.index(name) + 1  # type: ignore[attr-defined]
-        except ValueError:
-            return 0
-
-    # ------------------------------------------------------------ implications
-    def _add_implication(
-        self,
-        term: Term,
-        t: Truth,
-        stamp: tuple[int, ...],
-        dt: float,
-        is_input: bool,
-        priority: float,
-        creation_time: int | None = None,
-    ) -> Implication | None:
-        """Store ``<pre =/> post>`` in the table of ``post`` for its operation."""
-        subject, predicate = term.args
-        pre, op = split_precondition(subject)
-        opi = 0
-        if op is not None:
-            if not executable(op):
-                return None
-            opi = self.op_id(op)
-            if opi == 0:
-                return None
-        now = self.time  # type: ignore[attr-defined]
-        mem = self.memory  # type: ignore[attr-defined]
-        cfg = self.config  # type: ignore[attr-defined]
-        # the source first: making the target last means nothing evicts it before it is indexed
-        source: Concept = mem.conceptualize(pre, now)
-        source.use(now, is_input, cfg.eternal_input_usage_boost)
-        target: Concept = mem.conceptualize(predicate, now)
-        target.use(now, is_input, cfg.eternal_input_usage_boost)
-        imp = Implication(term, t, stamp, dt, now if creation_time is None else creation_time, pre)
-        table = target.tables(cfg.operations_max, cfg.table_size)[opi]
-        stored = table.add_and_revise(imp, cfg.stamp_size)
-        self.table_index.setdefault(opi, {})[target] = None
-        if stored is not None and not is_input and self._shows(priority):  # type: ignore[attr-defined]
-            self._print(  # type: ignore[attr-defined]
-                f"Derived: dt={dt:f} {term}. Priority={priority:f} Stamp={fmt(stamp)} {t}"
+# ------------------------------------------------------------ implications
+def add_implication(
+    s: Reasoner,
+    term: Term,
+    t: Truth,
+    stamp: tuple[int, ...],
+    dt: float,
+    is_input: bool,
+    priority: float,
+    creation_time: int | None = None,
+) -> Implication | None:
+    """Store ``<pre =/> post>`` in the table of ``post`` for its operation."""
+    subject, predicate = term.args
+    pre, op = split_precondition(subject)
+    opi = 0
+    if op is not None:
+        if not executable(op):
+            return None
+        opi = op_id(s, op)
+        if opi == 0:
+            return None
+    now = s.time
+    mem = s.memory
+    cfg = s.config
+    # the source first: making the target last means nothing evicts it before it is indexed
+    source: Concept = mem.conceptualize(pre, now)
+    source.use(now, is_input, cfg.eternal_input_usage_boost)
+    target: Concept = mem.conceptualize(predicate, now)
+    target.use(now, is_input, cfg.eternal_input_usage_boost)
+    imp = Implication(term, t, stamp, dt, now if creation_time is None else creation_time, pre)
+    table = target.tables(cfg.operations_max, cfg.table_size)[opi]
+    stored = table.add_and_revise(imp, cfg.stamp_size)
+    s.table_index.setdefault(opi, {})[target] = None
+    if stored is not None and not is_input and shows(s, priority):
+        emit(s, f"Derived: dt={dt:f} {term}. Priority={priority:f} Stamp={fmt(stamp)} {t}")
+        if stored is not imp and stored.truth.c > t.c:
+            emit(
+                s,
+                f"Revised: dt={stored.dt:f} {stored.term}. Priority={priority:f} "
+                f"Stamp={fmt(stored.stamp)} {stored.truth}",
             )
-            if stored is not imp and stored.truth.c > t.c:
-                self._print(  # type: ignore[attr-defined]
-                    f"Revised: dt={stored.dt:f} {stored.term}. Priority={priority:f} "
-                    f"Stamp={fmt(stored.stamp)} {stored.truth}"
-                )
-        return stored
+    return stored
 
-    def _forget_concept(self, c: Concept) -> None:
-        """Drop an evicted concept from the implication, link and time indexes."""
-        if c.timed:
-            try:
-                self.time_index.remove(c)
-            except ValueError:
-                pass  # it fell off the end of the full index
-            else:
-                if self._groups is not None:
-                    group_remove(self._groups, c, self._keys_of(c.term))
-        tables = c.precondition_beliefs
-        if tables is not None:
-            for opi, table in enumerate(tables):
-                if not table.items:
+
+def forget_concept(s: Reasoner, c: Concept) -> None:
+    """Drop an evicted concept from the implication, link and time indexes."""
+    if c.timed:
+        try:
+            s.time_index.remove(c)
+        except ValueError:
+            pass  # it fell off the end of the full index
+        else:
+            if s.groups is not None:
+                group_remove(s.groups, c, _keys_of(s, c.term))
+    tables = c.precondition_beliefs
+    if tables is not None:
+        for opi, table in enumerate(tables):
+            if not table.items:
+                continue
+            d = s.table_index.get(opi)
+            if d is not None:
+                d.pop(c, None)
+    t = c.term
+    if t.op in ("==>", "<=>"):
+        s.general_links.pop(t, None)
+        for side in t.args:
+            d2 = s.links_by_subject.get(side)
+            if d2 is not None:
+                d2.pop(t, None)
+                if not d2:
+                    del s.links_by_subject[side]
+
+
+# ------------------------------------------------------ declarative links
+def note_link(s: Reasoner, term: Term) -> None:
+    """Index an eternal ``==>``/``<=>`` belief by its condition (both sides of ``<=>``)."""
+    sides = [term.args[0]] if term.op == "==>" else [term.args[0], term.args[1]]
+    for side in sides:
+        if side.has_var:
+            s.general_links[term] = None
+            while len(s.general_links) > 4 * s.config.table_size:
+                del s.general_links[next(iter(s.general_links))]
+        else:
+            s.links_by_subject.setdefault(side, {})[term] = None
+
+
+def forward_links(s: Reasoner) -> None:
+    """Events that just happened travel forward through ``==>``/``<=>`` beliefs:
+    the consequence gets a belief event at the same time (deduction / analogy)."""
+    cfg = s.config
+    now = s.time
+    mem = s.memory
+    if not s.links_by_subject and not s.general_links:
+        return
+    tolerance = cfg.belief_last_used_tolerance
+    c: Concept
+    lc: Concept | None
+    tcon: Concept
+    spike: Event
+    old: Event | None
+    link: Term
+    a: Term
+    b: Term
+    cond: Term
+    concl: Term
+    # (a loop rather than a comprehension, so that the compiled engine reads ``c``
+    # and ``last`` as declared; and the age test against a float, a C double when
+    # compiled, exact for any cycle count below 2**53, so the index's 512 entries
+    # are tested without making an integer each)
+    oldest: float = now - tolerance
+    last: Event | None
+    fresh: list[Concept] = []
+    for c in s.time_index:
+        last = c.belief_spike
+        if last is not None and last.creation_time >= oldest and not c.term.has_var:
+            fresh.append(c)
+    for c in fresh:
+        spike = c.belief_spike
+        links = list(s.links_by_subject.get(c.term, ()))
+        for g in s.general_links:
+            links.append(g)
+        for link in links[: cfg.top_k_declarative_implications * 4]:
+            lc = mem.find(link)
+            if lc is None or lc.belief is None:
+                s.links_by_subject.get(c.term, {}).pop(link, None)
+                continue
+            a, b = link.args
+            for cond, concl in ((a, b), (b, a)) if link.op == "<=>" else ((a, b),):
+                if cond.op is not None and cond.op != c.term.op:
+                    continue  # what unify would say first, without the call
+                bind = unify(cond, c.term)
+                if bind is None:
                     continue
-                d = self.table_index.get(opi)
-                if d is not None:
-                    d.pop(c, None)
-        t = c.term
-        if t.op in ("==>", "<=>"):
-            self.general_links.pop(t, None)
-            for side in t.args:
-                d2 = self.links_by_subject.get(side)
-                if d2 is not None:
-                    d2.pop(t, None)
-                    if not d2:
-                        del self.links_by_subject[side]
-
-    # ------------------------------------------------------ declarative links
-    def _note_link(self, term: Term) -> None:
-        """Index an eternal ``==>``/``<=>`` belief by its condition (both sides of ``<=>``)."""
-        sides = [term.args[0]] if term.op == "==>" else [term.args[0], term.args[1]]
-        for side in sides:
-            if side.has_var:
-                self.general_links[term] = None
-                while len(self.general_links) > 4 * self.config.table_size:  # type: ignore[attr-defined]
-                    del self.general_links[next(iter(self.general_links))]
-            else:
-                self.links_by_subject.setdefault(side, {})[term] = None
-
-    def _forward_links(self) -> None:
-        """Events that just happened travel forward through ``==>``/``<=>`` beliefs:
-        the consequence gets a belief event at the same time (deduction / analogy)."""
-        cfg = self.config  # type: ignore[attr-defined]
-        now = self.time  # type: ignore[attr-defined]
-        mem = self.memory  # type: ignore[attr-defined]
-        if not self.links_by_subject and not self.general_links:
-            return
-        tolerance = cfg.belief_last_used_tolerance
-        c: Concept
-        lc: Concept | None
-        tcon: Concept
-        spike: Event
-        old: Event | None
-        link: Term
-        a: Term
-        b: Term
-        cond: Term
-        concl: Term
-        # (a loop rather than a comprehension, so that the compiled engine reads ``c``
-        # and ``last`` as declared; and the age test against a float, a C double when
-        # compiled, exact for any cycle count below 2**53, so the index's 512 entries
-        # are tested without making an integer each)
-        oldest: float = now - tolerance
-        last: Event | None
-        fresh: list[Concept] = []
-        for c in self.time_index:
-            last = c.belief_spike
-            if last is not None and last.creation_time >= oldest and not c.term.has_var:
-                fresh.append(c)
-        for c in fresh:
-            spike = c.belief_spike
-            links = list(self.links_by_subject.get(c.term, ()))
-            for g in self.general_links:
-                links.append(g)
-            for link in links[: cfg.top_k_declarative_implications * 4]:
-                lc = mem.find(link)
-                if lc is None or lc.belief is None:
-                    self.links_by_subject.get(c.term, {}).pop(link, None)
+                target = apply(concl, bind)
+                if target.has_var or overlap(spike.stamp, lc.belief.stamp):
                     continue
-                a, b = link.args
-                for cond, concl in ((a, b), (b, a)) if link.op == "<=>" else ((a, b),):
-                    if cond.op is not None and cond.op != c.term.op:
-                        continue  # what unify would say first, without the call
-                    bind = unify(cond, c.term)
-                    if bind is None:
-                        continue
-                    target = apply(concl, bind)
-                    if target.has_var or overlap(spike.stamp, lc.belief.stamp):
-                        continue
-                    fn = tf.deduction if link.op == "==>" else tf.analogy
-                    t = fn(lc.belief.truth, spike.truth)
-                    if t.c < cfg.min_confidence:
-                        continue
-                    tcon = mem.conceptualize(target, now)
-                    old = tcon.belief_spike
-                    if old is not None and (
-                        old.occurrence_time > spike.occurrence_time
-                        or (old.occurrence_time == spike.occurrence_time and old.truth.c >= t.c)
-                    ):
-                        continue
-                    tcon.belief_spike = Event(
-                        target,
-                        BELIEF,
-                        t,
-                        merge(spike.stamp, lc.belief.stamp, cfg.stamp_size),
-                        spike.occurrence_time,
-                        now,
-                    )
-                    self._note_event(tcon)
-
-    # -------------------------------------------------------------- induction
-    def _note_event(self, c: Concept) -> None:
-        """Remember that ``c`` just received an event (newest first)."""
-        idx = self.time_index
-        groups = self._groups
-        present = False
-        if c.timed:  # it has been in the index (a search for any other is in vain)
-            try:
-                idx.remove(c)
-                present = True
-            except ValueError:
-                pass  # it fell off the end of the full index
-        if not present and groups is not None and len(idx) == idx.maxlen:
-            gone = idx[-1]  # about to fall off the full index
-            group_remove(groups, gone, self._keys_of(gone.term))
-        c.timed = True
-        idx.appendleft(c)
-        if groups is not None:
-            group_add(groups, c, self._keys_of(c.term))
-
-    def _keys_of(self, term: Term) -> Sequence[object]:
-        """The groups a concept of ``term`` belongs in: ``group_keys(term)``,
-        remembered (the same concepts come and go), and none for a term with variables,
-        which stays out of the groups."""
-        if term.has_var:
-            return ()
-        keys = self._term_keys.get(term)
-        if keys is None:
-            keys = _remember(self._term_keys, term, group_keys(term))
-        return keys
-
-    def _process_belief_event(self, e: Event, priority: float) -> None:
-        """ONA's sensorimotor processing of a selected belief event (Cycle.c, 0.9.2).
-
-        Concepts are visited newest first in the occurrence-time index; a sequence made
-        on the way takes effect at once (its concept's event is replaced before later
-        concepts are visited), as in ONA.
-        """
-        cfg = self.config  # type: ignore[attr-defined]
-        now = self.time  # type: ignore[attr-defined]
-        if e.occurrence_time == ETERNAL or e.processed:
-            return
-        if now - e.occurrence_time >= cfg.max_sequence_timediff:
-            return
-        e.processed = True
-        window = cfg.precondition_consequence_distance
-        occ = e.occurrence_time
-        e_is_op = e.term.is_op
-        # (declared for the compiled engine: concepts and events read as structs, and
-        # the time and its windows as floats, C doubles when compiled, exact below
-        # 2**53 cycles: the first test of every index entry makes no integer)
-        at: float = occ
-        span: float = window
-        opc: Concept
-        pc: Concept
-        c: Concept
-        op_ev: Event | None
-        pre: Event | None
-        b: Event | None
-        if not e_is_op:
-            # procedural: <(pre &/ op) =/> e> for an op between pre and e
-            snapshot = list(self.time_index)
-            for opc in snapshot:
-                op_ev = opc.belief_spike
-                if (
-                    op_ev is None
-                    or not opc.term.is_op
-                    or op_ev.creation_time >= now
-                    or op_ev.occurrence_time >= occ
-                    or abs(op_ev.occurrence_time - occ) >= window
-                    or abs(opc.selected_time - occ) >= window
+                fn = tf.deduction if link.op == "==>" else tf.analogy
+                t = fn(lc.belief.truth, spike.truth)
+                if t.c < cfg.min_confidence:
+                    continue
+                tcon = mem.conceptualize(target, now)
+                old = tcon.belief_spike
+                if old is not None and (
+                    old.occurrence_time > spike.occurrence_time
+                    or (old.occurrence_time == spike.occurrence_time and old.truth.c >= t.c)
                 ):
                     continue
-                # (the tests are pure reads, so their order is free: the time window,
-                # which excludes most of the index, comes first)
-                for pc in snapshot:
-                    pre = pc.belief_spike
-                    if (
-                        pre is None
-                        or abs(pre.occurrence_time - at) >= span
-                        or pc.term.is_op
-                        or pre.creation_time >= now
-                        or pre.occurrence_time >= op_ev.occurrence_time
-                        or abs(pc.selected_time - occ) >= window
-                        or pc.term.op in ("==>", "<=>")
-                        or pc.term is e.term
-                        or overlap(pre.stamp, e.stamp)
-                    ):
-                        continue
-                    self._induce(pre, op_ev, e, priority)
-        # temporal: <c =/> e> for recent non-op events, and the sequence (c &/ e)
-        tdiff = cfg.max_sequence_timediff
-        reach: float = tdiff
-        for c in () if e_is_op else list(self.time_index):  # an operation pairs with none
-            b = c.belief_spike
+                tcon.belief_spike = Event(
+                    target,
+                    BELIEF,
+                    t,
+                    merge(spike.stamp, lc.belief.stamp, cfg.stamp_size),
+                    spike.occurrence_time,
+                    now,
+                )
+                note_event(s, tcon)
+
+
+# -------------------------------------------------------------- induction
+def note_event(s: Reasoner, c: Concept) -> None:
+    """Remember that ``c`` just received an event (newest first)."""
+    idx = s.time_index
+    groups = s.groups
+    present = False
+    if c.timed:  # it has been in the index (a search for any other is in vain)
+        try:
+            idx.remove(c)
+            present = True
+        except ValueError:
+            pass  # it fell off the end of the full index
+    if not present and groups is not None and len(idx) == idx.maxlen:
+        gone = idx[-1]  # about to fall off the full index
+        group_remove(groups, gone, _keys_of(s, gone.term))
+    c.timed = True
+    idx.appendleft(c)
+    if groups is not None:
+        group_add(groups, c, _keys_of(s, c.term))
+
+
+def _keys_of(s: Reasoner, term: Term) -> Sequence[object]:
+    """The groups a concept of ``term`` belongs in: ``group_keys(term)``,
+    remembered (the same concepts come and go), and none for a term with variables,
+    which stays out of the groups."""
+    if term.has_var:
+        return ()
+    keys = s.term_keys.get(term)
+    if keys is None:
+        keys = _remember(s.term_keys, term, group_keys(term))
+    return keys
+
+
+def process_belief_event(s: Reasoner, e: Event, priority: float) -> None:
+    """ONA's sensorimotor processing of a selected belief event (Cycle.c, 0.9.2).
+
+    Concepts are visited newest first in the occurrence-time index; a sequence made
+    on the way takes effect at once (its concept's event is replaced before later
+    concepts are visited), as in ONA.
+    """
+    cfg = s.config
+    now = s.time
+    if e.occurrence_time == ETERNAL or e.processed:
+        return
+    if now - e.occurrence_time >= cfg.max_sequence_timediff:
+        return
+    e.processed = True
+    window = cfg.precondition_consequence_distance
+    occ = e.occurrence_time
+    e_is_op = e.term.is_op
+    # (declared for the compiled engine: concepts and events read as structs, and
+    # the time and its windows as floats, C doubles when compiled, exact below
+    # 2**53 cycles: the first test of every index entry makes no integer)
+    at: float = occ
+    span: float = window
+    opc: Concept
+    pc: Concept
+    c: Concept
+    op_ev: Event | None
+    pre: Event | None
+    b: Event | None
+    if not e_is_op:
+        # procedural: <(pre &/ op) =/> e> for an op between pre and e
+        snapshot = list(s.time_index)
+        for opc in snapshot:
+            op_ev = opc.belief_spike
             if (
-                b is None
-                or abs(b.occurrence_time - at) > reach  # most of the index: first
-                or b.creation_time > now
-                or abs(c.selected_time - occ) > tdiff
-                or b.occurrence_time > occ
-                or c.term.op in ("==>", "<=>")
-                or c.term.is_op
-                or overlap(b.stamp, e.stamp)
+                op_ev is None
+                or not opc.term.is_op
+                or op_ev.creation_time >= now
+                or op_ev.occurrence_time >= occ
+                or abs(op_ev.occurrence_time - occ) >= window
+                or abs(opc.selected_time - occ) >= window
             ):
                 continue
-            t = tf.intersection(tf.projection(b.truth, b.occurrence_time, occ), e.truth)
-            if t.c < cfg.min_confidence:
-                continue
-            if c.term is not e.term:
-                self._induce(b, None, e, priority)
-                if b.occurrence_time == occ:
-                    self._induce(e, None, b, priority)
-            if _sequence_length(c.term) + 1 <= cfg.max_sequence_len and not _has_op(c.term):
-                seq = compound(SEQUENCE, (c.term, e.term))
-                stamp = merge(b.stamp, e.stamp, cfg.stamp_size)
-                self._activate_sequence(Event(seq, BELIEF, t, stamp, occ, now))
-        if priority >= 1.0:  # fresh input: assume failure of what it promises
-            self._anticipate(e)
-
-    def _activate_sequence(self, se: Event) -> None:
-        """A sequence that just happened: its concept gets the event, it is not queued."""
-        mem = self.memory  # type: ignore[attr-defined]
-        c = mem.conceptualize(se.term, self.time)  # type: ignore[attr-defined]
-        old = c.belief_spike
-        if old is None or old.occurrence_time < se.occurrence_time:
-            c.belief_spike = se
-        c.selected_time = self.time  # type: ignore[attr-defined]
-        self._note_event(c)
-
-    def _induce(self, pre: Event, op: Event | None, post: Event, priority: float) -> None:
-        """beliefInduction: ``<pre =/> post>`` (or with ``op``) with ONA's truth."""
-        cfg = self.config  # type: ignore[attr-defined]
-        if op is not None:
-            pre_t = tf.intersection(
-                tf.projection(pre.truth, pre.occurrence_time, op.occurrence_time), op.truth
-            )
-            pre_occ = op.occurrence_time
-        else:
-            pre_t = pre.truth
-            pre_occ = pre.occurrence_time
-        proj = tf.projection(pre_t, pre_occ, post.occurrence_time)
-        t = tf.eternalize(tf.induction(post.truth, proj))
-        if t.c < cfg.min_confidence:
-            return  # most pairs stop here: the link's term and stamp are not built
-        size = cfg.stamp_size
-        if op is not None:
-            subj = compound(SEQUENCE, (pre.term, op.term))
-            stamp = merge(merge(pre.stamp, op.stamp, size), post.stamp, size)
-        else:
-            subj = pre.term
-            stamp = merge(pre.stamp, post.stamp, size)
-        dt = float(post.occurrence_time - pre_occ)
-        term = compound(TEMPORAL_IMPLICATION, (subj, post.term))
-        p = priority * expectation(t)
-        self._add_implication(term, t, stamp, dt, False, p)
-        if cfg.allow_var_intro:
-            for v in self._variable_forms(term):
-                self._add_implication(v, t, stamp, dt, False, p)
-
-    def _variable_forms(self, term: Term) -> tuple[Term, ...]:
-        """The forms of an induced link with variables introduced (extensional, then
-        intensional) that are stored beside it. A function of the term alone, kept
-        because the same links are induced again at nearly every step."""
-        forms = self._var_forms.get(term)
-        if forms is None:
-            found = []
-            for ext in (True, False):
-                v = introduce_implication_variables(term, ext)
-                if v is not None and v is not term and not hol_component_invalid(v):
-                    found.append(v)
-            forms = _remember(self._var_forms, term, tuple(found))
-        return forms
-
-    # ------------------------------------------------------------ anticipation
-    def _anticipate(self, e: Event) -> None:
-        """Assumption of failure (ONA 0.9.2's Decision_Anticipate).
-
-        For every implication in the table of the event's operation (table 0 for a plain
-        event) whose precondition concept has a belief event, the outcome is predicted
-        from that event projected to now in sequence with the operation; if the
-        prediction is expected, one piece of negative evidence is counted against the
-        implication, which the outcome, if it arrives, outweighs by induction. The age of
-        the precondition is not checked: projection makes old ones too weak to count.
-        """
-        cfg = self.config  # type: ignore[attr-defined]
-        now = self.time  # type: ignore[attr-defined]
-        opi = self.op_id(e.term) if e.term.is_op else 0
-        targets = self.table_index.get(opi)
-        if not targets:
-            return
-        mem = self.memory  # type: ignore[attr-defined]
-        op_truth = Truth(1.0, 0.9)
-        threshold: float = cfg.anticipation_threshold
-        # A precondition whose projected truth is this weak cannot lift a prediction
-        # above the threshold (expectation - 1/2 <= c / 2) nor to confidence 0.05, so
-        # only an exactly-zero predicted frequency still counts; this skips the many
-        # implications whose precondition happened long ago without computing them.
-        weak = min(0.05, 1.98 * (threshold - 0.5)) if threshold > 0.5 + 1e-9 else 0.0
-        # precondition term -> (its event, the frequency and confidence of that event
-        # projected to now with the operation, whether that is weak, the bindings making
-        # the precondition that event's term, its stamp's ids, the failures counted for
-        # that event's truth by offset); the same precondition serves many implications.
-        # Dropped when an event or the concept store changes below.
-        sources: dict[Term, _Source | None] = {}
-        groups: dict[object, dict[Concept, None]] | None = None
-        var_sources: list[Term] = []
-        failures = self._failures
-        if self._failures_for != cfg.anticipation_confidence:
-            failures.clear()
-            self._failures_for = cfg.anticipation_confidence
-        merged = self._merged
-        outcomes = self._outcomes
-        stamp_size = cfg.stamp_size
-        boost = cfg.eternal_input_usage_boost
-        showing = self._shows(1.0)  # type: ignore[attr-defined]  # printing is rare: test once
-        evictions = mem.evictions
-        post: Concept
-        oc: Concept
-        imp: Implication
-        it: Truth
-        table: Table
-        spike: Event
-        pre_f: float
-        pre_c: float
-        by_offset: dict[int, tuple[Truth, float]]
-        failure: tuple[Truth, float]
-        for post in list(targets):
-            if mem.find(post.term) is not post:
-                targets.pop(post, None)
-                continue
-            tables = post.precondition_beliefs
-            if tables is None or opi >= len(tables):
-                continue
-            table = tables[opi]
-            for imp in list(table.items):
-                source = imp.source
-                if source is None:
+            # (the tests are pure reads, so their order is free: the time window,
+            # which excludes most of the index, comes first)
+            for pc in snapshot:
+                pre = pc.belief_spike
+                if (
+                    pre is None
+                    or abs(pre.occurrence_time - at) >= span
+                    or pc.term.is_op
+                    or pre.creation_time >= now
+                    or pre.occurrence_time >= op_ev.occurrence_time
+                    or abs(pc.selected_time - occ) >= window
+                    or pc.term.op in ("==>", "<=>")
+                    or pc.term is e.term
+                    or overlap(pre.stamp, e.stamp)
+                ):
                     continue
-                # (a miss is common; compiled, raising and catching KeyError costs more)
-                entry = sources.get(source, _UNKNOWN)
-                if entry is _UNKNOWN:
-                    if source.has_var:
-                        var_sources.append(source)
-                        if groups is None:
-                            groups = self._spike_groups()
-                        spike = self._source_spike(source, groups)
-                        # (_source_spike has made the precondition's pattern)
-                        bind = None if spike is None else self._patterns[source].match(spike.term)
-                    else:  # what _source_spike and unify give for a ground precondition
-                        sc = mem.find(source)
-                        spike = sc.belief_spike if sc is not None else None
-                        bind = None if spike is None or spike.term is not source else {}
-                    if spike is None:
-                        entry = None
-                    else:
-                        by_offset = failures.get(spike.truth)
-                        if by_offset is None:
-                            by_offset = _remember(failures, spike.truth, {})
-                        pre_i = tf.intersection(
-                            tf.projection(spike.truth, spike.occurrence_time, now), op_truth
-                        )
-                        entry = (
-                            spike,
-                            pre_i.f,
-                            pre_i.c,
-                            pre_i.c < weak,
-                            bind,
-                            frozenset(spike.stamp),
-                            by_offset,
-                        )
-                    sources[source] = entry
-                if entry is None:
-                    continue
-                spike, pre_f, pre_c, is_weak, bind, spike_ids, by_offset = entry
-                # deduction and its expectation written out (most links stop here);
-                # the same operations in the same order as tf.deduction/expectation
-                it = imp.truth
-                pf = it.f * pre_f
-                if is_weak and pf != 0.0:
-                    continue
-                if opi:
-                    pre_term, op_term = split_precondition(imp.term.args[0])
-                    subs = unify(pre_term, spike.term)
-                    if subs is None or op_term is None:
-                        continue
-                    if unify(apply(op_term, subs), e.term) is None:
-                        continue  # same operation, other arguments
-                pc = it.c * pre_c * pf
-                if pc * (pf - 0.5) + 0.5 <= threshold and not (pc < 0.05 and pf == 0.0):
-                    continue
-                # one failure counted against the link: the same for every link of this
-                # precondition truth and offset, at every input
-                rdt = round(imp.dt)  # also the prediction's offset below
-                failure = by_offset.get(rdt)
-                if failure is None:
-                    failure = by_offset[rdt] = self._failure(spike.truth, rdt)
-                table.add_failure(imp, failure[0], failure[1], stamp_size)
-                if bind is None:
-                    continue
-                if bind:
-                    # the same link meets the same instance at every input: keep the
-                    # instantiated outcome (a pure function of the two terms)
-                    okey = (imp.term, spike.term)
-                    outcome = outcomes.get(okey)
-                    if outcome is None:
-                        outcome = _remember(outcomes, okey, apply(imp.term.args[1], bind))
-                else:
-                    outcome = imp.term.args[1]
-                if outcome.has_var or not spike_ids.isdisjoint(imp.stamp):
-                    continue  # (the stamps overlap)
-                oc = mem.conceptualize(outcome, now)
-                if mem.evictions != evictions:
-                    evictions = mem.evictions
-                    sources.clear()
-                    var_sources.clear()
-                    groups = None
-                oc.use(now, False, boost)
-                occ = now + rdt
-                mkey = (spike.stamp, imp.stamp, stamp_size)
-                stamp = merged.get(mkey)
-                if stamp is None:
-                    stamp = _remember(merged, mkey, merge(spike.stamp, imp.stamp, stamp_size))
-                # (deduction; ``truth_of`` rather than Truth's keyword-capable constructor:
-                # predictions are made thousands of times per input)
-                pred = Event(outcome, BELIEF, tf.truth_of(pf, pc), stamp, occ, now)
-                if imp.dt > 0.0:
-                    old = oc.predicted_belief
-                    oc.predicted_belief, _ = revised_or_chosen(old, pred, stamp_size, True)
-                    if showing:
-                        self._show_prediction(old, oc.predicted_belief)
-                elif oc.belief_spike is None or occ > oc.belief_spike.occurrence_time:
-                    old = oc.belief_spike
-                    oc.belief_spike, _ = revised_or_chosen(old, pred, stamp_size, True)
-                    if showing:
-                        self._show_prediction(old, oc.belief_spike)
-                    # only this term's entry changes, and the entries of preconditions
-                    # with variables that the outcome instantiates (the others cannot
-                    # have found their event in its concept)
-                    sources.pop(outcome, None)
-                    if var_sources:
-                        kept = []
-                        for v in var_sources:
-                            if (v.op is not None and v.op != outcome.op) or unify(
-                                v, outcome
-                            ) is None:
-                                kept.append(v)
-                            else:
-                                sources.pop(v, None)
-                        var_sources[:] = kept
-
-    def _spike_groups(self) -> dict[object, dict[Concept, None]]:
-        """Concepts of the occurrence-time index without variables, grouped so that a
-        precondition with variables is unified only against terms that can match it: by
-        connector and arity, and by each component at each position (a path of
-        connector, arity and index from the top); key ``None`` holds all of them. Each
-        group is ordered oldest to newest. Built once, then kept in step with the index
-        by :meth:`_note_event` and :meth:`_forget_concept`; whether a member has a belief
-        event is checked where it is read, since events come and go more often than
-        concepts."""
-        groups = self._groups
-        if groups is None:
-            groups = self._groups = {None: {}}
-            for c in reversed(self.time_index):  # oldest first: the newest ends last
-                group_add(groups, c, self._keys_of(c.term))
-        return groups
-
-    def _source_spike(
-        self, source: Term, groups: dict[object, dict[Concept, None]] | None = None
-    ) -> Event | None:
-        """The belief event of a precondition concept; a concept with variables holds
-        the newest event that instantiates it (ONA activates such concepts too)."""
-        c = self.memory.find(source)  # type: ignore[attr-defined]
-        best = c.belief_spike if c is not None else None
-        if source.has_var:
-            if groups is None:
-                groups = self._spike_groups()
-            pattern: _Pattern | None = self._patterns.get(source)
-            if pattern is None:
-                pattern = _remember(self._patterns, source, _Pattern(source))
-            # Every instance is in each of the pattern's groups, all ordered alike (by
-            # their concepts' last event), so each group yields the same first match and
-            # an empty one means none. The smallest is the cheapest to scan; group sizes
-            # drift slowly, so it is chosen afresh only now and then.
-            pattern.uses += 1
-            key = pattern.key
-            if key is _UNKNOWN or not pattern.uses & 31:
-                group: dict[Concept, None] | None = None
-                for k in pattern.keys:
-                    g = groups.get(k)
-                    if not g:
-                        return best  # no concept has this component here: none matches
-                    if group is None or len(g) < len(group):
-                        group = g
-                        key = k
-                pattern.key = key
-            else:
-                group = groups.get(key)
-                if not group:
-                    return best
-            matches = pattern.matches
-            c2: Concept
-            b: Event | None
-            for c2 in reversed(group):  # newest first
-                b = c2.belief_spike
-                if b is None:
-                    continue
-                bind = matches.get(c2.term, _UNKNOWN)  # (pattern.match, read inline)
-                if bind is _UNKNOWN:
-                    bind = pattern.match(c2.term)
-                if bind is None:
-                    continue
-                if best is None or b.occurrence_time > best.occurrence_time:
-                    best = b
-                break
-        return best
-
-    def _show_prediction(self, old: Event | None, new: Event) -> None:
-        """Print a changed prediction as ONA does (a derived event of priority 1); the
-        caller has checked that derivations of that priority are shown."""
+                _induce(s, pre, op_ev, e, priority)
+    # temporal: <c =/> e> for recent non-op events, and the sequence (c &/ e)
+    tdiff = cfg.max_sequence_timediff
+    reach: float = tdiff
+    for c in () if e_is_op else list(s.time_index):  # an operation pairs with none
+        b = c.belief_spike
         if (
-            old is not None
-            and old.truth == new.truth
-            and old.occurrence_time == new.occurrence_time
+            b is None
+            or abs(b.occurrence_time - at) > reach  # most of the index: first
+            or b.creation_time > now
+            or abs(c.selected_time - occ) > tdiff
+            or b.occurrence_time > occ
+            or c.term.op in ("==>", "<=>")
+            or c.term.is_op
+            or overlap(b.stamp, e.stamp)
         ):
-            return
-        self._print("Derived: " + new.line(1.0))  # type: ignore[attr-defined]
+            continue
+        t = tf.intersection(tf.projection(b.truth, b.occurrence_time, occ), e.truth)
+        if t.c < cfg.min_confidence:
+            continue
+        if c.term is not e.term:
+            _induce(s, b, None, e, priority)
+            if b.occurrence_time == occ:
+                _induce(s, e, None, b, priority)
+        if _sequence_length(c.term) + 1 <= cfg.max_sequence_len and not _has_op(c.term):
+            seq = compound(SEQUENCE, (c.term, e.term))
+            stamp = merge(b.stamp, e.stamp, cfg.stamp_size)
+            _activate_sequence(s, Event(seq, BELIEF, t, stamp, occ, now))
+    if priority >= 1.0:  # fresh input: assume failure of what it promises
+        anticipate(s, e)
 
-    def _failure(self, pre_truth: Truth, rdt: int) -> tuple[Truth, float]:
-        """The truth of one failure of a link whose precondition had ``pre_truth``
-        ``rdt`` cycles before the predicted outcome (induction from a {0, anticipation
-        confidence} outcome and the projected precondition), and its evidence weight."""
-        past = tf.projection(pre_truth, 0, rdt)
-        t = tf.eternalize(
-            tf.induction(Truth(0.0, self.config.anticipation_confidence), past)  # type: ignore[attr-defined]
+
+def _activate_sequence(s: Reasoner, se: Event) -> None:
+    """A sequence that just happened: its concept gets the event, it is not queued."""
+    mem = s.memory
+    c = mem.conceptualize(se.term, s.time)
+    old = c.belief_spike
+    if old is None or old.occurrence_time < se.occurrence_time:
+        c.belief_spike = se
+    c.selected_time = s.time
+    note_event(s, c)
+
+
+def _induce(s: Reasoner, pre: Event, op: Event | None, post: Event, priority: float) -> None:
+    """beliefInduction: ``<pre =/> post>`` (or with ``op``) with ONA's truth."""
+    cfg = s.config
+    if op is not None:
+        pre_t = tf.intersection(
+            tf.projection(pre.truth, pre.occurrence_time, op.occurrence_time), op.truth
         )
-        return t, tf.c2w(t.c)
+        pre_occ = op.occurrence_time
+    else:
+        pre_t = pre.truth
+        pre_occ = pre.occurrence_time
+    proj = tf.projection(pre_t, pre_occ, post.occurrence_time)
+    t = tf.eternalize(tf.induction(post.truth, proj))
+    if t.c < cfg.min_confidence:
+        return  # most pairs stop here: the link's term and stamp are not built
+    size = cfg.stamp_size
+    if op is not None:
+        subj = compound(SEQUENCE, (pre.term, op.term))
+        stamp = merge(merge(pre.stamp, op.stamp, size), post.stamp, size)
+    else:
+        subj = pre.term
+        stamp = merge(pre.stamp, post.stamp, size)
+    dt = float(post.occurrence_time - pre_occ)
+    term = compound(TEMPORAL_IMPLICATION, (subj, post.term))
+    p = priority * expectation(t)
+    add_implication(s, term, t, stamp, dt, False, p)
+    if cfg.allow_var_intro:
+        for v in _variable_forms(s, term):
+            add_implication(s, v, t, stamp, dt, False, p)
+
+
+def _variable_forms(s: Reasoner, term: Term) -> tuple[Term, ...]:
+    """The forms of an induced link with variables introduced (extensional, then
+    intensional) that are stored beside it. A function of the term alone, kept
+    because the same links are induced again at nearly every step."""
+    forms = s.var_forms.get(term)
+    if forms is None:
+        found = []
+        for ext in (True, False):
+            v = introduce_implication_variables(term, ext)
+            if v is not None and v is not term and not hol_component_invalid(v):
+                found.append(v)
+        forms = _remember(s.var_forms, term, tuple(found))
+    return forms
+
+
+# ------------------------------------------------------------ anticipation
+def anticipate(s: Reasoner, e: Event) -> None:
+    """Assumption of failure (ONA 0.9.2's Decision_Anticipate).
+
+    For every implication in the table of the event's operation (table 0 for a plain
+    event) whose precondition concept has a belief event, the outcome is predicted
+    from that event projected to now in sequence with the operation; if the
+    prediction is expected, one piece of negative evidence is counted against the
+    implication, which the outcome, if it arrives, outweighs by induction. The age of
+    the precondition is not checked: projection makes old ones too weak to count.
+    """
+    cfg = s.config
+    now = s.time
+    opi = op_id(s, e.term) if e.term.is_op else 0
+    targets = s.table_index.get(opi)
+    if not targets:
+        return
+    mem = s.memory
+    op_truth = Truth(1.0, 0.9)
+    threshold: float = cfg.anticipation_threshold
+    # A precondition whose projected truth is this weak cannot lift a prediction
+    # above the threshold (expectation - 1/2 <= c / 2) nor to confidence 0.05, so
+    # only an exactly-zero predicted frequency still counts; this skips the many
+    # implications whose precondition happened long ago without computing them.
+    weak = min(0.05, 1.98 * (threshold - 0.5)) if threshold > 0.5 + 1e-9 else 0.0
+    # precondition term -> (its event, the frequency and confidence of that event
+    # projected to now with the operation, whether that is weak, the bindings making
+    # the precondition that event's term, its stamp's ids, the failures counted for
+    # that event's truth by offset); the same precondition serves many implications.
+    # Dropped when an event or the concept store changes below.
+    sources: dict[Term, _Source | None] = {}
+    groups: dict[object, dict[Concept, None]] | None = None
+    var_sources: list[Term] = []
+    failures = s.failures
+    if s.failures_for != cfg.anticipation_confidence:
+        failures.clear()
+        s.failures_for = cfg.anticipation_confidence
+    merged = s.merged
+    outcomes = s.outcomes
+    stamp_size = cfg.stamp_size
+    boost = cfg.eternal_input_usage_boost
+    showing = shows(s, 1.0)  # printing is rare: test once
+    evictions = mem.evictions
+    post: Concept
+    oc: Concept
+    imp: Implication
+    it: Truth
+    table: Table
+    spike: Event
+    pre_f: float
+    pre_c: float
+    by_offset: dict[int, tuple[Truth, float]]
+    failure: tuple[Truth, float]
+    for post in list(targets):
+        if mem.find(post.term) is not post:
+            targets.pop(post, None)
+            continue
+        tables = post.precondition_beliefs
+        if tables is None or opi >= len(tables):
+            continue
+        table = tables[opi]
+        for imp in list(table.items):
+            source = imp.source
+            if source is None:
+                continue
+            # (a miss is common; compiled, raising and catching KeyError costs more)
+            entry = sources.get(source, _UNKNOWN)
+            if entry is _UNKNOWN:
+                if source.has_var:
+                    var_sources.append(source)
+                    if groups is None:
+                        groups = spike_groups(s)
+                    spike = source_spike(s, source, groups)
+                    # (source_spike has made the precondition's pattern)
+                    bind = None if spike is None else s.patterns[source].match(spike.term)
+                else:  # what source_spike and unify give for a ground precondition
+                    sc = mem.find(source)
+                    spike = sc.belief_spike if sc is not None else None
+                    bind = None if spike is None or spike.term is not source else {}
+                if spike is None:
+                    entry = None
+                else:
+                    by_offset = failures.get(spike.truth)
+                    if by_offset is None:
+                        by_offset = _remember(failures, spike.truth, {})
+                    pre_i = tf.intersection(
+                        tf.projection(spike.truth, spike.occurrence_time, now), op_truth
+                    )
+                    entry = (
+                        spike,
+                        pre_i.f,
+                        pre_i.c,
+                        pre_i.c < weak,
+                        bind,
+                        frozenset(spike.stamp),
+                        by_offset,
+                    )
+                sources[source] = entry
+            if entry is None:
+                continue
+            spike, pre_f, pre_c, is_weak, bind, spike_ids, by_offset = entry
+            # deduction and its expectation written out (most links stop here);
+            # the same operations in the same order as tf.deduction/expectation
+            it = imp.truth
+            pf = it.f * pre_f
+            if is_weak and pf != 0.0:
+                continue
+            if opi:
+                pre_term, op_term = split_precondition(imp.term.args[0])
+                subs = unify(pre_term, spike.term)
+                if subs is None or op_term is None:
+                    continue
+                if unify(apply(op_term, subs), e.term) is None:
+                    continue  # same operation, other arguments
+            pc = it.c * pre_c * pf
+            if pc * (pf - 0.5) + 0.5 <= threshold and not (pc < 0.05 and pf == 0.0):
+                continue
+            # one failure counted against the link: the same for every link of this
+            # precondition truth and offset, at every input
+            rdt = round(imp.dt)  # also the prediction's offset below
+            failure = by_offset.get(rdt)
+            if failure is None:
+                failure = by_offset[rdt] = _failure(s, spike.truth, rdt)
+            table.add_failure(imp, failure[0], failure[1], stamp_size)
+            if bind is None:
+                continue
+            if bind:
+                # the same link meets the same instance at every input: keep the
+                # instantiated outcome (a pure function of the two terms)
+                okey = (imp.term, spike.term)
+                outcome = outcomes.get(okey)
+                if outcome is None:
+                    outcome = _remember(outcomes, okey, apply(imp.term.args[1], bind))
+            else:
+                outcome = imp.term.args[1]
+            if outcome.has_var or not spike_ids.isdisjoint(imp.stamp):
+                continue  # (the stamps overlap)
+            oc = mem.conceptualize(outcome, now)
+            if mem.evictions != evictions:
+                evictions = mem.evictions
+                sources.clear()
+                var_sources.clear()
+                groups = None
+            oc.use(now, False, boost)
+            occ = now + rdt
+            mkey = (spike.stamp, imp.stamp, stamp_size)
+            stamp = merged.get(mkey)
+            if stamp is None:
+                stamp = _remember(merged, mkey, merge(spike.stamp, imp.stamp, stamp_size))
+            # (deduction; ``truth_of`` rather than Truth's keyword-capable constructor:
+            # predictions are made thousands of times per input)
+            pred = Event(outcome, BELIEF, tf.truth_of(pf, pc), stamp, occ, now)
+            if imp.dt > 0.0:
+                old = oc.predicted_belief
+                oc.predicted_belief, _ = revised_or_chosen(old, pred, stamp_size, True)
+                if showing:
+                    _show_prediction(s, old, oc.predicted_belief)
+            elif oc.belief_spike is None or occ > oc.belief_spike.occurrence_time:
+                old = oc.belief_spike
+                oc.belief_spike, _ = revised_or_chosen(old, pred, stamp_size, True)
+                if showing:
+                    _show_prediction(s, old, oc.belief_spike)
+                # only this term's entry changes, and the entries of preconditions
+                # with variables that the outcome instantiates (the others cannot
+                # have found their event in its concept)
+                sources.pop(outcome, None)
+                if var_sources:
+                    kept = []
+                    for v in var_sources:
+                        if (v.op is not None and v.op != outcome.op) or unify(v, outcome) is None:
+                            kept.append(v)
+                        else:
+                            sources.pop(v, None)
+                    var_sources[:] = kept
+
+
+def spike_groups(s: Reasoner) -> dict[object, dict[Concept, None]]:
+    """Concepts of the occurrence-time index without variables, grouped so that a
+    precondition with variables is unified only against terms that can match it: by
+    connector and arity, and by each component at each position (a path of
+    connector, arity and index from the top); key ``None`` holds all of them. Each
+    group is ordered oldest to newest. Built once, then kept in step with the index
+    by :func:`note_event` and :func:`forget_concept`; whether a member has a belief
+    event is checked where it is read, since events come and go more often than
+    concepts."""
+    groups = s.groups
+    if groups is None:
+        groups = s.groups = {None: {}}
+        for c in reversed(s.time_index):  # oldest first: the newest ends last
+            group_add(groups, c, _keys_of(s, c.term))
+    return groups
+
+
+def source_spike(
+    s: Reasoner, source: Term, groups: dict[object, dict[Concept, None]] | None = None
+) -> Event | None:
+    """The belief event of a precondition concept; a concept with variables holds
+    the newest event that instantiates it (ONA activates such concepts too)."""
+    c = s.memory.find(source)
+    best = c.belief_spike if c is not None else None
+    if source.has_var:
+        if groups is None:
+            groups = spike_groups(s)
+        pattern: _Pattern | None = s.patterns.get(source)
+        if pattern is None:
+            pattern = _remember(s.patterns, source, _Pattern(source))
+        # Every instance is in each of the pattern's groups, all ordered alike (by
+        # their concepts' last event), so each group yields the same first match and
+        # an empty one means none. The smallest is the cheapest to scan; group sizes
+        # drift slowly, so it is chosen afresh only now and then.
+        pattern.uses += 1
+        key = pattern.key
+        if key is _UNKNOWN or not pattern.uses & 31:
+            group: dict[Concept, None] | None = None
+            for k in pattern.keys:
+                g = groups.get(k)
+                if not g:
+                    return best  # no concept has this component here: none matches
+                if group is None or len(g) < len(group):
+                    group = g
+                    key = k
+            pattern.key = key
+        else:
+            group = groups.get(key)
+            if not group:
+                return best
+        matches = pattern.matches
+        c2: Concept
+        b: Event | None
+        for c2 in reversed(group):  # newest first
+            b = c2.belief_spike
+            if b is None:
+                continue
+            bind = matches.get(c2.term, _UNKNOWN)  # (pattern.match, read inline)
+            if bind is _UNKNOWN:
+                bind = pattern.match(c2.term)
+            if bind is None:
+                continue
+            if best is None or b.occurrence_time > best.occurrence_time:
+                best = b
+            break
+    return best
+
+
+def _show_prediction(s: Reasoner, old: Event | None, new: Event) -> None:
+    """Print a changed prediction as ONA does (a derived event of priority 1); the
+    caller has checked that derivations of that priority are shown."""
+    if old is not None and old.truth == new.truth and old.occurrence_time == new.occurrence_time:
+        return
+    emit(s, "Derived: " + new.line(1.0))
+
+
+def _failure(s: Reasoner, pre_truth: Truth, rdt: int) -> tuple[Truth, float]:
+    """The truth of one failure of a link whose precondition had ``pre_truth``
+    ``rdt`` cycles before the predicted outcome (induction from a {0, anticipation
+    confidence} outcome and the projected precondition), and its evidence weight."""
+    past = tf.projection(pre_truth, 0, rdt)
+    t = tf.eternalize(tf.induction(Truth(0.0, s.config.anticipation_confidence), past))
+    return t, tf.c2w(t.c)
 
 
 class _Pattern:
-    """What ``_source_spike`` keeps about a precondition with variables."""
+    """What ``source_spike`` keeps about a precondition with variables."""
 
     __slots__ = ("source", "keys", "key", "uses", "matches")
 

@@ -6,7 +6,7 @@ term: ``None`` (all of them), its connector and arity, and each of its component
 each position (a path of connector, arity and index from the top). An instance of a
 precondition is in every group of the precondition's ground components, so the
 smallest of those is scanned. Each group is a dict ordered oldest to newest; the
-sensorimotor mixin (``_spike_groups``, ``_note_event``, ``_forget_concept``) keeps them
+sensorimotor functions (``spike_groups``, ``note_event``, ``forget_concept``) keep them
 in step with the index.
 """
 
@@ -21,7 +21,7 @@ if TYPE_CHECKING:
 
 
 def group_keys(t: Term, ground_only: bool = False) -> list[object]:
-    """The keys of every group of ``SensorimotorMixin._spike_groups`` that ``t`` belongs to. With
+    """The keys of every group of ``sensorimotor.spike_groups`` that ``t`` belongs to. With
     ``ground_only``, those of its components without variables: a ground term matching
     ``t`` (a precondition with variables) is in every one of those groups, so the
     smallest of them will do for finding it."""
