@@ -10,3 +10,4 @@ from robocog.nars.event cimport Event, Implication, revised_or_chosen
 from robocog.nars.memory cimport Concept
 from robocog.nars.table cimport Table
 from robocog.nars.unify cimport apply, unify
+from robocog.nars.state cimport Reasoner, emit, shows

@@ -1,6 +1,6 @@
 """Goals and decisions (Algorithm 1 of the NARS robot paper, ONA's Decision.c).
 
-Mixed into :class:`~robocog.nars.nar.NAR`. A goal event looks up the implications whose
+Functions over a :class:`~robocog.nars.state.Reasoner`. A goal event looks up the implications whose
 consequence it is, in its concept's per-operation tables; an implication whose
 precondition has just happened yields a desire for its operation. The most desired
 operation above the decision threshold is executed; otherwise the preconditions become
@@ -16,11 +16,10 @@ from typing import TYPE_CHECKING
 
 from . import truth as tf
 from .event import BELIEF, GOAL, Event, Implication, revised_or_chosen
-from .memory import EventQueue
 from .sensorimotor import add_implication, executable, split_precondition
 from .stamp import fmt, merge
-from .state import emit, shows
-from .terms import SEQUENCE, Term, atom, compound
+from .state import Reasoner, emit, rand, shows
+from .terms import SEQUENCE, Term, atom
 from .truth import Truth, expectation
 from .unify import apply, unify
 
@@ -93,354 +92,361 @@ def _ground(t: Term) -> bool:
     return not t.has_indep_var and not t.has_dep_var and not t.has_query_var
 
 
-class DecisionMixin:
-    """Goal processing for :class:`NAR`."""
+def add_goal(s: Reasoner, g: Event, priority: float, layer: int) -> bool:
+    """Queue ``g`` in goal layer ``layer`` unless an equal goal is queued anywhere."""
+    layer = min(layer, len(s.goal_layers) - 1)
+    for q in s.goal_layers:
+        if q.contains(g):
+            return False
+    return s.goal_layers[layer].push(g, priority)
 
-    def _init_goals(self) -> None:
-        cfg = self.config  # type: ignore[attr-defined]
-        self.goal_layers = [
-            EventQueue(cfg.cycling_goal_events_max) for _ in range(cfg.cycling_goal_events_layers)
-        ]
-        #: concepts that recently received a goal (newest last), for the negative-outcome veto
-        self.recent_goal_concepts: dict[Concept, None] = {}
 
-    def _add_goal(self, g: Event, priority: float, layer: int) -> bool:
-        """Queue ``g`` in goal layer ``layer`` unless an equal goal is queued anywhere."""
-        layer = min(layer, len(self.goal_layers) - 1)
-        for q in self.goal_layers:
-            if q.contains(g):
-                return False
-        return self.goal_layers[layer].push(g, priority)
+# ------------------------------------------------------------------ cycle
+def process_goals(s: Reasoner) -> Decision | None:
+    """Select the strongest goal of each layer, top layer first, until one yields a
+    decision to execute (ONA's Cycle_ProcessAndInferGoalEvents); that decision, or None.
+    The caller executes it (:func:`execute`) and feeds its event back as input."""
+    for layer, q in enumerate(s.goal_layers):
+        popped = q.pop()
+        if popped is None:
+            continue
+        priority, g = popped
+        if shows(s, priority):
+            emit(s, "Selected: " + g.line(priority))
+        d = _goal(s, g, priority, layer)
+        if d is not None:
+            return d
+    return None
 
-    # ------------------------------------------------------------------ cycle
-    def _process_goals(self) -> None:
-        for layer, q in enumerate(self.goal_layers):
-            popped = q.pop()
-            if popped is None:
-                continue
-            priority, g = popped
-            if shows(self, priority):  # type: ignore[attr-defined]
-                emit(self, "Selected: " + g.line(priority))  # type: ignore[attr-defined]
-            d = self._goal(g, priority, layer)
-            if d is not None:
-                self._execute(d)
-                return
 
-    def _goal(self, g: Event, priority: float, layer: int) -> Decision | None:
-        cfg = self.config  # type: ignore[attr-defined]
-        now = self.time  # type: ignore[attr-defined]
-        gp = g  # ONA uses the selected goal as it is (its deductions happen "now")
-        if g.term.op == SEQUENCE:
-            self._decompose_sequence(g.projected(now), priority, layer)
-            return None
-        if g.term.is_op and executable(g.term):
-            if expectation(gp.truth) >= cfg.decision_threshold and _ground(g.term):
-                return Decision(expectation(gp.truth), g.term)
-            return None
-        mem = self.memory  # type: ignore[attr-defined]
-        c = mem.conceptualize(g.term, now)
-        if c.goal_spike is None or gp.occurrence_time > c.goal_spike.occurrence_time:
-            c.goal_spike = gp
-        recent = self.recent_goal_concepts
-        recent.pop(c, None)
-        recent[c] = None
-        while len(recent) > 64:
-            del recent[next(iter(recent))]
-        best = self._suggest(gp, c)
-        if best is not None and best.desire >= cfg.decision_threshold:
-            return best
-        self._subgoals(gp, c, priority, layer)
+def _goal(s: Reasoner, g: Event, priority: float, layer: int) -> Decision | None:
+    cfg = s.config
+    now = s.time
+    gp = g  # ONA uses the selected goal as it is (its deductions happen "now")
+    if g.term.op == SEQUENCE:
+        _decompose_sequence(s, g.projected(now), priority, layer)
         return None
-
-    def _decompose_sequence(self, g: Event, priority: float, layer: int) -> None:
-        """Goal ``(a &/ b)``: want the first component not yet fulfilled."""
-        cfg = self.config  # type: ignore[attr-defined]
-        now = self.time  # type: ignore[attr-defined]
-        comps: list[Term] = []
-        t = g.term
-        while t.op == SEQUENCE:
-            comps.insert(0, t.args[1])
-            t = t.args[0]
-        comps.insert(0, t)
-        truth = g.truth
-        stamp = g.stamp
-        last_occ = -1
-        for i, comp in enumerate(comps):
-            c = self.memory.find(comp)  # type: ignore[attr-defined]
-            spike = c.belief_spike if c is not None else None
-            if spike is not None and spike.occurrence_time >= last_occ:
-                pt = tf.projection(spike.truth, spike.occurrence_time, now)
-                if expectation(pt) >= cfg.condition_threshold:
-                    if i == len(comps) - 1:
-                        return  # all fulfilled
-                    truth = tf.goal_deduction(truth, pt)
-                    stamp = merge(stamp, spike.stamp, cfg.stamp_size)
-                    last_occ = spike.occurrence_time
-                    continue
-            if i == 0:
-                truth = tf.structural_deduction(truth)
-            sub = Event(comp, GOAL, truth, stamp, now, now)
-            self._derive_goal(sub, priority * expectation(truth), layer)
-            return
-
-    def _preconditions(self, pre: Term) -> list[Event]:
-        """Recent belief events that fulfil precondition ``pre`` (unifying variables)."""
-        mem = self.memory  # type: ignore[attr-defined]
-        if _ground(pre):
-            c = mem.find(pre)
-            if c is not None and c.belief_spike is not None:
-                return [c.belief_spike]
-            if not _has_measurement(pre):
-                return []
-            # numeric similarity: B_0.8 stands in for B_0.9, weakened by their distance
-            out_n: list[Event] = []
-            dist = self.config.similarity_distance  # type: ignore[attr-defined]
-            for c in self.time_index:  # type: ignore[attr-defined]
-                b = c.belief_spike
-                if b is None:
-                    continue
-                sim = _numeric_similarity(pre, c.term, dist)
-                if sim is not None and sim > 0.0:
-                    t = tf.analogy(b.truth, Truth(1.0, sim))
-                    out_n.append(Event(pre, b.type, t, b.stamp, b.occurrence_time, b.creation_time))
-            return out_n
-        out = []
-        for c in self.time_index:  # type: ignore[attr-defined]
-            if c.belief_spike is not None and _ground(c.term) and unify(pre, c.term) is not None:
-                out.append(c.belief_spike)
-        return out
-
-    def _goal_concepts(self, g: Event, c: Concept) -> list[tuple[Concept, dict[Term, Term]]]:
-        """The goal's concept and those whose (general) term the goal instantiates."""
-        out: list[tuple[Concept, dict[Term, Term]]] = [(c, {})]
-        seen = {c}
-        general_goal = g.term.has_var
-        for table in self.table_index.values():  # type: ignore[attr-defined]
-            for post in table:
-                if post in seen:
-                    continue
-                if post.term.has_var:
-                    b = unify(post.term, g.term)
-                    if b is not None:
-                        seen.add(post)
-                        out.append((post, b))
-                elif general_goal and unify(g.term, post.term) is not None:
-                    seen.add(post)  # a goal with variables is served by its instances
-                    out.append((post, {}))
-        return out
-
-    def _suggest(self, g: Event, c: Concept) -> Decision | None:
-        """Decision_Suggest: babbling or the best learned candidate."""
-        cfg = self.config  # type: ignore[attr-defined]
-        nops = len(self.op_names)  # type: ignore[attr-defined]
-        babble: Decision | None = None
-        r = self.rand()  # type: ignore[attr-defined]
-        if r < int(cfg.motor_babbling_chance * 32767) and nops:
-            k = 1 + self.rand() % min(cfg.babbling_ops, nops)  # type: ignore[attr-defined]
-            babble = Decision(1.0, atom(self.op_names[k - 1]), babbled=True)  # type: ignore[attr-defined]
-        best = self._best_candidate(g, c)
-        if babble is not None and (
-            best is None or best.desire <= cfg.motor_babbling_suppression_threshold
-        ):
-            return babble
+    if g.term.is_op and executable(g.term):
+        if expectation(gp.truth) >= cfg.decision_threshold and _ground(g.term):
+            return Decision(expectation(gp.truth), g.term)
+        return None
+    mem = s.memory
+    c = mem.conceptualize(g.term, now)
+    if c.goal_spike is None or gp.occurrence_time > c.goal_spike.occurrence_time:
+        c.goal_spike = gp
+    recent = s.recent_goal_concepts
+    recent.pop(c, None)
+    recent[c] = None
+    while len(recent) > 64:
+        del recent[next(iter(recent))]
+    best = _suggest(s, gp, c)
+    if best is not None and best.desire >= cfg.decision_threshold:
         return best
+    _subgoals(s, gp, c, priority, layer)
+    return None
 
-    def _best_candidate(self, g: Event, c: Concept) -> Decision | None:
-        """Decision_BestCandidate: the most desired operation over the implications into
-        the goal whose precondition has a belief event; printed when above threshold."""
-        cfg = self.config  # type: ignore[attr-defined]
-        now = self.time  # type: ignore[attr-defined]
-        nops = len(self.op_names)  # type: ignore[attr-defined]
-        best: Decision | None = None
-        best_cx = 10**9
-        vetoes: dict[Term, bool] = {}
-        for post, bind in self._goal_concepts(g, c):
-            tables = post.precondition_beliefs
-            if tables is None:
+
+def _decompose_sequence(s: Reasoner, g: Event, priority: float, layer: int) -> None:
+    """Goal ``(a &/ b)``: want the first component not yet fulfilled."""
+    cfg = s.config
+    now = s.time
+    comps: list[Term] = []
+    t = g.term
+    while t.op == SEQUENCE:
+        comps.insert(0, t.args[1])
+        t = t.args[0]
+    comps.insert(0, t)
+    truth = g.truth
+    stamp = g.stamp
+    last_occ = -1
+    for i, comp in enumerate(comps):
+        c = s.memory.find(comp)
+        spike = c.belief_spike if c is not None else None
+        if spike is not None and spike.occurrence_time >= last_occ:
+            pt = tf.projection(spike.truth, spike.occurrence_time, now)
+            if expectation(pt) >= cfg.condition_threshold:
+                if i == len(comps) - 1:
+                    return  # all fulfilled
+                truth = tf.goal_deduction(truth, pt)
+                stamp = merge(stamp, spike.stamp, cfg.stamp_size)
+                last_occ = spike.occurrence_time
                 continue
-            for opi in range(1, min(len(tables), nops + 1)):
-                for imp in list(tables[opi].items):
-                    subj = apply(imp.term.args[0], bind) if bind else imp.term.args[0]
-                    pre, op = split_precondition(subj)
-                    if op is None:
+        if i == 0:
+            truth = tf.structural_deduction(truth)
+        sub = Event(comp, GOAL, truth, stamp, now, now)
+        _derive_goal(s, sub, priority * expectation(truth), layer)
+        return
+
+
+def _preconditions(s: Reasoner, pre: Term) -> list[Event]:
+    """Recent belief events that fulfil precondition ``pre`` (unifying variables)."""
+    mem = s.memory
+    if _ground(pre):
+        c = mem.find(pre)
+        if c is not None and c.belief_spike is not None:
+            return [c.belief_spike]
+        if not _has_measurement(pre):
+            return []
+        # numeric similarity: B_0.8 stands in for B_0.9, weakened by their distance
+        out_n: list[Event] = []
+        dist = s.config.similarity_distance
+        for c in s.time_index:
+            b = c.belief_spike
+            if b is None:
+                continue
+            sim = _numeric_similarity(pre, c.term, dist)
+            if sim is not None and sim > 0.0:
+                t = tf.analogy(b.truth, Truth(1.0, sim))
+                out_n.append(Event(pre, b.type, t, b.stamp, b.occurrence_time, b.creation_time))
+        return out_n
+    out = []
+    for c in s.time_index:
+        if c.belief_spike is not None and _ground(c.term) and unify(pre, c.term) is not None:
+            out.append(c.belief_spike)
+    return out
+
+
+def _goal_concepts(s: Reasoner, g: Event, c: Concept) -> list[tuple[Concept, dict[Term, Term]]]:
+    """The goal's concept and those whose (general) term the goal instantiates."""
+    out: list[tuple[Concept, dict[Term, Term]]] = [(c, {})]
+    seen = {c}
+    general_goal = g.term.has_var
+    for table in s.table_index.values():
+        for post in table:
+            if post in seen:
+                continue
+            if post.term.has_var:
+                b = unify(post.term, g.term)
+                if b is not None:
+                    seen.add(post)
+                    out.append((post, b))
+            elif general_goal and unify(g.term, post.term) is not None:
+                seen.add(post)  # a goal with variables is served by its instances
+                out.append((post, {}))
+    return out
+
+
+def _suggest(s: Reasoner, g: Event, c: Concept) -> Decision | None:
+    """Decision_Suggest: babbling or the best learned candidate."""
+    cfg = s.config
+    nops = len(s.op_names)
+    babble: Decision | None = None
+    r = rand(s)
+    if r < int(cfg.motor_babbling_chance * 32767) and nops:
+        k = 1 + rand(s) % min(cfg.babbling_ops, nops)
+        babble = Decision(1.0, atom(s.op_names[k - 1]), babbled=True)
+    best = _best_candidate(s, g, c)
+    if babble is not None and (
+        best is None or best.desire <= cfg.motor_babbling_suppression_threshold
+    ):
+        return babble
+    return best
+
+
+def _best_candidate(s: Reasoner, g: Event, c: Concept) -> Decision | None:
+    """Decision_BestCandidate: the most desired operation over the implications into
+    the goal whose precondition has a belief event; printed when above threshold."""
+    cfg = s.config
+    now = s.time
+    nops = len(s.op_names)
+    best: Decision | None = None
+    best_cx = 10**9
+    vetoes: dict[Term, bool] = {}
+    for post, bind in _goal_concepts(s, g, c):
+        tables = post.precondition_beliefs
+        if tables is None:
+            continue
+        for opi in range(1, min(len(tables), nops + 1)):
+            for imp in list(tables[opi].items):
+                subj = apply(imp.term.args[0], bind) if bind else imp.term.args[0]
+                pre, op = split_precondition(subj)
+                if op is None:
+                    continue
+                gd = tf.goal_deduction(g.truth, imp.truth)
+                for spike in _preconditions(s, pre):
+                    b2 = unify(pre, spike.term) or {}
+                    op_g = apply(op, b2)
+                    if not _ground(op_g) or not _self_operation(op_g):
                         continue
-                    gd = tf.goal_deduction(g.truth, imp.truth)
-                    for spike in self._preconditions(pre):
-                        b2 = unify(pre, spike.term) or {}
-                        op_g = apply(op, b2)
-                        if not _ground(op_g) or not _self_operation(op_g):
+                    base = apply(imp.term, bind) if bind else imp.term
+                    spec = apply(base, b2) if b2 else base
+                    missing = None
+                    if imp.term.has_var:
+                        if not _ground(spec):
                             continue
-                        base = apply(imp.term, bind) if bind else imp.term
-                        spec = apply(base, b2) if b2 else base
-                        missing = None
-                        if imp.term.has_var:
-                            if not _ground(spec):
-                                continue
-                            own = self._specific(spec, opi)
-                            if own is not None and own.truth.c > 0.05 and own.truth.f < 0.5:
-                                continue  # this instance is known not to work
-                            if own is None:
-                                missing = spec
-                        pt = tf.projection(spike.truth, spike.occurrence_time, now)
-                        desire = expectation(tf.goal_deduction(gd, pt))
-                        ok = vetoes.get(op_g)
-                        if ok is None:  # the same for every candidate of this operation
-                            ok = vetoes[op_g] = self._outcomes_acceptable(op_g, opi)
-                        if not ok:
-                            desire = 0.0
-                        cx = spec.complexity
-                        if (
-                            best is None
-                            or desire > best.desire
-                            or (desire == best.desire and cx < best_cx)
-                        ):
-                            best = Decision(desire, op_g, imp, spike, missing_specific=missing)
-                            best_cx = cx
-        if best is None or best.desire < cfg.decision_threshold:
-            return None
-        imp, pre = best.implication, best.precondition
-        if imp is not None and pre is not None:
-            emit(
-                self,  # type: ignore[arg-type]
-                f"decision expectation={best.desire:f} implication: {imp.term}. "
-                f"Stamp={fmt(imp.stamp)} Truth: frequency={imp.truth.f:f} "
-                f"confidence={imp.truth.c:f} dt={imp.dt:f} precondition: {pre.term}. :|: "
-                f"Stamp={fmt(pre.stamp)} Truth: frequency={pre.truth.f:f} "
-                f"confidence={pre.truth.c:f} occurrenceTime={pre.occurrence_time}",
-            )
-        return best
-
-    def _specific(self, term: Term, opi: int) -> Implication | None:
-        """The stored implication ``term`` (ground) in its predicate's table ``opi``."""
-        post = self.memory.find(term.args[1])  # type: ignore[attr-defined]
-        if post is None or post.precondition_beliefs is None:
-            return None
-        for imp in post.precondition_beliefs[opi].items:
-            if imp.term is term:
-                return imp
+                        own = _specific(s, spec, opi)
+                        if own is not None and own.truth.c > 0.05 and own.truth.f < 0.5:
+                            continue  # this instance is known not to work
+                        if own is None:
+                            missing = spec
+                    pt = tf.projection(spike.truth, spike.occurrence_time, now)
+                    desire = expectation(tf.goal_deduction(gd, pt))
+                    ok = vetoes.get(op_g)
+                    if ok is None:  # the same for every candidate of this operation
+                        ok = vetoes[op_g] = _outcomes_acceptable(s, op_g, opi)
+                    if not ok:
+                        desire = 0.0
+                    cx = spec.complexity
+                    if (
+                        best is None
+                        or desire > best.desire
+                        or (desire == best.desire and cx < best_cx)
+                    ):
+                        best = Decision(desire, op_g, imp, spike, missing_specific=missing)
+                        best_cx = cx
+    if best is None or best.desire < cfg.decision_threshold:
         return None
-
-    def _outcomes_acceptable(self, op: Term, opi: int) -> bool:
-        """ConsiderNegativeOutcomes: over every recent goal (wanted or to avoid) and each
-        implication of the same operation whose precondition just happened, the desires
-        for the operation are revised (or the stronger chosen); an expectation below 0.5
-        vetoes the operation."""
-        cfg = self.config  # type: ignore[attr-defined]
-        now = self.time  # type: ignore[attr-defined]
-        mem = self.memory  # type: ignore[attr-defined]
-        acc: Event | None = None
-        for gc in self.recent_goal_concepts:
-            gs = gc.goal_spike
-            if gs is None or now - gs.occurrence_time >= cfg.neg_goal_age_max:
-                continue
-            tables = gc.precondition_beliefs
-            if tables is None or opi >= len(tables):
-                continue
-            for imp in tables[opi].items:
-                prec = mem.find(imp.source) if imp.source is not None else None
-                spike = prec.belief_spike if prec is not None else None
-                if spike is None or now - spike.occurrence_time >= cfg.event_belief_distance:
-                    continue
-                pre, op2 = split_precondition(imp.term.args[0])
-                if op2 is not op:
-                    continue
-                ctx = tf.goal_deduction(gs.truth, imp.truth)
-                local = tf.goal_deduction(
-                    ctx, tf.projection(spike.truth, spike.occurrence_time, now)
-                )
-                stamp = merge(
-                    spike.stamp, merge(gs.stamp, imp.stamp, cfg.stamp_size), cfg.stamp_size
-                )
-                ev = Event(pre, GOAL, local, stamp, now, now)
-                acc, _ = revised_or_chosen(acc, ev, cfg.stamp_size)
-        return acc is None or expectation(acc.truth) >= 0.5
-
-    def _subgoals(self, g: Event, c: Concept, priority: float, layer: int) -> None:
-        """Pass the goal on: each concept it matches revises its goal event, and every
-        implication into it derives its precondition (without the operation) as a
-        subgoal one layer down, goal ⊗ implication, priority ``priority`` × E."""
-        cfg = self.config  # type: ignore[attr-defined]
-        now = self.time  # type: ignore[attr-defined]
-        for post, bind in self._goal_concepts(g, c):
-            if post is not c and not bind and not post.term.has_var:
-                continue  # an instance of a general goal: ONA passes the goal upward only
-            ge = g
-            if bind:
-                ge = Event(apply(g.term, bind), GOAL, g.truth, g.stamp, g.occurrence_time, now)
-            gs, _ = revised_or_chosen(post.goal_spike, ge, cfg.stamp_size)
-            post.goal_spike = gs
-            tables = post.precondition_beliefs
-            if tables is None:
-                continue
-            for opi in range(len(tables)):
-                for imp in list(tables[opi].items):
-                    b2 = unify(imp.term.args[1], gs.term)
-                    if b2 is None:
-                        continue
-                    subj = apply(imp.term.args[0], b2) if b2 else imp.term.args[0]
-                    pre, _op = split_precondition(subj)
-                    t = tf.goal_deduction(gs.truth, imp.truth)
-                    sub = Event(pre, GOAL, t, merge(gs.stamp, imp.stamp, cfg.stamp_size), now, now)
-                    self._derive_goal(sub, priority * expectation(t), layer)
-
-    def _derive_goal(self, g: Event, priority: float, layer: int) -> None:
-        """Memory_AddEvent for a derived goal: complexity penalty, confidence floor, no
-        duplicates; printed when it is queued."""
-        priority *= 1.0 / math.log2(1.0 + g.term.complexity)
-        if g.truth.c < self.config.min_confidence or priority <= 0.0:  # type: ignore[attr-defined]
-            return
-        c = self.memory.find(g.term)  # type: ignore[attr-defined]
-        if c is not None and c.goal_spike is not None and c.goal_spike.same(g):
-            return
-        if self._add_goal(g, priority, layer + 1) and shows(self, priority):  # type: ignore[attr-defined]
-            emit(self, "Derived: " + g.line(priority))  # type: ignore[attr-defined]
-
-    # -------------------------------------------------------------- execution
-    def _execute(self, d: Decision) -> None:
-        for q in self.goal_layers:
-            q.clear()
-        op = d.op
-        if op.op is None:
-            name, arg, shown = op.name, None, ""
-        else:
-            name, arg = op.args[1].name, op.args[0]
-            shown = str(arg)
-        emit(self, f"{name} executed with args {shown}")  # type: ignore[attr-defined]
-        fn = self.operations.get(name)  # type: ignore[attr-defined]
-        if fn is not None:
-            fn(arg)
-        for cb in self.execution_cbs:  # type: ignore[attr-defined]
-            cb(name, arg)
-        e = Event(
-            op,
-            BELIEF,
-            Truth(1.0, 0.9),
-            (self.stamp_base,),  # type: ignore[attr-defined]
-            self.time,  # type: ignore[attr-defined]
-            self.time,  # type: ignore[attr-defined]
-            is_input=True,
+    imp, pre = best.implication, best.precondition
+    if imp is not None and pre is not None:
+        emit(
+            s,
+            f"decision expectation={best.desire:f} implication: {imp.term}. "
+            f"Stamp={fmt(imp.stamp)} Truth: frequency={imp.truth.f:f} "
+            f"confidence={imp.truth.c:f} dt={imp.dt:f} precondition: {pre.term}. :|: "
+            f"Stamp={fmt(pre.stamp)} Truth: frequency={pre.truth.f:f} "
+            f"confidence={pre.truth.c:f} occurrenceTime={pre.occurrence_time}",
         )
-        self.stamp_base += 1  # type: ignore[attr-defined]
-        self._add_event(e, 1.0, is_input=True)  # type: ignore[attr-defined]
-        self.cycles(1)  # type: ignore[attr-defined]
-        if d.missing_specific is not None and d.precondition is not None:
-            # assume failure of the untried specialization until its outcome shows up
-            cfg = self.config  # type: ignore[attr-defined]
-            general = d.implication
-            past = tf.projection(
-                d.precondition.truth, 0, round(general.dt) if general is not None else 0
-            )
-            neg = tf.eternalize(tf.induction(Truth(0.0, cfg.anticipation_confidence), past))
-            add_implication(
-                self,  # type: ignore[arg-type]
-                d.missing_specific,
-                neg,
-                (),
-                general.dt if general else 0.0,
-                False,
-                0.0,
-                general.creation_time if general else None,  # a copy of the general link
-            )
+    return best
 
 
-__all__ = ["Decision", "DecisionMixin", "compound"]
+def _specific(s: Reasoner, term: Term, opi: int) -> Implication | None:
+    """The stored implication ``term`` (ground) in its predicate's table ``opi``."""
+    post = s.memory.find(term.args[1])
+    if post is None or post.precondition_beliefs is None:
+        return None
+    for imp in post.precondition_beliefs[opi].items:
+        if imp.term is term:
+            return imp
+    return None
+
+
+def _outcomes_acceptable(s: Reasoner, op: Term, opi: int) -> bool:
+    """ConsiderNegativeOutcomes: over every recent goal (wanted or to avoid) and each
+    implication of the same operation whose precondition just happened, the desires
+    for the operation are revised (or the stronger chosen); an expectation below 0.5
+    vetoes the operation."""
+    cfg = s.config
+    now = s.time
+    mem = s.memory
+    acc: Event | None = None
+    for gc in s.recent_goal_concepts:
+        gs = gc.goal_spike
+        if gs is None or now - gs.occurrence_time >= cfg.neg_goal_age_max:
+            continue
+        tables = gc.precondition_beliefs
+        if tables is None or opi >= len(tables):
+            continue
+        for imp in tables[opi].items:
+            prec = mem.find(imp.source) if imp.source is not None else None
+            spike = prec.belief_spike if prec is not None else None
+            if spike is None or now - spike.occurrence_time >= cfg.event_belief_distance:
+                continue
+            pre, op2 = split_precondition(imp.term.args[0])
+            if op2 is not op:
+                continue
+            ctx = tf.goal_deduction(gs.truth, imp.truth)
+            local = tf.goal_deduction(ctx, tf.projection(spike.truth, spike.occurrence_time, now))
+            stamp = merge(spike.stamp, merge(gs.stamp, imp.stamp, cfg.stamp_size), cfg.stamp_size)
+            ev = Event(pre, GOAL, local, stamp, now, now)
+            acc, _ = revised_or_chosen(acc, ev, cfg.stamp_size)
+    return acc is None or expectation(acc.truth) >= 0.5
+
+
+def _subgoals(s: Reasoner, g: Event, c: Concept, priority: float, layer: int) -> None:
+    """Pass the goal on: each concept it matches revises its goal event, and every
+    implication into it derives its precondition (without the operation) as a
+    subgoal one layer down, goal ⊗ implication, priority ``priority`` × E."""
+    cfg = s.config
+    now = s.time
+    for post, bind in _goal_concepts(s, g, c):
+        if post is not c and not bind and not post.term.has_var:
+            continue  # an instance of a general goal: ONA passes the goal upward only
+        ge = g
+        if bind:
+            ge = Event(apply(g.term, bind), GOAL, g.truth, g.stamp, g.occurrence_time, now)
+        gs, _ = revised_or_chosen(post.goal_spike, ge, cfg.stamp_size)
+        post.goal_spike = gs
+        tables = post.precondition_beliefs
+        if tables is None:
+            continue
+        for opi in range(len(tables)):
+            for imp in list(tables[opi].items):
+                b2 = unify(imp.term.args[1], gs.term)
+                if b2 is None:
+                    continue
+                subj = apply(imp.term.args[0], b2) if b2 else imp.term.args[0]
+                pre, _op = split_precondition(subj)
+                t = tf.goal_deduction(gs.truth, imp.truth)
+                sub = Event(pre, GOAL, t, merge(gs.stamp, imp.stamp, cfg.stamp_size), now, now)
+                _derive_goal(s, sub, priority * expectation(t), layer)
+
+
+def _derive_goal(s: Reasoner, g: Event, priority: float, layer: int) -> None:
+    """Memory_AddEvent for a derived goal: complexity penalty, confidence floor, no
+    duplicates; printed when it is queued."""
+    priority *= 1.0 / math.log2(1.0 + g.term.complexity)
+    if g.truth.c < s.config.min_confidence or priority <= 0.0:
+        return
+    c = s.memory.find(g.term)
+    if c is not None and c.goal_spike is not None and c.goal_spike.same(g):
+        return
+    if add_goal(s, g, priority, layer + 1) and shows(s, priority):
+        emit(s, "Derived: " + g.line(priority))
+
+
+# -------------------------------------------------------------- execution
+def execute(s: Reasoner, d: Decision) -> Event:
+    """Decision_Execute: forget the cycling goals (no residue actions), run the
+    operation and tell who listens; the event of the execution, which the caller feeds
+    back as input, is returned (it takes the next stamp id)."""
+    for q in s.goal_layers:
+        q.clear()
+    op = d.op
+    if op.op is None:
+        name, arg, shown = op.name, None, ""
+    else:
+        name, arg = op.args[1].name, op.args[0]
+        shown = str(arg)
+    emit(s, f"{name} executed with args {shown}")
+    fn = s.operations.get(name)
+    if fn is not None:
+        fn(arg)
+    for cb in s.execution_cbs:
+        cb(name, arg)
+    e = Event(
+        op,
+        BELIEF,
+        Truth(1.0, 0.9),
+        (s.stamp_base,),
+        s.time,
+        s.time,
+        is_input=True,
+    )
+    s.stamp_base += 1
+    return e
+
+
+def assume_untried_failure(s: Reasoner, d: Decision) -> None:
+    """After executing through a general implication whose specialization has no
+    evidence of its own yet, assume that specialization fails until its outcome shows
+    up (one piece of negative evidence, as anticipation counts)."""
+    if d.missing_specific is not None and d.precondition is not None:
+        cfg = s.config
+        general = d.implication
+        past = tf.projection(
+            d.precondition.truth, 0, round(general.dt) if general is not None else 0
+        )
+        neg = tf.eternalize(tf.induction(Truth(0.0, cfg.anticipation_confidence), past))
+        add_implication(
+            s,
+            d.missing_specific,
+            neg,
+            (),
+            general.dt if general else 0.0,
+            False,
+            0.0,
+            general.creation_time if general else None,  # a copy of the general link
+        )
+
+
+__all__ = ["Decision", "add_goal", "assume_untried_failure", "execute", "process_goals"]

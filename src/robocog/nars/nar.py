@@ -14,10 +14,9 @@ import os
 from collections.abc import Callable
 from functools import partial
 
-from . import commands, memfile, sensorimotor
+from . import commands, decision, memfile, sensorimotor
 from . import truth as tf
 from .config import MAX_TIME, Config
-from .decision import DecisionMixin
 from .event import BELIEF, ETERNAL, GOAL, Event, Implication, revised_or_chosen
 from .inference import Derivation, apply_double, apply_single, special
 from .memory import Concept
@@ -45,7 +44,7 @@ def _rule_table(level: int) -> RuleTable:
     return t
 
 
-class NAR(Reasoner, DecisionMixin):
+class NAR(Reasoner):
     """A Non-Axiomatic Reasoner with ONA's behaviour and a bounded memory."""
 
     def __init__(self, seed: int = 666, **config_overrides: object) -> None:
@@ -248,7 +247,7 @@ class NAR(Reasoner, DecisionMixin):
         if e.type == GOAL:
             if is_input:
                 emit(self, "Input: " + e.line(priority))
-            self._add_goal(e, priority, 0)
+            decision.add_goal(self, e, priority, 0)
             return
         self._store(e, priority, is_input, revised, True)
 
@@ -389,7 +388,12 @@ class NAR(Reasoner, DecisionMixin):
                     sc.selected_time = self.time
                 sensorimotor.process_belief_event(self, e, priority)
         sensorimotor.forward_links(self)
-        self._process_goals()
+        d = decision.process_goals(self)
+        if d is not None:
+            e = decision.execute(self, d)
+            self._add_event(e, 1.0, is_input=True)
+            self.cycles(1)
+            decision.assume_untried_failure(self, d)
         if popped is not None:
             self._semantic_inference(popped[1], popped[0])
         self.memory.belief_events.decay(self.config.event_durability)
