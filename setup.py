@@ -36,10 +36,13 @@ ENGINE_MODULES = (
     "state",
     "unify",
     "rules",
-    "inference",
     "spikegroups",
     "sensorimotor",
     "decision",
+    "memorize",
+    "inference",
+    "questions",
+    "cycle",
     "nar",
 )
 SOURCE_DIR = os.path.join("src", "robocog", "nars")

@@ -7,9 +7,11 @@ from robocog.nars.terms cimport Term, compound
 from robocog.nars.truth cimport Truth
 from robocog.nars cimport truth as tf
 from robocog.nars.unify cimport apply, unify
+from robocog.nars.state cimport Reasoner
+from robocog.nars.memorize cimport add_derived
 
 cdef class Derivation:
-    cdef public object nar
+    cdef public Reasoner state
     cdef public long occurrence
     cdef public tuple stamp
     cdef public double parent_priority

@@ -7,9 +7,8 @@ unification, which is how ``<<$1 --> penguin> ==> ...>`` meets ``<pingu --> peng
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 from . import truth as tf
+from .memorize import add_derived
 from .rules import (
     RuleTable,
     hol_component_invalid,
@@ -17,28 +16,37 @@ from .rules import (
     introduce_implication_variables,
 )
 from .stamp import Stamp
+from .state import Reasoner
 from .terms import CONJUNCTION, EQUIVALENCE, IMPLICATION, TEMPORAL_IMPLICATION, Term, compound
 from .truth import Truth
 from .unify import apply, unify
 
-if TYPE_CHECKING:
-    from .nar import NAR
+_RULE_TABLES: dict[int, RuleTable] = {}
+
+
+def rule_table(level: int) -> RuleTable:
+    """The rule table of NAL level ``level`` (built once, then shared)."""
+    t = _RULE_TABLES.get(level)
+    if t is None:
+        t = _RULE_TABLES[level] = RuleTable(level)
+    return t
 
 
 class Derivation:
-    """Where the conclusions of one premise pair go, with their shared context."""
+    """Where the conclusions of one premise pair go (the reasoner whose memory takes
+    them, :func:`~robocog.nars.memorize.add_derived`), with their shared context."""
 
-    __slots__ = ("nar", "occurrence", "stamp", "parent_priority", "concept_priority")
+    __slots__ = ("state", "occurrence", "stamp", "parent_priority", "concept_priority")
 
     def __init__(
         self,
-        nar: NAR,
+        state: Reasoner,
         occurrence: int,
         stamp: Stamp,
         parent_priority: float,
         concept_priority: float,
     ) -> None:
-        self.nar = nar
+        self.state = state
         self.occurrence = occurrence
         self.stamp = stamp
         self.parent_priority = parent_priority
@@ -50,7 +58,7 @@ class Derivation:
         # once for a conclusion and its variable-introduced forms alike
         priority = self.concept_priority * self.parent_priority * (t.c * (t.f - 0.5) + 0.5)
         if not var_intro:  # the common case
-            self.nar._derived(term, t, self.stamp, self.occurrence, priority)
+            add_derived(self.state, term, t, self.stamp, self.occurrence, priority)
             return
         op = term.op
         if op in (IMPLICATION, EQUIVALENCE, TEMPORAL_IMPLICATION):
@@ -59,15 +67,15 @@ class Derivation:
                 if v is not None and v is not term and not hol_component_invalid(v):
                     if v.op in (IMPLICATION, EQUIVALENCE) and not v.has_indep_var:
                         continue
-                    self.nar._derived(v, t, self.stamp, self.occurrence, priority)
+                    add_derived(self.state, v, t, self.stamp, self.occurrence, priority)
             return
         if op == CONJUNCTION:
             for ext in (True, False):
                 v = introduce_conjunction_variables(term, ext)
                 if v is not None and v is not term and not hol_component_invalid(v):
-                    self.nar._derived(v, t, self.stamp, self.occurrence, priority)
+                    add_derived(self.state, v, t, self.stamp, self.occurrence, priority)
             return
-        self.nar._derived(term, t, self.stamp, self.occurrence, priority)
+        add_derived(self.state, term, t, self.stamp, self.occurrence, priority)
 
 
 def apply_single(table: RuleTable, term: Term, t: Truth, d: Derivation) -> None:

@@ -1,12 +1,8 @@
-# For the compiled engine: the extension types and C functions that nar.py names,
-# so that its annotated variables are read as structs and its calls made in C.
+# For the compiled engine: the extension types and C functions that nar.py names.
 # nar.py stays the only source of behaviour; see setup.py.
 
 from robocog.nars.terms cimport Term
-from robocog.nars.truth cimport Truth, expectation
 from robocog.nars cimport truth as tf
-from robocog.nars.stamp cimport merge, overlap
-from robocog.nars.event cimport Event, Implication, revised_or_chosen
+from robocog.nars.event cimport Event
 from robocog.nars.memory cimport Concept
-from robocog.nars.table cimport Table
-from robocog.nars.unify cimport unify
+from robocog.nars.state cimport Reasoner, emit

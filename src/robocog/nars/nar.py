@@ -1,47 +1,32 @@
-"""The reasoner: input, the inference cycle, question answering and persistence.
+"""The reasoner's public face: input, cycles, questions, operations and persistence.
 
-``NAR`` is the public face of the package. It keeps ONA's order of work per cycle
-(select the strongest belief event, infer with the concepts sharing a name with it,
-forget a little) and ONA's output lines, so a transcript can be compared with ONA's.
+``NAR`` is a :class:`~robocog.nars.state.Reasoner` (all of its state, declared there)
+with the methods a caller uses, as ONA's ``NAR.c`` is over its memory: a line of input
+is read here and handed to the functions that do the work (``memorize`` stores an
+event, ``cycle`` runs cycles in ONA's order of work, ``questions`` answers, ``commands``
+runs a ``*`` line, ``memfile`` saves and loads). Its output lines are ONA's, so a
+transcript can be compared with ONA's.
 """
 
 from __future__ import annotations
 
-import heapq
-import itertools
-import math
 import os
 from collections.abc import Callable
 from functools import partial
 
-from . import commands, decision, memfile, sensorimotor
+from . import commands, cycle, memfile, memorize, questions, sensorimotor
 from . import truth as tf
 from .config import MAX_TIME, Config
-from .event import BELIEF, ETERNAL, GOAL, Event, Implication, revised_or_chosen
-from .inference import Derivation, apply_double, apply_single, special
+from .event import ETERNAL, GOAL, Event
 from .memory import Concept
 from .narsese import MAX_LINE, NarseseError, Sentence, parse_sentence
-from .rules import RuleTable, rejected
-from .stamp import fmt, has_duplicate, merge, overlap
-from .state import DEFAULT_OPERATIONS, Reasoner, clear, clear_caches, emit, shows
+from .state import DEFAULT_OPERATIONS, Reasoner, clear, clear_caches, emit
 from .state import rand as _rand
-from .terms import F_COMPOSED, TEMPORAL_IMPLICATION, Term, atom
-from .truth import Truth, expectation
-from .unify import unify
+from .terms import Term, atom
 
-PENDING_QUESTIONS = 32
 #: the most cycles one input line may ask for (a bare number): ONA's examples ask for
 #: a thousand at most; a hundred million is hours of work, so more is a typo
 MAX_CYCLES_PER_LINE = 100_000_000
-
-_RULE_TABLES: dict[int, RuleTable] = {}
-
-
-def _rule_table(level: int) -> RuleTable:
-    t = _RULE_TABLES.get(level)
-    if t is None:
-        t = _RULE_TABLES[level] = RuleTable(level)
-    return t
 
 
 class NAR(Reasoner):
@@ -136,7 +121,7 @@ class NAR(Reasoner):
         and leaves the reasoner as it was."""
         line = text.strip()
         if not line:
-            self.cycles(1)
+            cycle.cycles(self, 1)
             return
         if line.startswith("//"):
             emit(self, "Comment: " + line[2:])
@@ -150,7 +135,7 @@ class NAR(Reasoner):
             if n > MAX_CYCLES_PER_LINE:
                 raise NarseseError(1, 1, f"at most {MAX_CYCLES_PER_LINE} cycles per line")
             emit(self, f"performing {n} inference steps:")
-            self.cycles(n)
+            cycle.cycles(self, n)
             emit(self, f"done with {n} additional inference steps.")
             return
         if line.startswith("*"):
@@ -164,7 +149,7 @@ class NAR(Reasoner):
     def add_sentence(self, s: Sentence) -> None:
         """Enter a parsed sentence: beliefs and goals run one cycle, questions are answered."""
         if s.punctuation == "?":
-            self.answer(s.term, s.tense)
+            questions.answer(self, s.term, s.tense)
             return
         if s.tense is None and s.punctuation == GOAL:
             raise NarseseError(1, 1, "eternal goals are not supported; add ':|:'")
@@ -184,8 +169,8 @@ class NAR(Reasoner):
         )
         self.stamp_base += 1
         self.stats["inputs"] += 1
-        self._add_event(e, 1.0, is_input=True)
-        self.cycles(1)
+        memorize.add_event(self, e, 1.0, is_input=True)
+        cycle.cycles(self, 1)
 
     # ---------------------------------------------------------------- commands
     def _command(self, line: str) -> None:
@@ -197,7 +182,7 @@ class NAR(Reasoner):
         b = con.belief
         tv = f" {b.truth}" if b is not None else ""
         return (
-            f'//{con.term}: {{ "priority": {self._priority(con):f}, '
+            f'//{con.term}: {{ "priority": {memorize.concept_priority(self, con):f}, '
             f'"usefulness": {con.usefulness(self.time):f}, "useCount": {con.use_count}, '
             f'"lastUsed": {con.last_used}}}{tv}'
         )
@@ -222,420 +207,24 @@ class NAR(Reasoner):
 
     def _avg_priority(self) -> float:
         n = len(self.memory)
-        return sum(self._priority(c) for c in self.memory) / n if n else 0.0
-
-    # ------------------------------------------------------------- priorities
-    def _priority(self, c: Concept) -> float:
-        """Concept priority with the per-cycle decay applied lazily."""
-        return c.priority_at(self.time, self.config.concept_durability)
-
-    def _raise_priority(self, c: Concept, p: float) -> None:
-        """Lift the (decayed) priority of ``c`` to at least ``p``, as of now."""
-        cp = self._priority(c)
-        c.priority = p if p > cp else cp  # ``max(cp, p)`` without the call
-        c.priority_time = self.time
-
-    # ----------------------------------------------------------------- events
-    def _add_event(
-        self, e: Event, priority: float, is_input: bool = False, revised: bool = False
-    ) -> None:
-        """ONA's Memory_AddEvent for input and revised events: queue the event and store
-        it in its concept. (Derived beliefs take :meth:`_derived`, which makes the
-        decisions that only concern them.)"""
-        if e.truth.c < self.config.min_confidence or priority <= 0.0:
-            return
-        if e.type == GOAL:
-            if is_input:
-                emit(self, "Input: " + e.line(priority))
-            decision.add_goal(self, e, priority, 0)
-            return
-        self._store(e, priority, is_input, revised, True)
-
-    def _store(self, e: Event, priority: float, is_input: bool, revised: bool, index: bool) -> None:
-        """Queue a belief event that passed the filters and store it in its concept."""
-        added = False
-        op = e.term.op
-        if op != TEMPORAL_IMPLICATION and (is_input or (op != "==>" and op != "<=>")):
-            added = self._queue(e, priority)  # only input implications become events
-        if added and not is_input:
-            self.stats["derived"] += 1
-            if shows(self, priority):
-                emit(self, ("Revised: " if revised else "Derived: ") + e.line(priority))
-            for cb in self.derivation_cbs:
-                cb(e)
-        self._process_new_belief(e, priority, is_input, index)
-
-    def _queue(self, e: Event, priority: float) -> bool:
-        q = self.memory.belief_events
-        if e.type == BELIEF:
-            prio = q.prio
-            if len(prio) >= q.capacity and priority < q.lowest():
-                return False  # the full queue would refuse it whatever the checks below say
-            if q.contains(e):
-                return False
-            c = self.memory.find(e.term)
-            if c is not None and c.belief is not None:
-                if c.belief.same(e):
-                    return False
-                if e.occurrence_time == ETERNAL and c.belief.truth.c > e.truth.c:
-                    return False
-            return q.push(e, priority)
-        return False
-
-    def _process_new_belief(
-        self, e: Event, priority: float, is_input: bool, index: bool = True
-    ) -> None:
-        now = self.time
-        eternal_input = is_input and e.occurrence_time == ETERNAL
-        if e.term.op == TEMPORAL_IMPLICATION:
-            if is_input:
-                emit(self, "Input: " + e.line(priority))
-            sensorimotor.add_implication(self, e.term, e.truth, e.stamp, e.dt, is_input, priority)
-            return
-        c: Concept = self.memory.conceptualize(e.term, now)
-        c.use(now, eternal_input, self.config.eternal_input_usage_boost)
-        self._raise_priority(c, priority)
-        if e.occurrence_time != ETERNAL:
-            if index:
-                # derived compositions stay out of the occurrence-time index: they
-                # serve semantic inference and answers, while temporal induction and
-                # anticipation see what they saw when compositions needed a concept
-                sensorimotor.note_event(self, c)
-            stamp_size = self.config.stamp_size
-            if e.occurrence_time <= now:
-                c.belief_spike = revised_or_chosen(c.belief_spike, e, stamp_size)[0]
-            else:
-                c.predicted_belief = revised_or_chosen(c.predicted_belief, e, stamp_size)[0]
-            if not self.config.eternalize_events:
-                if is_input:
-                    emit(self, "Input: " + e.line(priority))
-                return
-            # ONA 0.9.2 also keeps the event's evidence as a (weaker) eternal belief
-            eternal = Event(e.term, BELIEF, tf.eternalize(e.truth), e.stamp, ETERNAL, now, e.dt)
-            belief, revised = revised_or_chosen(c.belief, eternal, stamp_size)
-            belief.creation_time = now
-            c.belief = belief
-            if is_input:
-                emit(self, "Input: " + e.line(priority))
-            if revised:
-                self._add_event(belief, priority, revised=True)
-            return
-        if c.belief is None:
-            # a first belief needs no copy: of an eternal event only ``creation_time``
-            # ever changes, and it is ``now`` already
-            belief, revised = e, False
-        else:
-            belief, revised = revised_or_chosen(c.belief, e, self.config.stamp_size)
-        belief.creation_time = now
-        c.belief = belief
-        if e.term.op in ("==>", "<=>"):
-            sensorimotor.note_link(self, e.term)
-        if self.pending_questions:
-            self._check_pending(c)
-        if is_input:
-            emit(self, "Input: " + e.line(priority))
-        if revised:
-            if shows(self, priority):
-                emit(self, "Revised: " + belief.line(priority))
-            self._add_event(belief, priority, revised=True)
-
-    def _derived(
-        self, term: Term, t: Truth, stamp: tuple[int, ...], occurrence: int, priority: float
-    ) -> None:
-        """A derived belief: ONA's Memory_AddEvent for derived events (compositions only
-        where their concept exists, priority scaled by complexity) after the conclusion
-        filters, each check made once and the cheap ones first, then :meth:`_store`."""
-        cfg = self.config
-        composition = (len(stamp) > 1 or occurrence != ETERNAL) and _needs_existing_concept(
-            term, occurrence
-        )
-        if (
-            composition
-            and (cfg.compositions_need_concept or term.has_var)
-            and term not in self.memory.concepts
-        ):
-            return  # compositions are only kept where their concept already exists
-        if rejected(term):
-            return
-        op = term.op
-        if (op == "==>" or op == "<=>") and not term.has_indep_var:
-            return
-        priority *= 1.0 / math.log2(1.0 + term.complexity)
-        if t.c < cfg.min_confidence or priority <= 0.0:
-            return
-        e = Event(term, BELIEF, t, stamp, occurrence, self.time)
-        self._store(e, priority, False, False, not composition or cfg.compositions_need_concept)
+        return sum(memorize.concept_priority(self, c) for c in self.memory) / n if n else 0.0
 
     # ------------------------------------------------------------------ cycle
     def cycles(self, n: int) -> None:
         """Run ``n`` inference cycles."""
-        # capacities follow the configuration, so ``nar.config.concepts_max = N`` works
-        self.memory.capacity = self.config.concepts_max
-        self.memory.belief_events.capacity = self.config.cycling_belief_events_max
-        for _ in range(n):
-            self._cycle()
-
-    def _cycle(self) -> None:
-        popped = self.memory.belief_events.pop()
-        if popped is not None:
-            priority, e = popped
-            self.stats["selected"] += 1
-            if shows(self, priority):
-                emit(self, "Selected: " + e.line(priority))
-            if e.occurrence_time != ETERNAL:
-                sc = self.memory.find(e.term)
-                if sc is not None:
-                    sc.selected_time = self.time
-                sensorimotor.process_belief_event(self, e, priority)
-        sensorimotor.forward_links(self)
-        d = decision.process_goals(self)
-        if d is not None:
-            e = decision.execute(self, d)
-            self._add_event(e, 1.0, is_input=True)
-            self.cycles(1)
-            decision.assume_untried_failure(self, d)
-        if popped is not None:
-            self._semantic_inference(popped[1], popped[0])
-        self.memory.belief_events.decay(self.config.event_durability)
-        for q in self.goal_layers:
-            q.decay(self.config.event_durability)
-        self.time += 1
-
-    def _semantic_inference(self, e: Event, priority: float) -> None:
-        cfg = self.config
-        table = _rule_table(cfg.semantic_inference_nal_level)
-        now = self.time
-        # a stamp counting one input twice refuses every conclusion drawn with it, so
-        # such a premise (pair) is skipped whole rather than conclusion by conclusion
-        if not has_duplicate(e.stamp):
-            single = Derivation(self, e.occurrence_time, e.stamp, priority, 1.0)
-            apply_single(table, e.term, e.truth, single)
-        self.process_id += 1
-        avg = self.matched_total / now
-        self.concept_threshold = min(
-            1.0,
-            max(
-                0.0,
-                self.concept_threshold
-                + (avg - cfg.belief_concept_match_target) * cfg.concept_threshold_adaptation,
-            ),
-        )
-        threshold = self.concept_threshold
-        chosen: list[tuple[Concept, float]] = []
-        limit = cfg.belief_concept_match_target
-        durability = cfg.concept_durability
-        c: Concept
-        for c in self.memory.related(e.term):
-            cp = c.priority_at(now, durability)
-            if cp < threshold:
-                continue
-            chosen.append((c, cp))
-            if len(chosen) >= limit:
-                break
-        self.matched_total += len(chosen)
-        spikes_alone = cfg.event_pairs_with_events
-        for c, cp in chosen:
-            belief = c.belief
-            if (
-                e.occurrence_time != ETERNAL
-                and c.belief_spike is not None
-                and abs(e.occurrence_time - c.belief_spike.occurrence_time)
-                < cfg.event_belief_distance
-                and (belief is not None or spikes_alone)
-            ):
-                belief = c.belief_spike.projected(e.occurrence_time)
-            elif belief is None:
-                continue
-            if overlap(e.stamp, belief.stamp):
-                continue
-            c.use(now, False, 0)
-            stamp = merge(e.stamp, belief.stamp, cfg.stamp_size)
-            if has_duplicate(stamp):
-                continue
-            d = Derivation(self, e.occurrence_time, stamp, priority, cp)
-            apply_double(table, e.term, c.term, e.truth, belief.truth, d)
-            special(e.term, c.term, e.truth, belief.truth, d)
-            special(c.term, e.term, belief.truth, e.truth, d)
+        cycle.cycles(self, n)
 
     # -------------------------------------------------------------- questions
     def answer(self, question: Term, tense: str | None = None) -> Event | None:
         """Answer a question at once with the best belief, printing ONA's lines."""
-        emit(self, f"Input: {question}?" + (f" {tense}" if tense else ""))
-        best: Event | None = None
-        best_c: Concept | None = None
-        best_e = -1.0
-        if question.op == TEMPORAL_IMPLICATION:
-            return self._answer_implication(question)
-        for c in self._candidates(question):
-            if unify(question, c.term, query_only=True) is None and c.term is not question:
-                continue
-            cands: list[Event] = []
-            if tense is None:
-                if c.belief is not None:
-                    cands.append(c.belief)
-            else:
-                if tense in (":|:", ":\\:") and c.belief_spike is not None:
-                    cands.append(c.belief_spike)
-                if tense in (":|:", ":/:") and c.predicted_belief is not None:
-                    cands.append(c.predicted_belief)
-            for b in cands:
-                ex = expectation(b.projected(self.time).truth)
-                if ex >= best_e:
-                    best, best_c, best_e = b, c, ex
-        if best is None:
-            emit(self, "Answer: None.")
-            if tense is None:
-                self._pend(question)
-            return None
-        if best_c is not None:
-            self._raise_priority(best_c, self.config.question_priming)
-            best_c.use(self.time, False, 0)
-        self._report_answer(best)
-        return best
-
-    def _answer_implication(self, question: Term) -> Event | None:
-        """``<a =/> b>?``: the best matching link in the precondition tables."""
-        best: Implication | None = None
-        best_e = -1.0
-        for table in self.table_index.values():
-            for post in table:
-                if unify(question.args[1], post.term, query_only=True) is None:
-                    continue
-                for links in post.precondition_beliefs or ():
-                    for imp in links.items:
-                        if imp.term is question or (
-                            question.has_query_var
-                            and unify(question, imp.term, query_only=True) is not None
-                        ):
-                            ex = expectation(imp.truth)
-                            if ex >= best_e:
-                                best, best_e = imp, ex
-        if best is None:
-            emit(self, "Answer: None.")
-            return None
-        e = Event(best.term, BELIEF, best.truth, best.stamp, ETERNAL, best.creation_time, best.dt)
-        self._report_answer(e)
-        return e
-
-    def _report_answer(self, best: Event) -> None:
-        self.stats["answers"] += 1
-        if best.occurrence_time == ETERNAL:
-            emit(
-                self,
-                f"Answer: {best.term}. creationTime={best.creation_time} "
-                f"Stamp={fmt(best.stamp)} {best.truth}",
-            )
-        else:
-            emit(
-                self,
-                f"Answer: {best.term}. :|: occurrenceTime={best.occurrence_time} "
-                f"creationTime={best.creation_time} Stamp={fmt(best.stamp)} {best.truth}",
-            )
-        for cb in self.answer_cbs:
-            cb(best)
-
-    def _pend(self, question: Term) -> None:
-        """Keep an unanswered question open and bring the beliefs about its names back
-        into attention, so the next cycles can derive what it asks for.
-
-        ONA answers only at input; here an open question is answered (one more
-        ``Answer:`` line) as soon as a belief for it is derived. At most
-        ``PENDING_QUESTIONS`` stay open, the oldest is dropped first.
-        """
-        pending = self.pending_questions
-        if question in pending:
-            return
-        pending[question] = None
-        while len(pending) > PENDING_QUESTIONS:
-            del pending[next(iter(pending))]
-        self._bridge(question)
-        for a in dict.fromkeys(x for x in question.atoms() if not x.is_var):
-            d = self.memory.atom_index.get(a)
-            if not d:
-                continue
-            strongest = heapq.nlargest(
-                2,
-                (c for c in itertools.islice(d, 200) if c.belief is not None),
-                key=lambda c: c.use_count,
-            )
-            q = self.memory.belief_events
-            for c in strongest:
-                if not q.contains(c.belief):  # type: ignore[arg-type]
-                    q.push(c.belief.copy(), 1.0)  # type: ignore[arg-type]
-
-    def _bridge(self, question: Term) -> None:
-        """Question-guided premise choice: pair beliefs about the question's subject
-        with beliefs about its predicate that share a middle term, and infer from
-        each pair at once (backward chaining one link deep)."""
-        if question.op is None or len(question.args) != 2 or question.has_var:
-            return
-        s_names = [a for a in question.args[0].atoms() if not a.is_var]
-        p_names = [a for a in question.args[1].atoms() if not a.is_var]
-        if not s_names or not p_names:
-            return
-        idx = self.memory.atom_index
-        limit = 50_000
-        side_p: dict[Term, list[Concept]] = {}
-        for a in p_names:
-            for c in itertools.islice(idx.get(a, ()), limit):
-                if c.belief is not None:
-                    for x in _names(c.term):
-                        side_p.setdefault(x, []).append(c)
-        skip = set(s_names) | set(p_names)
-        table = _rule_table(self.config.semantic_inference_nal_level)
-        done: set[tuple[int, int]] = set()
-        for a in s_names:
-            for c in list(itertools.islice(idx.get(a, ()), limit)):
-                b1 = c.belief
-                if b1 is None:
-                    continue
-                for m in _names(c.term):
-                    if m in skip:
-                        continue
-                    for d in side_p.get(m, ()):
-                        b2 = d.belief
-                        key = (c.id, d.id)
-                        if c is d or b2 is None or key in done or overlap(b1.stamp, b2.stamp):
-                            continue
-                        done.add(key)
-                        stamp = merge(b1.stamp, b2.stamp, self.config.stamp_size)
-                        if has_duplicate(stamp):
-                            continue
-                        der = Derivation(self, ETERNAL, stamp, 1.0, 1.0)
-                        apply_double(table, c.term, d.term, b1.truth, b2.truth, der)
-
-    def _check_pending(self, c: Concept) -> None:
-        """Answer open questions that the new belief of ``c`` answers."""
-        b = c.belief
-        if b is None:
-            return
-        for q in list(self.pending_questions):
-            if q is c.term or (q.has_query_var and unify(q, c.term, query_only=True) is not None):
-                del self.pending_questions[q]
-                self._report_answer(b)
-
-    def _candidates(self, question: Term) -> list[Concept]:
-        if not question.has_var:
-            c = self.memory.find(question)
-            return [c] if c is not None else []
-        names = {a for a in question.atoms() if not a.is_var}
-        best: dict[Concept, None] | None = None
-        for a in names:
-            d = self.memory.atom_index.get(a)
-            if d is None:
-                return []
-            if best is None or len(d) < len(best):
-                best = d
-        if best is None:
-            return list(self.memory)
-        return list(best)
+        return questions.answer(self, question, tense)
 
     def ask(self, question: str) -> Event | None:
         """Answer a question given as text, e.g. ``"<a --> ?1>?"``."""
         s = parse_sentence(question.strip())
         if s.punctuation != "?":
             raise NarseseError(1, len(question.strip()), "a question ends with '?'")
-        return self.answer(s.term, s.tense)
+        return questions.answer(self, s.term, s.tense)
 
     # ------------------------------------------------------------ persistence
     def save(self, path: str | os.PathLike[str]) -> None:
@@ -682,29 +271,6 @@ class NAR(Reasoner):
         self.goal_layers = snap.goal_layers
         self.recent_goal_concepts = snap.recent_goal_concepts
         self.memory.on_remove = partial(sensorimotor.forget_concept, self)
-
-
-_IMAGES = frozenset({"/1", "/2", "\\1", "\\2"})
-_COMPOSED = frozenset({"-", "~", "&", "|"})
-
-
-def _needs_existing_concept(t: Term, occurrence: int) -> bool:
-    """ONA: images at the top, differences and intersections anywhere, and
-    conjunctions with dependent variables (or in time) are derived only into
-    concepts that already exist."""
-    if t.op == "&&" and (t.has_dep_var or occurrence != ETERNAL):
-        return True
-    if (
-        t.op is not None
-        and len(t.args) == 2
-        and (t.args[0].op in _IMAGES or t.args[1].op in _IMAGES)
-    ):
-        return True
-    return bool(t.flags & F_COMPOSED)
-
-
-def _names(t: Term) -> list[Term]:
-    return [a for a in dict.fromkeys(t.atoms()) if not a.is_var]
 
 
 __all__ = ["NAR", "NarseseError", "atom"]

@@ -1,0 +1,11 @@
+# For the compiled engine: the extension types and C functions that questions.py names,
+# so that its annotated variables are read as structs and its calls made in C.
+# questions.py stays the only source of behaviour; see setup.py.
+
+from robocog.nars.terms cimport Term
+from robocog.nars.truth cimport expectation
+from robocog.nars.stamp cimport merge, overlap
+from robocog.nars.event cimport Event, Implication
+from robocog.nars.memory cimport Concept
+from robocog.nars.unify cimport unify
+from robocog.nars.state cimport Reasoner, emit
