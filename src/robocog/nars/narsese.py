@@ -148,8 +148,10 @@ class _Build(Transformer):
         return left  # type: ignore[return-value]
 
     def unary(self, items: list[object]) -> Term:
-        if str(items[0]) not in ("!", "+", "=", "*"):
-            raise _Positioned(items[0].column, f"{items[0]} needs two components")  # type: ignore[attr-defined]
+        op = items[0]
+        if str(op) not in ("!", "+", "=", "*"):
+            column = op.column if isinstance(op, Token) and op.column is not None else 1
+            raise _Positioned(column, f"{op} needs two components")
         return compound(str(items[0]), (items[1],))  # type: ignore[arg-type]
 
     def extset(self, items: list[Term]) -> Term:

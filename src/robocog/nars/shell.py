@@ -16,6 +16,7 @@ import sys
 import tempfile
 from pathlib import Path
 from types import FrameType
+from typing import TextIO
 
 from . import memfile
 from .config import DEFAULT_MEMORY_BYTES, ONA_CONCEPTS_MAX, concepts_for_memory, parse_size
@@ -246,10 +247,10 @@ def run(args: argparse.Namespace) -> int:
     return code
 
 
-def _line(nar: NAR, raw: bytes, lineno: int, out: object) -> bool:
+def _line(nar: NAR, raw: bytes, lineno: int, out: TextIO) -> bool:
     """Process one input line; True when the session ends (``quit``, a closed output)."""
     text, error = _decoded(raw, lineno)
-    write = out.write  # type: ignore[attr-defined]
+    write = out.write
     if text is None:
         write(error + "\n")
         return False
@@ -260,7 +261,7 @@ def _line(nar: NAR, raw: bytes, lineno: int, out: object) -> bool:
         nar.add_input(line)
     except BrokenPipeError:
         # the reader of our output has gone (``| head``): stop quietly, still saving
-        os.dup2(os.open(os.devnull, os.O_WRONLY), out.fileno())  # type: ignore[attr-defined]
+        os.dup2(os.open(os.devnull, os.O_WRONLY), out.fileno())
         return True
     except NarseseError as exc:
         write(f"Error: line {lineno}, column {exc.column}: {exc.message}\n")
