@@ -30,9 +30,9 @@ from pathlib import Path
 from typing import Any
 
 from robocog.atomic import write_json, write_text
+from robocog.experiments.assembly_thesis import EXPERIMENTS, WHOLE_ASSEMBLIES, experiment
 from robocog.experiments.report import add_run_arguments, provenance, provenance_lines
 from robocog.minds.planner_mind import PlannerMind, RequestRecord
-from robocog.planning.thesis import EXPERIMENTS, WHOLE_ASSEMBLIES, experiment
 from robocog.robot.loop import Loop
 from robocog.worlds.tabletop import BLOCK_C_BINS, TabletopWorld
 
