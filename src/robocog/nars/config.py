@@ -73,10 +73,47 @@ class Config:
     allow_var_intro: bool = True
     top_k_declarative_implications: int = 20
     belief_last_used_tolerance: int = 5
+    # ONA 0.9.3's additions (Config.h names); the defaults keep 0.9.2's behaviour and
+    # ``ONA_VERSIONS["0.9.3"]`` switches them to 0.9.3's (see ``Config.for_ona``)
+    #: a goal ``<X --> Y>`` (also with a product ``(X * Y)`` on the left) meets an
+    #: inheritance or similarity belief sharing a side: the other side becomes a subgoal
+    declarative_inheritance_subgoaling: bool = False
+    #: a goal meets an eternal ``<pre ==> goal>`` belief: ``pre!`` is derived, or, when
+    #: ``pre`` has just happened, the goal's event is predicted instead
+    declarative_implications_subgoaling: bool = False
+    #: anticipation for a plain event predicts from the precondition's event as it is,
+    #: neither projected to now nor in sequence with an operation (0.9.3: a precondition
+    #: seen long ago still promises its outcome, so every input counts a failure)
+    anticipation_projects_precondition: bool = True
+    #: a predicted ``(! x)`` outcome is the prediction of ``x`` with the negated truth,
+    #: and counts as its own failure (0.9.3's negation handling in implication tables)
+    anticipation_negated_outcomes: bool = False
+    #: ``<a =/> b>`` for simultaneous ``a`` and ``b`` (dt 0) may be induced
+    allow_concurrent_implications: bool = True
+    #: derived beliefs other than temporal implications only enter concepts that exist
+    #: (the shell's ``*restrictedconceptcreation``)
+    restricted_concept_creation: bool = False
+    #: FUNCTIONAL_EQUIVALENCE: two sequences that lead to the same outcome by the same
+    #: operation are related by ``<=>`` (off in ONA 0.9.3 as in robocog)
+    functional_equivalence: bool = False
     # printing
     print_derivations: bool = False
     print_input: bool = True
     volume_threshold: float = 0.0
+
+    @classmethod
+    def for_ona(cls, version: str = "0.9.2", **overrides: object) -> Config:
+        """The parameters of ONA ``version`` (a key of :data:`ONA_VERSIONS`), then
+        ``overrides``; ValueError for a version robocog does not follow."""
+        try:
+            preset = ONA_VERSIONS[version]
+        except KeyError:
+            known = ", ".join(ONA_VERSIONS)
+            raise ValueError(f"ONA version {version!r} is not one of {known}") from None
+        c = cls()
+        c.update(**preset)
+        c.update(**overrides)
+        return c
 
     def update(self, **overrides: object) -> None:
         """Set parameters by name; unknown names are an error, not a silent typo, and
@@ -89,6 +126,36 @@ class Config:
         """All parameters by name."""
         return asdict(self)
 
+
+#: the ONA versions whose behaviour a reasoner can take (``NAR(ona=...)``, ``robocog nar
+#: --ona``): the parameters that differ from the defaults, which are ONA 0.9.2's. 0.9.3
+#: changed Config.h's MAX_SEQUENCE_LEN (2 -> 3) and TABLE_SIZE (20 -> 120) and added the
+#: switches above; FUNCTIONAL_EQUIVALENCE, ALLOW_ETERNALIZATION (0: robocog's
+#: ``eternalize_events`` False) and RESTRICTED_CONCEPT_CREATION stay as in 0.9.2.
+ONA_VERSIONS: dict[str, dict[str, object]] = {
+    "0.9.2": {},
+    "0.9.3": {
+        "max_sequence_len": 3,
+        "table_size": 120,
+        "declarative_inheritance_subgoaling": True,
+        "declarative_implications_subgoaling": True,
+        "anticipation_projects_precondition": False,
+        "anticipation_negated_outcomes": True,
+    },
+}
+
+#: parameters a memory saved before they existed lacks: such a memory takes the default
+NEWER_PARAMETERS = frozenset(
+    {
+        "declarative_inheritance_subgoaling",
+        "declarative_implications_subgoaling",
+        "anticipation_projects_precondition",
+        "anticipation_negated_outcomes",
+        "allow_concurrent_implications",
+        "restricted_concept_creation",
+        "functional_equivalence",
+    }
+)
 
 _UNIT = (0.0, 1.0)
 #: the accepted range of each numeric parameter (inclusive). Values outside would make a

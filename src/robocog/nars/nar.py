@@ -59,9 +59,9 @@ def _rule_table(level: int) -> RuleTable:
 class NAR(SensorimotorMixin, DecisionMixin):
     """A Non-Axiomatic Reasoner with ONA's behaviour and a bounded memory."""
 
-    def __init__(self, seed: int = 666, **config_overrides: object) -> None:
-        self.config = Config()
-        self.config.update(**config_overrides)
+    def __init__(self, seed: int = 666, ona: str = "0.9.2", **config_overrides: object) -> None:
+        # ``ona``: whose behaviour to follow, ONA 0.9.2's (the papers') or 0.9.3's
+        self.config = Config.for_ona(ona, **config_overrides)
         self.seed = seed
         self._rand_state = seed
         self._answer_cbs: list[Callable[[Event], None]] = []

@@ -484,6 +484,9 @@ class SensorimotorMixin:
             return
         mem = self.memory  # type: ignore[attr-defined]
         op_truth = Truth(1.0, 0.9)
+        # ONA 0.9.3 predicts a plain event's outcome from the precondition's event as it
+        # is, at the time that event promises it; 0.9.2 from it projected to now
+        as_is = opi == 0 and not cfg.anticipation_projects_precondition
         threshold: float = cfg.anticipation_threshold
         # A precondition whose projected truth is this weak cannot lift a prediction
         # above the threshold (expectation - 1/2 <= c / 2) nor to confidence 0.05, so
@@ -550,9 +553,12 @@ class SensorimotorMixin:
                         by_offset = failures.get(spike.truth)
                         if by_offset is None:
                             by_offset = _remember(failures, spike.truth, {})
-                        pre_i = tf.intersection(
-                            tf.projection(spike.truth, spike.occurrence_time, now), op_truth
-                        )
+                        if as_is:
+                            pre_i = spike.truth  # ONA 0.9.3: the event as it happened
+                        else:
+                            pre_i = tf.intersection(
+                                tf.projection(spike.truth, spike.occurrence_time, now), op_truth
+                            )
                         entry = (
                             spike,
                             pre_i.f,
@@ -609,7 +615,7 @@ class SensorimotorMixin:
                     var_sources.clear()
                     groups = None
                 oc.use(now, False, boost)
-                occ = now + rdt
+                occ = (spike.occurrence_time if as_is else now) + rdt
                 mkey = (spike.stamp, imp.stamp, stamp_size)
                 stamp = merged.get(mkey)
                 if stamp is None:
@@ -617,7 +623,7 @@ class SensorimotorMixin:
                 # (deduction; ``truth_of`` rather than Truth's keyword-capable constructor:
                 # predictions are made thousands of times per input)
                 pred = Event(outcome, BELIEF, tf.truth_of(pf, pc), stamp, occ, now)
-                if imp.dt > 0.0:
+                if as_is or imp.dt > 0.0:  # (0.9.3: every prediction is one)
                     old = oc.predicted_belief
                     oc.predicted_belief, _ = revised_or_chosen(old, pred, stamp_size, True)
                     if showing:
