@@ -14,6 +14,7 @@ import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
+from . import goalreasoning
 from . import truth as tf
 from .event import BELIEF, GOAL, Event, Implication, revised_or_chosen
 from .memory import EventQueue
@@ -129,6 +130,8 @@ class DecisionMixin:
         cfg = self.config  # type: ignore[attr-defined]
         now = self.time  # type: ignore[attr-defined]
         gp = g  # ONA uses the selected goal as it is (its deductions happen "now")
+        if cfg.declarative_inheritance_subgoaling or cfg.declarative_implications_subgoaling:
+            self._declarative_goal_reasoning(g, priority, layer)  # ONA 0.9.3
         if g.term.op == SEQUENCE:
             self._decompose_sequence(g.projected(now), priority, layer)
             return None
@@ -150,6 +153,45 @@ class DecisionMixin:
             return best
         self._subgoals(gp, c, priority, layer)
         return None
+
+    def _declarative_goal_reasoning(self, g: Event, priority: float, layer: int) -> None:
+        """ONA 0.9.3's Cycle_DeclarativeGoalReasoning (see :mod:`.goalreasoning`):
+        subgoals from inheritance beliefs (queued in the first layer) and from
+        ``==>`` beliefs (one layer below this goal's), or predictions of the goal."""
+        cfg = self.config  # type: ignore[attr-defined]
+        now = self.time  # type: ignore[attr-defined]
+        mem = self.memory  # type: ignore[attr-defined]
+        size = cfg.stamp_size
+        if cfg.declarative_inheritance_subgoaling and g.term.op == "-->":
+            beliefs = [c.belief for c in mem.related(g.term) if c.belief is not None]
+            for sub in goalreasoning.inheritance_subgoals(g, beliefs, size):
+                # into the first layer (ONA's layer of input goals: the next cycle's)
+                self._derive_goal(sub, priority * expectation(sub.projected(now).truth), -1)
+        if not cfg.declarative_implications_subgoaling:
+            return
+        links = []
+        for link in self.declarative_links():  # type: ignore[attr-defined]
+            lc = mem.find(link)
+            if link.op == "==>" and lc is not None and lc.belief is not None:
+                links.append((link, lc.belief.truth, lc.belief.stamp))
+        if not links:
+            return
+        own = mem.find(g.term)
+        distance = cfg.event_belief_distance
+
+        def recent(pre: Term) -> Event | None:
+            pc = mem.find(pre)
+            b = pc.belief_spike if pc is not None else None
+            return b if b is not None and now - b.occurrence_time < distance else None
+
+        spike = own.goal_spike if own is not None else None
+        goals, predictions = goalreasoning.implication_subgoals(g, spike, links, recent, now, size)
+        for sub in goals:
+            self._derive_goal(sub, priority * expectation(sub.truth), layer)
+        for pred in predictions:
+            pc = mem.find(pred.term)
+            if pc is not None:
+                pc.predicted_belief = revised_or_chosen(pc.predicted_belief, pred, size)[0]
 
     def _decompose_sequence(self, g: Event, priority: float, layer: int) -> None:
         """Goal ``(a &/ b)``: want the first component not yet fulfilled."""

@@ -220,6 +220,14 @@ class SensorimotorMixin:
             else:
                 self.links_by_subject.setdefault(side, {})[term] = None
 
+    def declarative_links(self) -> list[Term]:
+        """Every indexed ``==>``/``<=>`` belief term, ground conditions first."""
+        out: dict[Term, None] = {}
+        for links in self.links_by_subject.values():
+            out.update(links)
+        out.update(self.general_links)
+        return list(out)
+
     def _forward_links(self) -> None:
         """Events that just happened travel forward through ``==>``/``<=>`` beliefs:
         the consequence gets a belief event at the same time (deduction / analogy)."""
