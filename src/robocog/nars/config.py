@@ -88,6 +88,8 @@ class Config:
     #: a predicted ``(! x)`` outcome is the prediction of ``x`` with the negated truth,
     #: and counts as its own failure (0.9.3's negation handling in implication tables)
     anticipation_negated_outcomes: bool = False
+    #: predictions are printed as derived events (ONA 0.9.3's Globals.h: not)
+    print_predictions: bool = True
     #: ``<a =/> b>`` for simultaneous ``a`` and ``b`` (dt 0) may be induced
     allow_concurrent_implications: bool = True
     #: derived beliefs other than temporal implications only enter concepts that exist
@@ -141,6 +143,7 @@ ONA_VERSIONS: dict[str, dict[str, object]] = {
         "declarative_implications_subgoaling": True,
         "anticipation_projects_precondition": False,
         "anticipation_negated_outcomes": True,
+        "print_predictions": False,
     },
 }
 
@@ -151,6 +154,7 @@ NEWER_PARAMETERS = frozenset(
         "declarative_implications_subgoaling",
         "anticipation_projects_precondition",
         "anticipation_negated_outcomes",
+        "print_predictions",
         "allow_concurrent_implications",
         "restricted_concept_creation",
         "functional_equivalence",

@@ -432,6 +432,8 @@ class DecisionMixin:
         c = self.memory.find(g.term)  # type: ignore[attr-defined]
         if c is not None and c.goal_spike is not None and c.goal_spike.same(g):
             return
+        if c is None and self.config.restricted_concept_creation:  # type: ignore[attr-defined]
+            return  # ONA 0.9.3's *restrictedconceptcreation
         if self._add_goal(g, priority, layer + 1) and self._shows(priority):  # type: ignore[attr-defined]
             self._print("Derived: " + g.line(priority))  # type: ignore[attr-defined]
 

@@ -78,9 +78,7 @@ def inheritance_subgoal(goal: Term, belief: Term) -> tuple[Term, bool] | None:
     return found
 
 
-def inheritance_subgoals(
-    goal: Event, beliefs: Iterable[Event], stamp_size: int
-) -> list[Event]:
+def inheritance_subgoals(goal: Event, beliefs: Iterable[Event], stamp_size: int) -> list[Event]:
     """The subgoals of ``goal`` from each eternal belief in ``beliefs`` (ONA: the beliefs
     of the concepts sharing a name with the goal), at the goal's occurrence time."""
     out: list[Event] = []

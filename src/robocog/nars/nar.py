@@ -397,6 +397,8 @@ class NAR(SensorimotorMixin, DecisionMixin):
         op = term.op
         if (op == "==>" or op == "<=>") and not term.has_indep_var:
             return
+        if cfg.restricted_concept_creation and term not in self.memory.concepts:
+            return  # ONA 0.9.3's *restrictedconceptcreation
         priority *= 1.0 / math.log2(1.0 + term.complexity)
         if t.c < cfg.min_confidence or priority <= 0.0:
             return

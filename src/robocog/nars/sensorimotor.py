@@ -19,7 +19,7 @@ from .event import BELIEF, ETERNAL, Event, Implication, revised_or_chosen
 from .rules import hol_component_invalid, introduce_implication_variables
 from .spikegroups import group_add, group_keys, group_remove
 from .stamp import fmt, merge, overlap
-from .terms import SEQUENCE, TEMPORAL_IMPLICATION, Term, compound
+from .terms import NEGATION, SEQUENCE, TEMPORAL_IMPLICATION, Term, compound
 from .truth import Truth, expectation
 from .unify import apply, unify
 
@@ -392,6 +392,7 @@ class SensorimotorMixin:
         # temporal: <c =/> e> for recent non-op events, and the sequence (c &/ e)
         tdiff = cfg.max_sequence_timediff
         reach: float = tdiff
+        concurrent = cfg.allow_concurrent_implications
         for c in () if e_is_op else list(self.time_index):  # an operation pairs with none
             b = c.belief_spike
             if (
@@ -403,6 +404,7 @@ class SensorimotorMixin:
                 or c.term.op in ("==>", "<=>")
                 or c.term.is_op
                 or overlap(b.stamp, e.stamp)
+                or (not concurrent and b.occurrence_time == occ)
             ):
                 continue
             t = tf.intersection(tf.projection(b.truth, b.occurrence_time, occ), e.truth)
@@ -518,6 +520,8 @@ class SensorimotorMixin:
         stamp_size = cfg.stamp_size
         boost = cfg.eternal_input_usage_boost
         showing = self._shows(1.0)  # type: ignore[attr-defined]  # printing is rare: test once
+        shows_predictions = cfg.print_predictions
+        negations = cfg.anticipation_negated_outcomes
         evictions = mem.evictions
         post: Concept
         oc: Concept
@@ -634,8 +638,15 @@ class SensorimotorMixin:
                 if as_is or imp.dt > 0.0:  # (0.9.3: every prediction is one)
                     old = oc.predicted_belief
                     oc.predicted_belief, _ = revised_or_chosen(old, pred, stamp_size, True)
-                    if showing:
+                    if showing and shows_predictions:
                         self._show_prediction(old, oc.predicted_belief)
+                    if negations and outcome.op == NEGATION:
+                        self._predict_negated(pred, table, imp, by_offset, rdt)
+                        if mem.evictions != evictions:
+                            evictions = mem.evictions
+                            sources.clear()
+                            var_sources.clear()
+                            groups = None
                 elif oc.belief_spike is None or occ > oc.belief_spike.occurrence_time:
                     old = oc.belief_spike
                     oc.belief_spike, _ = revised_or_chosen(old, pred, stamp_size, True)
@@ -721,6 +732,30 @@ class SensorimotorMixin:
                     best = b
                 break
         return best
+
+    def _predict_negated(
+        self,
+        pred: Event,
+        table: Table,
+        imp: Implication,
+        by_offset: dict[int, tuple[Truth, float]],
+        rdt: int,
+    ) -> None:
+        """ONA 0.9.3's negation handling: a predicted ``(! x)`` is also ``x`` predicted
+        with the negated truth, and if that prediction is expected (or a weak zero) the
+        link counts one more failure."""
+        cfg = self.config  # type: ignore[attr-defined]
+        t = tf.negation(pred.truth)
+        if expectation(t) > cfg.anticipation_threshold or (t.c < 0.05 and t.f == 0.0):
+            failure = by_offset.get(rdt)
+            if failure is not None:
+                table.add_failure(imp, failure[0], failure[1], cfg.stamp_size)
+        inner = pred.term.args[0]
+        if inner.has_var:
+            return
+        ic = self.memory.conceptualize(inner, self.time)  # type: ignore[attr-defined]
+        neg = Event(inner, BELIEF, t, pred.stamp, pred.occurrence_time, pred.creation_time)
+        ic.predicted_belief = revised_or_chosen(ic.predicted_belief, neg, cfg.stamp_size, True)[0]
 
     def _show_prediction(self, old: Event | None, new: Event) -> None:
         """Print a changed prediction as ONA does (a derived event of priority 1); the
