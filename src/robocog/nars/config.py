@@ -81,6 +81,12 @@ class Config:
     #: a goal meets an eternal ``<pre ==> goal>`` belief: ``pre!`` is derived, or, when
     #: ``pre`` has just happened, the goal's event is predicted instead
     declarative_implications_subgoaling: bool = False
+    #: every cycle, eternal beliefs made or revised in the last
+    #: ``belief_last_used_tolerance`` cycles travel forward through the strongest
+    #: ``top_k_declarative_implications`` ``==>`` beliefs, revising the consequence's
+    #: eternal belief by deduction (ONA 0.9.3's DECLARATIVE_IMPLICATIONS_CYCLE_PROCESS;
+    #: its half for events robocog does with either version)
+    declarative_implications_cycle_process: bool = False
     #: anticipation for a plain event predicts from the precondition's event as it is,
     #: neither projected to now nor in sequence with an operation (0.9.3: a precondition
     #: seen long ago still promises its outcome, so every input counts a failure)
@@ -141,6 +147,7 @@ ONA_VERSIONS: dict[str, dict[str, object]] = {
         "table_size": 120,
         "declarative_inheritance_subgoaling": True,
         "declarative_implications_subgoaling": True,
+        "declarative_implications_cycle_process": True,
         "anticipation_projects_precondition": False,
         "anticipation_negated_outcomes": True,
         "print_predictions": False,
@@ -152,6 +159,7 @@ NEWER_PARAMETERS = frozenset(
     {
         "declarative_inheritance_subgoaling",
         "declarative_implications_subgoaling",
+        "declarative_implications_cycle_process",
         "anticipation_projects_precondition",
         "anticipation_negated_outcomes",
         "print_predictions",

@@ -365,6 +365,8 @@ class NAR(SensorimotorMixin, DecisionMixin):
             belief, revised = revised_or_chosen(c.belief, e, self.config.stamp_size)
         belief.creation_time = now
         c.belief = belief
+        if self.config.declarative_implications_cycle_process:
+            self.note_fresh_belief(c)  # ONA 0.9.3: it may meet ``==>`` beliefs
         if e.term.op in ("==>", "<=>"):
             self._note_link(e.term)
         if self.pending_questions:
@@ -427,6 +429,8 @@ class NAR(SensorimotorMixin, DecisionMixin):
                     sc.selected_time = self.time
                 self._process_belief_event(e, priority)
         self._forward_links()
+        if self.config.declarative_implications_cycle_process:
+            self._forward_eternal()  # ONA 0.9.3
         self._process_goals()
         if popped is not None:
             self._semantic_inference(popped[1], popped[0])
@@ -635,6 +639,12 @@ class NAR(SensorimotorMixin, DecisionMixin):
                             continue
                         der = Derivation(self, ETERNAL, stamp, 1.0, 1.0)
                         apply_double(table, c.term, d.term, b1.truth, b2.truth, der)
+
+    def _on_new_belief(self, c: Concept) -> None:
+        """``c`` got a new eternal belief outside the event path: open questions may
+        have their answer."""
+        if self.pending_questions:
+            self._check_pending(c)
 
     def _check_pending(self, c: Concept) -> None:
         """Answer open questions that the new belief of ``c`` answers."""

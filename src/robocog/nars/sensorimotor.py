@@ -126,6 +126,9 @@ class SensorimotorMixin:
         #: declarative links by subject: ground subject -> {link term}; general ones apart
         self.links_by_subject: dict[Term, dict[Term, None]] = {}
         self.general_links: dict[Term, None] = {}
+        #: concepts whose eternal belief was made or revised lately (oldest first), for
+        #: ONA 0.9.3's declarative pass (``declarative_implications_cycle_process``)
+        self.fresh_beliefs: dict[Concept, None] = {}
 
     # ------------------------------------------------------------- operations
     def op_id(self, op: Term) -> int:
@@ -182,6 +185,7 @@ class SensorimotorMixin:
 
     def _forget_concept(self, c: Concept) -> None:
         """Drop an evicted concept from the implication, link and time indexes."""
+        self.fresh_beliefs.pop(c, None)
         if c.timed:
             try:
                 self.time_index.remove(c)
@@ -219,6 +223,79 @@ class SensorimotorMixin:
                     del self.general_links[next(iter(self.general_links))]
             else:
                 self.links_by_subject.setdefault(side, {})[term] = None
+
+    def note_fresh_belief(self, c: Concept) -> None:
+        """``c``'s eternal belief was just made or revised (newest last)."""
+        fresh = self.fresh_beliefs
+        fresh.pop(c, None)
+        fresh[c] = None
+
+    def _forward_eternal(self) -> None:
+        """ONA 0.9.3's declarative pass for eternal beliefs: each ground belief made or
+        revised within the tolerance meets the strongest ``==>`` beliefs whose
+        condition it instantiates; the consequence's eternal belief is revised with
+        the deduction (or the stronger kept), and, being fresh, travels on next cycle."""
+        cfg = self.config  # type: ignore[attr-defined]
+        now = self.time  # type: ignore[attr-defined]
+        mem = self.memory  # type: ignore[attr-defined]
+        fresh = self.fresh_beliefs
+        oldest = now - cfg.belief_last_used_tolerance
+        while fresh:
+            c = next(iter(fresh))
+            b = c.belief
+            if b is not None and b.creation_time >= oldest and mem.find(c.term) is c:
+                break
+            del fresh[c]  # (stale: older than the tolerance, gone, or evicted)
+        if not fresh:
+            return
+        # ONA keeps a consequence's ``==>`` beliefs in a table ordered by expectation
+        # and uses the strongest ``top_k_declarative_implications`` of each table
+        tables: dict[Term, list[tuple[Term, Event]]] = {}
+        for link in self.declarative_links():
+            lc = mem.find(link)
+            if link.op == "==>" and lc is not None and lc.belief is not None:
+                tables.setdefault(link.args[1], []).append((link, lc.belief))
+        if not tables:
+            return
+        links: list[tuple[Term, Event]] = []
+        for entries in tables.values():
+            entries.sort(key=lambda x: -expectation(x[1].truth))
+            links += entries[: cfg.top_k_declarative_implications]
+        size = cfg.stamp_size
+        derived: list[Event] = []
+        for c in list(fresh):
+            b = c.belief
+            if b is None or b.creation_time < oldest or c.term.has_var:
+                continue
+            for link, lb in links:
+                cond, concl = link.args
+                if cond.op is not None and cond.op != c.term.op:
+                    continue
+                bind = unify(cond, c.term)
+                if bind is None:
+                    continue
+                target = apply(concl, bind)
+                if target.has_var:
+                    continue
+                t = tf.deduction(lb.truth, b.truth)
+                if t.c < cfg.min_confidence:
+                    continue
+                stamp = merge(b.stamp, lb.stamp, size)
+                derived.append(Event(target, BELIEF, t, stamp, ETERNAL, now))
+        for e in derived:
+            if e.term.op == NEGATION and cfg.anticipation_negated_outcomes:
+                e = Event(e.term.args[0], BELIEF, tf.negation(e.truth), e.stamp, ETERNAL, now)
+            tc = mem.conceptualize(e.term, now)
+            old = tc.belief
+            if old is not None and old.stamp == e.stamp:
+                continue
+            new, _ = revised_or_chosen(old, e, size)
+            if new is old:
+                continue
+            new.creation_time = now
+            tc.belief = new
+            self.note_fresh_belief(tc)
+            self._on_new_belief(tc)  # type: ignore[attr-defined]
 
     def declarative_links(self) -> list[Term]:
         """Every indexed ``==>``/``<=>`` belief term, ground conditions first."""
