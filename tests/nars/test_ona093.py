@@ -208,3 +208,22 @@ def test_a_memory_saved_before_the_switches_existed_loads(tmp_path: Path) -> Non
     doc["config"]["allow_var_intro"] = 1
     with pytest.raises(memfile.MemoryFileError, match="allow_var_intro"):
         memfile.decode(json.dumps(doc).encode())
+
+
+def test_fresh_eternal_beliefs_travel_through_implications_each_cycle() -> None:
+    lines = ["<<$1 --> [smokes]> ==> <$1 --> [cancerous]>>. %0.6%", "<{Edward} --> [smokes]>."]
+    lines += ["5", "<{Edward} --> [cancerous]>?"]
+    out = run(lines)
+    assert (
+        "Derived: <{Edward} --> [cancerous]>. Priority=1.000000 Stamp=[2,1] "
+        "Truth: frequency=0.600000, confidence=0.486000"
+    ) in out
+    assert answers(out) == [
+        "Answer: <{Edward} --> [cancerous]>. creationTime=2 Stamp=[2,1] "
+        "Truth: frequency=0.600000, confidence=0.486000"
+    ]
+    # 0.9.2 reaches the same belief later, by semantic inference on the selected event
+    assert not any(line.startswith("Selected: <{Edward} --> [cancerous]>") for line in out)
+    assert any(
+        line.startswith("Selected: <{Edward} --> [cancerous]>") for line in run(lines, "0.9.2")
+    )

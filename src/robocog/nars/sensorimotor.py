@@ -294,6 +294,8 @@ class SensorimotorMixin:
                 continue
             new.creation_time = now
             tc.belief = new
+            if self._shows(1.0):  # type: ignore[attr-defined]
+                self._print("Derived: " + new.line(1.0))  # type: ignore[attr-defined]
             self.note_fresh_belief(tc)
             self._on_new_belief(tc)  # type: ignore[attr-defined]
 
