@@ -18,6 +18,7 @@ from . import commands, memfile
 from . import truth as tf
 from .config import MAX_TIME, Config
 from .decision import DecisionMixin
+from .declarative import DeclarativeMixin
 from .event import BELIEF, ETERNAL, GOAL, Event, Implication, revised_or_chosen
 from .inference import Derivation, apply_double, apply_single, special
 from .memory import Concept, Memory
@@ -56,7 +57,7 @@ def _rule_table(level: int) -> RuleTable:
     return t
 
 
-class NAR(SensorimotorMixin, DecisionMixin):
+class NAR(SensorimotorMixin, DecisionMixin, DeclarativeMixin):
     """A Non-Axiomatic Reasoner with ONA's behaviour and a bounded memory."""
 
     def __init__(self, seed: int = 666, ona: str = "0.9.2", **config_overrides: object) -> None:
