@@ -101,9 +101,6 @@ class Config:
     #: derived beliefs other than temporal implications only enter concepts that exist
     #: (the shell's ``*restrictedconceptcreation``)
     restricted_concept_creation: bool = False
-    #: FUNCTIONAL_EQUIVALENCE: two sequences that lead to the same outcome by the same
-    #: operation are related by ``<=>`` (off in ONA 0.9.3 as in robocog)
-    functional_equivalence: bool = False
     # printing
     print_derivations: bool = False
     print_input: bool = True
@@ -138,8 +135,9 @@ class Config:
 #: the ONA versions whose behaviour a reasoner can take (``NAR(ona=...)``, ``robocog nar
 #: --ona``): the parameters that differ from the defaults, which are ONA 0.9.2's. 0.9.3
 #: changed Config.h's MAX_SEQUENCE_LEN (2 -> 3) and TABLE_SIZE (20 -> 120) and added the
-#: switches above; FUNCTIONAL_EQUIVALENCE, ALLOW_ETERNALIZATION (0: robocog's
-#: ``eternalize_events`` False) and RESTRICTED_CONCEPT_CREATION stay as in 0.9.2.
+#: switches above; RESTRICTED_CONCEPT_CREATION and ALLOW_CONCURRENT_IMPLICATIONS keep
+#: their values, and ALLOW_ETERNALIZATION's 0 is robocog's ``eternalize_events`` False
+#: in both (docs/nars.md, "ONA 0.9.3", says what is not followed).
 ONA_VERSIONS: dict[str, dict[str, object]] = {
     "0.9.2": {},
     "0.9.3": {
@@ -165,7 +163,6 @@ NEWER_PARAMETERS = frozenset(
         "print_predictions",
         "allow_concurrent_implications",
         "restricted_concept_creation",
-        "functional_equivalence",
     }
 )
 
