@@ -227,3 +227,20 @@ def test_fresh_eternal_beliefs_travel_through_implications_each_cycle() -> None:
     assert any(
         line.startswith("Selected: <{Edward} --> [cancerous]>") for line in run(lines, "0.9.2")
     )
+
+
+def test_a_conditional_deduction_feeds_the_declarative_pass() -> None:
+    # a ground ``==>`` from a conditional deduction is kept, and Anna's fresh belief
+    # travels through it (0.9.2 drops it, and answers nothing within these cycles)
+    lines = [
+        "<(<#1 --> [smokes]> && <(#1 * $1) --> friend>) ==> <$1 --> [smokes]>>.",
+        "<({Anna} * {Bob}) --> friend>.",
+        "<{Anna} --> [smokes]>.",
+        "5",
+        "<{Bob} --> [smokes]>?",
+    ]
+    assert answers(run(lines)) == [
+        "Answer: <{Bob} --> [smokes]>. creationTime=3 Stamp=[3,2,1] "
+        "Truth: frequency=1.000000, confidence=0.729000"
+    ]
+    assert answers(run(lines, "0.9.2")) == ["Answer: None."]

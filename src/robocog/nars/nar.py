@@ -399,7 +399,10 @@ class NAR(SensorimotorMixin, DecisionMixin, DeclarativeMixin):
             return
         op = term.op
         if (op == "==>" or op == "<=>") and not term.has_indep_var:
-            return
+            # ONA refuses this only for conclusions with variables introduced: a ground
+            # ``==>`` (from a conditional deduction) it keeps, which its 0.9.3 pass uses
+            if term.has_var or not cfg.declarative_implications_cycle_process:
+                return
         if cfg.restricted_concept_creation and term not in self.memory.concepts:
             return  # ONA 0.9.3's *restrictedconceptcreation
         priority *= 1.0 / math.log2(1.0 + term.complexity)
