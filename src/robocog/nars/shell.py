@@ -71,7 +71,7 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 
 #: the ONA version the shell follows unless ``--ona`` says otherwise (docs/nars.md: why)
-SHELL_ONA = "0.9.2"
+SHELL_ONA = "0.9.3"
 
 _BOOLEANS = {"true": True, "false": False, "yes": True, "no": False, "on": True, "off": False}
 
