@@ -218,7 +218,7 @@ def main(argv: list[str] | None = None) -> int:
         lines += [q, str(args.think)] if args.think else [q]
     text = "\n".join(lines) + "\n"
 
-    ours = [sys.executable, "-m", "robocog", "nar", "--quiet"]
+    ours = [sys.executable, "-m", "robocog", "nar", "--quiet", "--ona", "0.9.2"]
     if args.capacity:
         ours += ["--set", f"concepts_max={args.capacity}"]
     rows = []

@@ -31,9 +31,9 @@ import time
 from dataclasses import asdict, dataclass
 from pathlib import Path
 
+from robocog.experiments.assembly_thesis import EXPERIMENTS, WHOLE_ASSEMBLIES
 from robocog.planning.pddl import Domain, ground, read_domain, read_problem
 from robocog.planning.planner import Planner, solve_task
-from robocog.planning.thesis import EXPERIMENTS, WHOLE_ASSEMBLIES
 
 ROOT = Path(__file__).resolve().parents[1]
 BLOCKS = ROOT.parent / "shared" / "pddl" / "blocks"

@@ -1,6 +1,6 @@
 """Procedure learning: ONA's system-test worlds driven by robocog's NAR and by ONA.
 
-Runs each environment of ``procedure_envs`` for the number of steps of ONA's reference
+Runs each world of ``robocog.worlds.procedures`` for the number of steps of ONA's reference
 runs with every reasoner in the same process: ONA's ``NAR shell`` through pipes,
 robocog's ``NAR`` (skipped, with the reason, while it cannot execute learned
 procedures), and, as a reference, ONA's own built-in test (``NAR pong 10000`` ...).
@@ -19,7 +19,6 @@ import json
 import platform
 import random
 import statistics
-import sys
 import time
 from dataclasses import asdict
 from pathlib import Path
@@ -29,11 +28,8 @@ from rich.console import Console
 from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
 from rich.table import Table
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-
-from procedure_envs import ENVIRONMENTS, ProcedureEnv, run  # noqa: E402
-from procedure_envs.ona_builtin import has_builtin, run_builtin  # noqa: E402
-from procedure_envs.reasoners import (  # noqa: E402
+from robocog.experiments.procedures.ona_builtin import has_builtin, run_builtin
+from robocog.experiments.procedures.reasoners import (
     OnaShell,
     PolicyReasoner,
     Reasoner,
@@ -42,6 +38,7 @@ from procedure_envs.reasoners import (  # noqa: E402
     RobocogNar,
     TracingReasoner,
 )
+from robocog.worlds.procedures import ENVIRONMENTS, ProcedureEnv, run
 
 #: ONA's published figures for these worlds: steps, headline figure, other figures.
 REFERENCE: dict[str, tuple[int, float | None, dict[str, float]]] = {

@@ -24,8 +24,7 @@ import sys
 import time
 from pathlib import Path
 
-from robocog.minds.nars_mind import NarsMind, NarsSettings, probe
-from robocog.minds.ona_shell import OnaShell, ona_knowledge, unavailable
+from robocog.minds import registry
 from robocog.nars import ENGINE
 from robocog.robot.loop import Loop, percentile
 from robocog.worlds.garbage import GarbageConfig, GarbageField
@@ -76,23 +75,23 @@ def main(argv: list[str] | None = None) -> int:
     config = GarbageConfig(light=args.light)
     results = []
 
-    why = probe()
+    why = registry.probe("nars")
     if why:
         print(f"robocog NARS: cannot run yet - {why}")
     else:
 
         def make_robocog(world: GarbageField, seed: int):  # noqa: ANN202
-            return NarsMind(world.route, NarsSettings(seed=seed)), lambda: None
+            config = registry.MindConfig("nars", seed, places=tuple(world.route))
+            return registry.make(config), lambda: None
 
         results.append(measure("robocog", make_robocog, args.runs, args.seed, config))
 
-    why_not_ona = unavailable()
+    why_not_ona = registry.probe("ona")
     if why_not_ona is None:
 
         def make_ona(world: GarbageField, seed: int):  # noqa: ANN202
-            shell = OnaShell()
-            mind = NarsMind(world.route, NarsSettings(seed=seed), ona_knowledge(), nar=shell)  # type: ignore[arg-type]
-            return mind, shell.close
+            mind = registry.make(registry.MindConfig("ona", seed, places=tuple(world.route)))
+            return mind, mind.close  # type: ignore[attr-defined]
 
         results.append(
             measure("ONA 0.9.2", make_ona, args.runs, args.seed, config, in_process=False)

@@ -14,12 +14,12 @@ import threading
 from pathlib import Path
 from typing import Any
 
+from robocog.experiments.assembly_thesis import experiment
 from robocog.experiments.garbage import default_minds, learn_accumulation, run_once
 from robocog.experiments.room_exit import run_once as room_run
 from robocog.inspector.hub import Inspector
 from robocog.inspector.server import InspectorServer
 from robocog.minds.planner_mind import PlannerMind
-from robocog.planning.thesis import experiment
 from robocog.robot.loop import Loop
 from robocog.worlds.garbage import GarbageConfig
 from robocog.worlds.tabletop import TabletopWorld

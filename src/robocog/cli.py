@@ -21,7 +21,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "nar": ("robocog.nars.shell", "NARS shell speaking ONA's protocol on stdin/stdout"),
     "agent": ("robocog.bdi.cli", "run an AgentSpeak (Jason) program until it is idle"),
     "atomese": ("robocog.atomspace.cli", "load Atomese files and evaluate queries"),
-    "plan": ("robocog.planning.cli", "plan pick/place/stack/unstack tasks"),
+    "plan": ("robocog.experiments.plan_cli", "plan pick/place/stack/unstack tasks"),
     "bridge": ("robocog.bridges.cli", "drive a real robot over ROS 2 or ROS 1"),
     "sim": ("robocog.sim.cli", "serve an embedded world as a ROS 2 robot"),
     "replay": ("robocog.bridges.replay", "feed a recorded run's percepts to a mind"),

@@ -80,3 +80,22 @@ def test_a_sleeping_agent_wakes_for_a_message_and_for_news_from_outside() -> Non
     mas.agents["a"].add_belief("hot")  # the system idles; news from outside wakes it
     mas.run()
     assert out[-1] == "a: hot"
+
+
+def test_run_takes_as_many_rounds_as_stepping_until_idle() -> None:
+    """run() skips asking every agent whether it is idle while one is known to have
+    work: the rounds and what is printed must be those of the plain loop."""
+    sources = {
+        "a": "+!t(K) : K <= 0 <- .print(end).\n+!t(K) <- .send(c, achieve, t(K - 1)).",
+        "b": "!s.\n+!s <- .send(a, achieve, t(5)); .print(b1); .print(b2).",
+        "c": "+!t(K) <- .print(c, K); .send(a, achieve, t(K - 1)).",
+    }
+    mas, out = _mas(**sources)
+    rounds = mas.run()
+    ref, ref_out = _mas(**sources)
+    n = 0
+    while not ref.is_idle():
+        ref.step()
+        n += 1
+    assert out == ref_out and rounds == n
+    assert out[-1] == "a: end" and "c: c4" in out

@@ -5,9 +5,9 @@ from __future__ import annotations
 import random
 from collections.abc import Callable
 
-from procedure_envs import Alien, Bandrobot, Cartpole, Pong, Pong2, ProcedureEnv, Robot
-from procedure_envs.cartpole import UPRIGHT
-from procedure_envs.reasoners import PolicyReasoner
+from robocog.experiments.procedures.reasoners import PolicyReasoner
+from robocog.worlds.procedures import Alien, Bandrobot, Cartpole, Pong, Pong2, ProcedureEnv, Robot
+from robocog.worlds.procedures.cartpole import UPRIGHT
 
 Policy = Callable[[ProcedureEnv], str | None]
 

@@ -5,8 +5,8 @@ from __future__ import annotations
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from procedure_envs import Alien, Bandrobot, Cartpole, Pong, Pong2, ProcedureEnv, Robot
-from procedure_envs.cartpole import PI
+from robocog.worlds.procedures import Alien, Bandrobot, Cartpole, Pong, Pong2, ProcedureEnv, Robot
+from robocog.worlds.procedures.cartpole import PI
 
 OPS_PER_STEP = st.lists(
     st.sampled_from(["^left", "^right", "^stop", "^shoot", "^forward", "^pick", "^drop", "^other"]),

@@ -6,9 +6,9 @@ import sys
 
 import pytest
 
-from procedure_envs import Alien, Cartpole, Robot, run
-from procedure_envs.ona_builtin import parse_status, run_builtin
-from procedure_envs.reasoners import OnaShell, ReasonerError
+from robocog.experiments.procedures.ona_builtin import parse_status, run_builtin
+from robocog.experiments.procedures.reasoners import OnaShell, ReasonerError
+from robocog.worlds.procedures import Alien, Cartpole, Robot, run
 
 needs_ona = pytest.mark.skipif(
     OnaShell.unavailable_reason() is not None, reason=str(OnaShell.unavailable_reason())

@@ -6,7 +6,9 @@ from pathlib import Path
 
 import pytest
 
-from procedure_envs import (
+from robocog.experiments.procedures.reasoners import PolicyReasoner, TracingReasoner
+from robocog.nars import parse_sentence
+from robocog.worlds.procedures import (
     ENVIRONMENTS,
     Alien,
     Bandrobot,
@@ -17,8 +19,6 @@ from procedure_envs import (
     Robot,
     run,
 )
-from procedure_envs.reasoners import PolicyReasoner, TracingReasoner
-from robocog.nars import parse_sentence
 
 from .policies import PERFECT, random_policy, scripted
 

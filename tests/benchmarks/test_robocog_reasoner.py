@@ -7,8 +7,8 @@ import re
 import pytest
 
 import robocog.nars
-from procedure_envs import Alien, Pong, run
-from procedure_envs.reasoners import ReasonerError, ReasonerUnavailable, RobocogNar
+from robocog.experiments.procedures.reasoners import ReasonerError, ReasonerUnavailable, RobocogNar
+from robocog.worlds.procedures import Alien, Pong, run
 
 
 class FakeNar:

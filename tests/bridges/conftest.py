@@ -120,25 +120,11 @@ DATA = Path(__file__).with_name("data")
 
 
 def _mind_class(name: str) -> str:
-    """Why the mind ``--mind name`` cannot drive a robot here, or '' when it can: the
-    module or class may be missing, or its engine not yet able to act (its ``probe``)."""
-    import importlib
+    """Why the mind ``--mind name`` cannot drive a robot here, or '' when it can: its
+    engine may be missing or not yet able to act (the registry's probe)."""
+    from robocog.minds import registry
 
-    from robocog.bridges.cli import MINDS
-
-    module_name, attr = MINDS[name]
-    try:
-        module = importlib.import_module(module_name)
-    except Exception as exc:  # noqa: BLE001 - a package under construction may fail anyhow
-        return f"{module_name} cannot be imported ({type(exc).__name__}: {exc})"
-    if not hasattr(module, attr):
-        return f"{module_name} has no {attr} yet"
-    probe = getattr(module, "probe", None)
-    if callable(probe):
-        reason = probe()
-        if reason:
-            return f"{attr} cannot drive a robot yet: {reason}"
-    return ""
+    return registry.probe(name) or ""
 
 
 @pytest.fixture

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
+from robocog.minds.registry import MindConfig
 from robocog.robot import (
     Cancel,
     Command,
@@ -63,6 +64,8 @@ class ReflexMind:
         self.outcomes.append((command, outcome))
 
 
-def make() -> ReflexMind:
-    """The factory the command line names as ``--mind tests.bridges.reflex:make``."""
-    return ReflexMind()
+def make(config: MindConfig) -> ReflexMind:
+    """The factory the command line names as ``--mind tests.bridges.reflex:make``: the
+    source file, when one is given, names the target."""
+    text = config.text()
+    return ReflexMind() if text is None else ReflexMind(text.strip())

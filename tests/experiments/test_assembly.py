@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 
 from robocog.experiments import assembly
-from robocog.planning.thesis import EXPERIMENTS
+from robocog.experiments.assembly_thesis import EXPERIMENTS
 
 
 def test_every_table_is_reached_with_the_thesis_plan() -> None:

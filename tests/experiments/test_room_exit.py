@@ -10,6 +10,7 @@ import pytest
 
 import robocog
 from robocog.experiments import room_exit
+from robocog.minds.qbo import reach_exit_program
 from robocog.worlds.room import RoomConfig
 
 
@@ -45,7 +46,7 @@ def test_runs_are_reproducible_from_their_seed() -> None:
 
 
 def test_the_plans_are_the_papers() -> None:
-    source = room_exit.plans_source()
+    source = reach_exit_program()
     for label in ("@re", "@ro", "@s_td1", "@s_td2", "@so1", "@so2", "@da1", "@da2", "@da3", "@da4"):
         assert f"\n{label}\n" in source
     assert "-+expected_target_direction(Dir + 45)" in source

@@ -5,9 +5,9 @@ from __future__ import annotations
 
 from typing import Any
 
+from robocog.experiments.assembly_thesis import experiment
 from robocog.experiments.garbage import default_minds, run_once
 from robocog.minds.planner_mind import PlannerMind
-from robocog.planning.thesis import experiment
 from robocog.robot.loop import Loop
 from robocog.worlds.garbage import GarbageConfig
 from robocog.worlds.tabletop import TabletopWorld

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 
+from robocog.experiments.assembly_thesis import experiment
 from robocog.inspector.snapshot import dumps
 from robocog.inspector.views import (
     BdiView,
@@ -18,7 +19,6 @@ from robocog.inspector.views import (
 from robocog.minds.bdi_mind import BdiMind
 from robocog.minds.nars_mind import NarsMind
 from robocog.minds.planner_mind import PlannerMind
-from robocog.planning.thesis import experiment
 from robocog.robot.loop import Loop
 from robocog.robot.percepts import Detection
 from robocog.worlds.garbage import GarbageConfig, GarbageField

@@ -40,7 +40,8 @@ def test_actions_map_to_commands() -> None:
     assert command_for_action("goto", ["p2"]) == GoTo("p2")
     assert command_for_action("pick", ["cup"]) == Pick("cup")
     assert command_for_action("drop", []) == Drop()
-    assert command_for_action("forward", ["1.5"]) == Forward(1.5)
-    assert command_for_action("left", ["90"]) == Turn(math.radians(90))
+    assert command_for_action("forward", [1.5]) == Forward(1.5)
+    assert command_for_action("left", [90]) == Turn(math.radians(90))
+    assert command_for_action("forward", ["far"]) == Forward(0.5)  # not a distance: one step
     assert command_for_action("right", []).angle < 0  # type: ignore[union-attr]
     assert command_for_action("fly", []) is None

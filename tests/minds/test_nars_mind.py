@@ -7,6 +7,7 @@ from collections.abc import Callable
 import pytest
 
 from robocog.minds.nars_mind import NarsMind, NarsSettings, NotReady, background, probe
+from robocog.nars import parse_term
 from robocog.robot import Detection, Drop, GoTo, Gripper, Mind, Obstacle, Outcome, Pick, Pose
 
 PAPER_STATEMENTS = [
@@ -19,7 +20,8 @@ PAPER_STATEMENTS = [
 
 
 class Recorder:
-    """A stand-in reasoner: keeps every input and fires scripted operations on cycles."""
+    """A stand-in reasoner: keeps every input (a sentence as its text) and fires scripted
+    operations on cycles, their arguments read as the engine hands them, as a term."""
 
     def __init__(self, script: Callable[[Recorder], list[tuple[str, str | None]]]) -> None:
         self.inputs: list[str] = []
@@ -32,18 +34,25 @@ class Recorder:
             raise ValueError("line 1, column 3: unexpected")
         self.inputs.append(line)
 
+    def add_sentence(self, sentence: object) -> None:
+        self.inputs.append(str(sentence))
+
     def register_operation(self, name: str, fn: Callable[[object], object]) -> None:
         self.ops[name] = fn
 
     def cycles(self, n: int) -> None:
         for op, args in self.script(self):
-            self.ops[op](args)
+            self.ops[op](None if args is None else parse_term(args))
 
     def ask(self, question: str) -> object:
         self.inputs.append(question)
         if question == "<bottle --> ?1>?":
             return Answer("<bottle --> trash>", Truth(1.0, 0.9))
         return None
+
+    def answer(self, question: object) -> object:
+        found = self.ask(f"{question}?")
+        return None if found is None else Answer(parse_term(found.term), found.truth)  # type: ignore[attr-defined]
 
 
 class Truth:
@@ -103,11 +112,11 @@ def test_frames_and_the_goal_go_in_and_executions_come_out() -> None:
     # What a bottle is comes from the reasoner's answer, and follows the place at once.
     asked = nar.inputs.index("<bottle --> ?1>?")
     assert nar.inputs[asked - 1] == "<({SELF} * {p0}) --> at>. :|:"
-    assert nar.inputs[asked + 1] == "<trash --> [see]>. :|: {1.000000 0.810000}"
+    assert nar.inputs[asked + 1] == "<trash --> [see]>. :|: {1 0.81}"
     mind.on_outcome(Pick("bottle1"), Outcome.failure("missed the grasp"))
-    assert nar.inputs[-2:] == ["<gripper --> [open]>. :|:", "<gripper --> [hold]>. :|: {0.0 0.9}"]
+    assert nar.inputs[-2:] == ["<gripper --> [open]>. :|:", "<gripper --> [hold]>. :|: {0 0.9}"]
     mind.on_outcome(Pick("bottle1"), Outcome.success())
-    assert nar.inputs[-2:] == ["<gripper --> [hold]>. :|:", "<gripper --> [open]>. :|: {0.0 0.9}"]
+    assert nar.inputs[-2:] == ["<gripper --> [hold]>. :|:", "<gripper --> [open]>. :|: {0 0.9}"]
     mind.on_outcome(Drop(), Outcome.success())
     assert nar.inputs[-2] == "<gripper --> [open]>. :|:"
 
@@ -179,8 +188,8 @@ def test_by_default_an_absent_kind_is_left_to_anticipation() -> None:
     for seen in (True, False, False):
         mind.perceive(_frame(seen=seen))
         mind.decide()
-    assert "<trash --> [see]>. :|: {1.000000 0.810000}" in nar.inputs
-    assert not any(ln.endswith("[see]>. :|: {0.0 0.9}") for ln in nar.inputs)
+    assert "<trash --> [see]>. :|: {1 0.81}" in nar.inputs
+    assert not any(ln.endswith("[see]>. :|: {0 0.9}") for ln in nar.inputs)
 
 
 def test_a_kind_once_seen_can_be_reported_missing_when_out_of_view() -> None:
@@ -189,14 +198,14 @@ def test_a_kind_once_seen_can_be_reported_missing_when_out_of_view() -> None:
     mind = NarsMind(["p0"], settings, nar=nar)  # type: ignore[arg-type]
     mind.perceive(_frame(seen=False))
     mind.decide()
-    assert "<trash --> [see]>. :|: {0.0 0.9}" not in nar.inputs  # nothing looked for yet
+    assert "<trash --> [see]>. :|: {0 0.9}" not in nar.inputs  # nothing looked for yet
     mind.perceive(_frame(seen=True))
     mind.decide()
     mind.perceive(_frame(seen=False))
     start = len(nar.inputs)
     mind.decide()
     frame = nar.inputs[start:]
-    assert frame[:2] == ["<({SELF} * {p0}) --> at>. :|:", "<trash --> [see]>. :|: {0.0 0.9}"]
+    assert frame[:2] == ["<({SELF} * {p0}) --> at>. :|:", "<trash --> [see]>. :|: {0 0.9}"]
 
 
 def test_the_place_can_be_told_on_arrival_only() -> None:

@@ -12,6 +12,7 @@ from robocog.minds.ona_shell import (
     ona_knowledge,
     unavailable,
 )
+from robocog.nars import parse_sentence, parse_term
 
 needs_ona = pytest.mark.skipif(unavailable() is not None, reason=str(unavailable()))
 
@@ -40,3 +41,22 @@ def test_executions_call_the_registered_operation_and_answers_come_back() -> Non
     finally:
         shell.close()
     assert shell.proc.poll() is not None
+
+
+@needs_ona
+def test_sentences_go_in_and_arguments_and_answers_come_back_as_terms() -> None:
+    shell = OnaShell()
+    calls: list[object] = []
+    shell.register_operation("^pick", calls.append)
+    try:
+        shell.add_input("<(a &/ <({SELF} * {cup1}) --> ^pick>) =/> g>.")
+        shell.add_sentence(parse_sentence("a. :|:"))
+        shell.add_sentence(parse_sentence("g! :|:"))
+        shell.cycles(2)
+        assert calls == [parse_term("({SELF} * {cup1})")]
+        shell.add_sentence(parse_sentence("<x --> y>. {1.0 0.9}"))
+        answer = shell.answer(parse_term("<x --> ?1>"))
+        assert answer is not None and answer.term is parse_term("<x --> y>")
+        assert shell.answer(parse_term("<nothing --> ?1>")) is None
+    finally:
+        shell.close()

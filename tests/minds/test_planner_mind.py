@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import pytest
 
+from robocog.experiments.assembly_thesis import experiment
 from robocog.minds.planner_mind import PlannerMind, command_for_step
 from robocog.planning.planner import Step
-from robocog.planning.thesis import experiment
 from robocog.robot import Outcome, PickUp, PutDown, Stack, Unstack
 from robocog.robot.loop import Loop
 from robocog.worlds.tabletop import TabletopWorld

@@ -3,8 +3,8 @@ and plans again when a look shows something the plan did not predict."""
 
 from __future__ import annotations
 
+from robocog.experiments.assembly_thesis import experiment
 from robocog.minds.planner_mind import PlannerMind
-from robocog.planning.thesis import experiment
 from robocog.robot import Percept, PickUp, Resting
 from robocog.robot.loop import Loop
 from robocog.worlds.tabletop import TabletopWorld

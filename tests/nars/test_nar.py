@@ -12,7 +12,7 @@ import pytest
 
 from robocog.nars import NAR, NarseseError
 
-EXAMPLES = Path("/work/shared/nal/ona-examples")
+EXAMPLES = Path(__file__).resolve().parents[3] / "shared" / "nal" / "ona-examples"
 
 
 def run_lines(nar: NAR, lines: list[str]) -> list[str]:

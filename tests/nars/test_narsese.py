@@ -13,7 +13,7 @@ from robocog.nars.narsese import NarseseError, parse_sentence, parse_term
 from robocog.nars.terms import atom, compound
 from robocog.nars.truth import Truth
 
-EXAMPLES = Path("/work/shared/nal/ona-examples")
+EXAMPLES = Path(__file__).resolve().parents[3] / "shared" / "nal" / "ona-examples"
 
 
 def _narsese_lines() -> list[str]:

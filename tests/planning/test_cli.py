@@ -6,7 +6,7 @@ from pathlib import Path
 
 import pytest
 
-from robocog.planning import cli
+from robocog.experiments import plan_cli as cli
 
 BLOCKS = Path(__file__).resolve().parents[3] / "shared" / "pddl" / "blocks"
 

@@ -116,8 +116,8 @@ def test_the_arm_stacks_one_cube_on_another_and_the_camera_sees_it_on_top(
 
 
 def test_planner_mind_sees_a_cube_moved_onto_its_target_and_replans_physically() -> None:
+    from robocog.experiments.assembly_thesis import experiment
     from robocog.minds.planner_mind import PlannerMind
-    from robocog.planning.thesis import experiment
     from robocog.robot.loop import Loop
 
     world = MujocoTabletop(seed=2)

@@ -292,7 +292,7 @@ class Agent:
         """All solutions of a formula, e.g. ``"at(X) & X \\== door"``, as name -> value."""
         f = parse_term(formula) if isinstance(formula, str) else formula
         names = [v for v in variables(f) if v.name != "_"]
-        context.running.set(self)
+        context.enter(self)
         out = []
         s: dict = {}
         for _ in solve(self, f, s, []):
@@ -385,6 +385,7 @@ class Agent:
         limit = sys.maxsize if max_cycles is None else max_cycles
         popleft = events.popleft
         next_intention = running.popleft
+        now_running = context.running.get
         while n < limit:
             if events or running or feedback or C.atomic_intention is not None:
                 n += 1
@@ -396,7 +397,8 @@ class Agent:
                     and not self._formula_waiters
                     and not self._has_atomic
                 ):
-                    context.running.set(self)
+                    if now_running() is not self:  # as context.enter(self)
+                        context.enter(self)
                     self.cycle += 1
                     while events:
                         if deliberate(popleft()):
@@ -419,7 +421,7 @@ class Agent:
 
     def step(self) -> None:
         """One reasoning cycle."""
-        context.running.set(self)
+        context.enter(self)
         self.cycle += 1
         C = self.C
         # ---- sense

@@ -16,7 +16,7 @@ from typing import Any
 from robocog.bdi.logic import solve
 from robocog.bdi.parser import Rule
 from robocog.bdi.terms import Literal, Term, Var, is_ground, sort_annots
-from robocog.bdi.unifier import annots_subset, annots_ways, rename, undo, unify
+from robocog.bdi.unifier import annots_subset, annots_ways, rename, resolve, undo, unify
 
 _ids = itertools.count()
 
@@ -297,6 +297,58 @@ class BeliefBase:
                 if unify(pattern, head, s, trail):
                     yield from solve(agent, body, s, trail)
                 undo(s, trail, mark)
+
+    def collect(self, pattern: Literal, template: Term, s: dict) -> list | None:
+        """``.findall``'s common case without a generator per solution: ``template``
+        under each way ``pattern`` unifies with a fact, in :meth:`query`'s order, or
+        ``None`` when the predicate has rules or facts with variables, or the pattern
+        annotations (use :meth:`query` then). ``s`` is left as it was."""
+        key = (pattern.functor, len(pattern.args), pattern.neg)
+        bucket = self._index.get(key)
+        if not bucket:
+            return []
+        if self._mixed.get(key) or pattern.annots:
+            return None
+        args = pattern.args
+        vals = bucket
+        if args:
+            a0 = args[0]
+            while a0.__class__ is Var:
+                v = s.get(a0)
+                if v is None:
+                    break
+                a0 = v
+            if a0.__class__ is not Var and is_ground(a0):
+                vals = self._first[key].get(a0)
+                if not vals:
+                    return []
+        cands = tuple(vals.values())[::-1]
+        while template.__class__ is Var:
+            v = s.get(template)
+            if v is None:
+                break
+            template = v
+        # every argument a distinct unbound variable (``val(_, V)``): each fact binds
+        # them as they stand; a template that is one of them is that argument of each
+        place = {}
+        for k, v in enumerate(args):
+            if v.__class__ is not Var or v in s or v in place:
+                break
+            place[v] = k
+        else:
+            if template.__class__ is Var:
+                k = place.get(template)
+                if k is not None:
+                    return [b.args[k] for b in cands]
+            elif is_ground(template):
+                return [template] * len(cands)
+        trail: list = []
+        out = []
+        for b in cands:
+            if unify(pattern, b, s, trail):
+                out.append(resolve(template, s, {}))
+            undo(s, trail, 0)
+        return out
 
     def first(
         self, pattern: Literal, s: dict, trail: list, key: tuple | None = None

@@ -65,6 +65,8 @@ from robocog.bdi.unifier import (
 if TYPE_CHECKING:
     from robocog.bdi.agent import Agent
 
+_new = object.__new__
+
 
 def execute(self: Agent, i: Intention) -> None:
     """Execute one formula of the top intended means of ``i`` (Jason's ExecInt)."""
@@ -369,7 +371,10 @@ def del_add_step(self: Agent, i: Intention, step: P.Step, s: dict) -> None:
 def trigger(self: Agent, step: P.Step, op: str, kind: str, lit: Literal) -> P.Trigger:
     """The trigger of an event posted by ``step``, with its candidate plans (which
     depend only on the step's functor and arity, so they are looked up once)."""
-    trig = P.Trigger(op, kind, lit)
+    trig = _new(P.Trigger)  # P.Trigger(op, kind, lit) without a call to __init__
+    trig.op = op
+    trig.kind = kind
+    trig.literal = lit
     pl = self.pl
     rel = step.rel
     if rel is not None and rel[0] is pl and rel[1] == pl.version:
@@ -377,10 +382,12 @@ def trigger(self: Agent, step: P.Step, op: str, kind: str, lit: Literal) -> P.Tr
         if got is not None:
             trig.cands = got
             return trig
-    elif step.term.__class__ is Literal:
-        rel = step.rel = (pl, pl.version, {})
+        trig.cands = None
     else:
-        return trig
+        trig.cands = None
+        if step.term.__class__ is not Literal:
+            return trig
+        rel = step.rel = (pl, pl.version, {})
     pl.candidates(trig)
     rel[2][op] = trig.cands
     return trig

@@ -15,3 +15,14 @@ from typing import Any
 
 #: the agent whose step is running in this thread (None outside a step)
 running: ContextVar[Any] = ContextVar("robocog_bdi_running_agent", default=None)
+
+_get = running.get
+_set = running.set
+
+
+def enter(agent: Any) -> None:
+    """Name ``agent`` as the one running. Setting a context variable builds a new
+    context each time, several times the cost of reading it, and a cycle mostly follows
+    a cycle of the same agent: so it is set only when another agent ran last."""
+    if _get() is not agent:
+        _set(agent)

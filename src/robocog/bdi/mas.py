@@ -33,6 +33,10 @@ class MultiAgentSystem:
         #: or a change from outside wakes it, so a round costs what the awake ones do
         self._awake: dict[str, int] = {}
         self._place: dict[str, int] = {}
+        #: known to have work for the next round: an agent was left busy by its step or
+        #: was sent news (agents only ever give each other work, never take it away),
+        #: so run() need not ask every awake agent whether it is idle
+        self._busy = False
 
     def add(self, agent: Agent) -> Agent:
         """Add an agent (its name must be unique)."""
@@ -48,6 +52,7 @@ class MultiAgentSystem:
         """Let ``agent`` run in the next rounds (it has news)."""
         if agent.name in self._place:
             self._awake[agent.name] = self._place[agent.name]
+            self._busy = True
 
     def create(self, name: str, source: str = "", **kw: Any) -> Agent:
         """Build an agent from source text and add it."""
@@ -63,33 +68,46 @@ class MultiAgentSystem:
         if ag is None:
             raise ActionError(f"no agent named {msg.receiver}")
         ag.mailbox.append(msg)
-        self.wake(ag)
+        place = self._place.get(ag.name)
+        if place is not None:  # wake it (as wake() does)
+            self._awake[ag.name] = place
+            self._busy = True
 
     def step(self) -> None:
         """One reasoning cycle of every agent, in the order they were added."""
         awake = self._awake
         agents = self.agents
         order = sorted(awake, key=awake.__getitem__) if len(awake) > 1 else list(awake)
+        clock = self.clock
         for name in order:
             ag = agents.get(name)
             if ag is None:
                 awake.pop(name, None)
                 continue
-            ag.clock = self.clock
+            ag.clock = clock
             ag.step()
-            if ag.is_idle() and not ag.has_pending() and ag.next_timer() is None:
-                del awake[name]
+            if not ag.is_idle():
+                self._busy = True
+            elif not ag.has_pending() and ag.next_timer() is None:
+                del awake[name]  # asleep until news wakes it
 
     def is_idle(self) -> bool:
         """True when no agent has anything to do now."""
         # a sleeping agent is idle: it went to sleep so, and nothing has woken it
-        return all(self.agents[n].is_idle() for n in self._awake if n in self.agents)
+        agents = self.agents
+        for name in self._awake:
+            ag = agents.get(name)
+            if ag is not None and not ag.is_idle():
+                return False
+        return True
 
     def run(self, max_rounds: int | None = None) -> int:
         """Run rounds until every agent is idle (jumping the clock to timers)."""
         n = 0
         while not self.stopped and (max_rounds is None or n < max_rounds):
-            if self.is_idle():
+            if self._busy:
+                self._busy = False
+            elif self.is_idle():
                 timers = [t for ag in self.agents.values() if (t := ag.next_timer()) is not None]
                 if timers:
                     self.clock = max(self.clock, min(timers))
@@ -97,6 +115,6 @@ class MultiAgentSystem:
                         ag.clock = self.clock
                     continue
                 break
-            self.step()
+            self.step()  # sets _busy again when there is work left
             n += 1
         return n

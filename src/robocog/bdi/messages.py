@@ -41,7 +41,7 @@ if TYPE_CHECKING:
 _msg_ids = itertools.count(1)
 
 
-@dataclass
+@dataclass(slots=True)
 class Message:
     """A KQML-like message between agents."""
 
@@ -124,6 +124,8 @@ def _with_sender(t: Term, sender: str) -> Term:
     become annotations of ``source(sender)``, so ``p[source(a)]`` told by b is
     ``p[source(b)[source(a)]]``."""
     if t.__class__ is Literal:
+        if not t.annots:  # the usual case: one annotation, nothing to sort or merge
+            return Literal.make(t.functor, t.args, (source(sender),), t.neg, t.ground)
         olds = [a for a in t.annots if a.__class__ is Literal and a.functor == "source"]
         if not olds:
             return t.add_annots((source(sender),))

@@ -297,7 +297,12 @@ class PlanLibrary:
         return found  # type: ignore[return-value]
 
     def has_candidate(self, trigger: Trigger) -> bool:
-        """True if some plan may handle ``trigger``."""
+        """True if some plan may handle ``trigger`` (without touching the trigger's
+        remembered candidates: a trigger shared by several agents would lose them)."""
+        lit = trigger.literal
+        if not self._var_plans and lit.__class__ is Literal:
+            key = (trigger.op, trigger.kind, lit.functor, len(lit.args), lit.neg)
+            return bool(self._index.get(key))
         return bool(self.candidates(trigger))
 
     def __iter__(self):  # noqa: ANN204 - iterator of plans

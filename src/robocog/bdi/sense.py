@@ -18,7 +18,7 @@ from robocog.bdi.circumstance import (
     Intention,
 )
 from robocog.bdi.logic import holds
-from robocog.bdi.messages import Message, handle_message
+from robocog.bdi.messages import handle_message
 from robocog.bdi.plans import (
     BELIEF,
 )
@@ -61,8 +61,8 @@ def buf(self: Agent) -> None:
     self._perceived = dict(new)
 
 
-def process_message(self: Agent, msg: Message) -> None:
-    handle_message(self, msg)
+#: what a message taken from the mailbox does (the agent's ``_process_message``)
+process_message = handle_message
 
 
 def wake_timers(self: Agent) -> None:

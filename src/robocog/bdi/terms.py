@@ -173,15 +173,33 @@ NIL = Nil()
 
 
 class Cons:
-    """A list cell ``[head|tail]``; lists are chains of cells ending in ``NIL`` or a var."""
+    """A list cell ``[head|tail]``; lists are chains of cells ending in ``NIL`` or a var.
 
-    __slots__ = ("head", "tail", "ground", "_hash")
+    A list built from Python items by :func:`make_list` starts as its first cell alone,
+    holding the items (``_items``): the internal actions that read a list whole
+    (``.length``, ``.nth``, ``.sort``, ``.max``, ...) take them from there, and the
+    other cells are built only when something walks the chain (the first read of
+    ``tail``, through :meth:`__getattr__`, which Python calls only while that slot is
+    still empty). A cell built any other way has ``_items`` None.
+    """
+
+    __slots__ = ("head", "tail", "ground", "_hash", "_items")
 
     def __init__(self, head: Term, tail: Term) -> None:
         self.head = head
         self.tail = tail
         self.ground = is_ground(head) and is_ground(tail)
         self._hash = None
+        self._items = None
+
+    def __getattr__(self, name: str) -> Term:
+        # only reached for an empty slot: the tail of a list made by make_list
+        if name != "tail":
+            raise AttributeError(name)
+        items = object.__getattribute__(self, "_items")
+        rest = _cells(items, 1, NIL, True)
+        self.tail = rest
+        return rest
 
     def __eq__(self, other: object) -> bool:
         a, b = self, other
@@ -204,13 +222,13 @@ class Cons:
         return term_str(self)
 
 
-def make_list(items: Iterable[Term], tail: Term = NIL) -> Term:
-    """Build a list term from Python items (each cell's groundness carried along from
-    the tail rather than recomputed: ``.findall`` builds lists of thousands)."""
+def _cells(items: tuple | list, start: int, tail: Term, g: bool) -> Term:
+    """The chain of cells of ``items[start:]`` ending in ``tail`` (each cell's
+    groundness carried along from the tail rather than recomputed)."""
     out = tail
-    g = is_ground(tail)
     new = _new
-    for item in reversed(items if items.__class__ is list else list(items)):
+    for k in range(len(items) - 1, start - 1, -1):
+        item = items[k]
         c = item.__class__
         if g and not (c is int or c is float or c is str) and (c is Var or not item.ground):
             g = False
@@ -219,12 +237,60 @@ def make_list(items: Iterable[Term], tail: Term = NIL) -> Term:
         cell.tail = out
         cell.ground = g
         cell._hash = None
+        cell._items = None
         out = cell
     return out
 
 
+def make_list(items: Iterable[Term], tail: Term = NIL, ground: bool | None = None) -> Term:
+    """Build a list term from Python items. A proper list (ending in ``[]``) is its
+    first cell holding the items, the rest built when first walked (see :class:`Cons`);
+    ``ground``, when the caller knows it, spares the check of every item."""
+    items = tuple(items)
+    if not items:
+        return tail
+    if tail.__class__ is not Nil:
+        return _cells(items, 0, tail, is_ground(tail))
+    if ground is None:
+        ground = True
+        for item in items:
+            c = item.__class__
+            if not (c is int or c is float or c is str) and (c is Var or not item.ground):
+                ground = False
+                break
+    cell = _new(Cons)
+    cell.head = items[0]
+    cell.ground = ground
+    cell._hash = None
+    cell._items = items
+    return cell
+
+
+def list_items(t: Term) -> tuple | list | None:
+    """The elements of a proper list (``None`` for anything else): the items a list
+    made by :func:`make_list` holds, without walking its cells."""
+    if t.__class__ is Cons:
+        items = t._items
+        if items is not None:
+            return items
+        out = []
+        while t.__class__ is Cons:
+            out.append(t.head)
+            t = t.tail
+        return out if t.__class__ is Nil else None
+    if t.__class__ is Nil:
+        return ()
+    return None
+
+
 def iter_list(t: Term) -> Iterator[Term]:
     """The elements of a list term (stops at the tail)."""
+    if t.__class__ is Cons and t._items is not None:
+        return iter(t._items)
+    return _walk(t)
+
+
+def _walk(t: Term) -> Iterator[Term]:
     while t.__class__ is Cons:
         yield t.head
         t = t.tail
@@ -232,6 +298,8 @@ def iter_list(t: Term) -> Iterator[Term]:
 
 def list_tail(t: Term) -> Term:
     """What ends a list: ``NIL`` for a proper list, a var or other term otherwise."""
+    if t.__class__ is Cons and t._items is not None:
+        return NIL
     while t.__class__ is Cons:
         t = t.tail
     return t
@@ -458,6 +526,34 @@ def sort_key(t: Term) -> tuple:
     if c is str:
         return (1, t)
     return (_kind(t), _Key(t))
+
+
+_NUMBERS = frozenset((int, float))
+_STRINGS = frozenset((str,))
+
+
+def _plain(items: tuple | list) -> bool:
+    """True when ``items`` are all numbers or all strings: then Python's own order is
+    :func:`compare`'s, and a sort or a maximum needs no key per item."""
+    kinds = set(map(type, items))
+    return kinds <= _NUMBERS or kinds == _STRINGS
+
+
+def sorted_terms(items: tuple | list) -> list:
+    """``items`` sorted in Jason's term order (stable)."""
+    if _plain(items):
+        return sorted(items)
+    return sorted(items, key=sort_key)
+
+
+def max_term(items: tuple | list) -> Term:
+    """The first greatest of ``items`` (not empty) in Jason's term order."""
+    return max(items) if _plain(items) else max(items, key=sort_key)
+
+
+def min_term(items: tuple | list) -> Term:
+    """The first least of ``items`` (not empty) in Jason's term order."""
+    return min(items) if _plain(items) else min(items, key=sort_key)
 
 
 class AnnotTail:

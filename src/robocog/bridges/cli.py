@@ -1,16 +1,15 @@
 """``robocog bridge ros2|ros1 --mind nars|bdi``: drive a real robot with a robocog mind.
 
-The bridge itself knows no engine. The mind is found by name at run time through
-``importlib`` (``robocog.minds``' ``NarsMind`` or ``BdiMind``, or any ``module:factory``),
-so that the Body code in this package never imports an engine and a build without the
-minds still offers the bridge to custom minds.
+The bridge itself knows no engine. The mind is made by name through the minds'
+registry (:mod:`robocog.minds.registry`: ``nars``, ``bdi``, the other shipped minds, or
+any ``module:factory``), which imports a mind's engine only when that mind is made, so
+the Body code in this package never imports an engine.
 """
 
 from __future__ import annotations
 
 import argparse
 import importlib
-import inspect
 import logging
 import os
 import signal
@@ -20,22 +19,10 @@ from pathlib import Path
 from typing import Any
 
 from robocog.bridges.config import BridgeConfig, Topics
+from robocog.minds.registry import MindConfig, MindUnavailable, make, names
+from robocog.robot.protocols import Mind
 
 log = logging.getLogger("robocog.bridges")
-
-#: --mind name -> (module, class) of the minds robocog ships
-MINDS = {
-    "nars": ("robocog.minds.nars_mind", "NarsMind"),
-    "bdi": ("robocog.minds.bdi_mind", "BdiMind"),
-}
-#: constructor parameters that take the knowledge as a list of lines (Narsese)
-LINE_PARAMETERS = ("knowledge", "background")
-#: constructor parameters that take the program or knowledge as one text (AgentSpeak)
-TEXT_PARAMETERS = ("program", "source", "text")
-
-
-class MindUnavailable(RuntimeError):
-    """The mind asked for cannot be built in this installation."""
 
 
 def configure(parser: argparse.ArgumentParser) -> None:
@@ -44,7 +31,8 @@ def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--mind",
         default="nars",
-        help="nars, bdi, or module:factory for a mind of your own (default: nars)",
+        help=f"{', '.join(names())}, or module:factory for a mind of your own "
+        "(called with a robocog.minds.registry.MindConfig) (default: nars)",
     )
     parser.add_argument("--knowledge", type=Path, help="Narsese file given to a NARS mind")
     parser.add_argument("--program", type=Path, help="AgentSpeak (.asl) program of a BDI mind")
@@ -229,93 +217,17 @@ def build_config(args: argparse.Namespace) -> BridgeConfig:
     return replace(config, **changes)
 
 
-def make_mind(name: str, config: BridgeConfig, source: Path | None = None, seed: int = 0) -> Any:
-    """The bridge's one place that builds a mind from its name and the robot's setup.
+def make_mind(name: str, config: BridgeConfig, source: Path | None = None, seed: int = 0) -> Mind:
+    """The mind ``name`` for the robot of ``config``, made by the minds' registry.
 
-    The shipped minds are built as the garbage experiment builds them (the route's
-    places, the seed, the shipped knowledge unless a file is given); a ``module:factory``
-    goes through ``build_mind``. The engines are imported by name, at run time.
+    The shipped minds are made as the garbage experiment makes them: the route's places,
+    the seed, and the knowledge or program in ``source`` instead of the shipped one. Any
+    failure to make it is a :class:`MindUnavailable` naming the mind.
     """
-    places = list(config.route_places)
-    if name == "nars":
-        module = _import_mind("nars")
-        knowledge = None
-        if source is not None:
-            knowledge = [ln for ln in source.read_text(encoding="utf-8").splitlines() if ln.strip()]
-        try:
-            return module.NarsMind(places, module.NarsSettings(seed=seed), knowledge)
-        except Exception as exc:  # noqa: BLE001 - an engine may refuse its input in any way
-            raise MindUnavailable(f"mind 'nars' could not start: {exc}") from exc
-    if name == "bdi":
-        module = _import_mind("bdi")
-        text = None if source is None else source.read_text(encoding="utf-8")
-        try:
-            return module.BdiMind(text)
-        except Exception as exc:  # noqa: BLE001
-            raise MindUnavailable(f"mind 'bdi' could not start: {exc}") from exc
-    return build_mind(name, source, places)
-
-
-def _import_mind(name: str) -> Any:
-    module_name, attr = MINDS[name]
     try:
-        module = importlib.import_module(module_name)
-    except ImportError as exc:
-        raise MindUnavailable(f"mind {name!r} is not available: {exc}") from exc
-    if not hasattr(module, attr):
-        raise MindUnavailable(f"mind {name!r} is not available: {module_name} has no {attr}")
-    return module
-
-
-def build_mind(name: str, source: Path | None = None, places: list[str] | None = None) -> Any:
-    """The mind called ``name``: ``nars``, ``bdi`` or ``module:factory``.
-
-    The minds are imported by name here, at run time, and never by an import statement:
-    the bridges know no engine. ``source`` is the mind's knowledge (Narsese lines, for a
-    ``knowledge`` parameter) or program (AgentSpeak text, for a ``source`` or ``program``
-    parameter), else the first positional parameter gets its text; a factory with a
-    ``places`` parameter gets the names of the configured places.
-    """
-    if name in MINDS:
-        module_name, attr = MINDS[name]
-    elif ":" in name:
-        module_name, _, attr = name.partition(":")
-    else:
-        raise MindUnavailable(f"unknown mind {name!r}: use nars, bdi or module:factory")
-    try:
-        # by name, not by an import statement: the bridges know no engine
-        module = importlib.import_module(module_name)
-    except ImportError as exc:
-        raise MindUnavailable(f"mind {name!r} is not available: {exc}") from exc
-    factory = getattr(module, attr, None)
-    if factory is None:
-        raise MindUnavailable(f"mind {name!r} is not available: {module_name} has no {attr}")
-    try:
-        params = dict(inspect.signature(factory).parameters)
-    except (TypeError, ValueError):
-        params = {}
-    kwargs: dict[str, Any] = {}
-    if places is not None and "places" in params:
-        kwargs["places"] = list(places)
-    if source is not None:
-        text = source.read_text(encoding="utf-8")
-        line_param = next((p for p in LINE_PARAMETERS if p in params), None)
-        text_param = next((p for p in TEXT_PARAMETERS if p in params), None)
-        if line_param is not None:
-            kwargs[line_param] = [line for line in text.splitlines() if line.strip()]
-        elif text_param is not None:
-            kwargs[text_param] = text
-        else:
-            positional = [
-                p
-                for p in params.values()
-                if p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD) and p.name not in kwargs
-            ]
-            if not positional:
-                raise MindUnavailable(f"mind {name!r} takes no knowledge or program")
-            kwargs[positional[0].name] = text
-    try:
-        return factory(**kwargs)
+        return make(MindConfig(name, seed, source, tuple(config.route_places)))
+    except MindUnavailable:
+        raise
     except Exception as exc:  # noqa: BLE001 - an engine may refuse its input in any way
         raise MindUnavailable(
             f"mind {name!r} could not start: {type(exc).__name__}: {exc}"

@@ -27,12 +27,13 @@ import argparse
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, cast
 
 from robocog.atomic import write_json, write_text
+from robocog.experiments.assembly_thesis import EXPERIMENTS, WHOLE_ASSEMBLIES, experiment
 from robocog.experiments.report import add_run_arguments, provenance, provenance_lines
+from robocog.minds import registry
 from robocog.minds.planner_mind import PlannerMind, RequestRecord
-from robocog.planning.thesis import EXPERIMENTS, WHOLE_ASSEMBLIES, experiment
 from robocog.robot.loop import Loop
 from robocog.worlds.tabletop import BLOCK_C_BINS, TabletopWorld
 
@@ -156,7 +157,8 @@ def run_sequence(
         finally:
             if hasattr(world, "close"):  # the physical world's renderers hold GL contexts
                 world.close()
-    mind = PlannerMind(mode=mode, perceive_scene=physical)
+    options = {"mode": mode, "perceive_scene": physical}
+    mind = cast(PlannerMind, registry.make(registry.MindConfig("planner", seed, options=options)))
     loop = Loop(world, mind)
     on_step = watch(world, mind, loop) if watch else None
     out = SequenceRun(sequence, seed, failure_rate)

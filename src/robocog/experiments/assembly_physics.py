@@ -25,7 +25,7 @@ SequenceRun = Any
 
 def _same_as_thesis(table: str, plan: Any) -> bool | None:
     """Whether the first plan is the thesis's for a table (None for a whole assembly)."""
-    from robocog.planning.thesis import experiment
+    from robocog.experiments.assembly_thesis import experiment
 
     try:
         exp = experiment(table)

@@ -16,8 +16,10 @@ from __future__ import annotations
 import statistics
 from collections.abc import Callable, Sequence
 from dataclasses import asdict, dataclass, field, replace
+from functools import partial
 from typing import Any
 
+from robocog.minds import registry
 from robocog.robot.loop import Loop, Step
 from robocog.robot.protocols import Mind
 from robocog.worlds.garbage import GarbageConfig, GarbageField
@@ -411,65 +413,25 @@ def learn_accumulation(
     )
 
 
+#: the minds of the paper's comparison: registry name -> the name the reports use
+LABELS: dict[str, str] = {"nars": "NARS", "bdi": "BDI", "ona": "ONA"}
+
+
 def default_minds(names: Sequence[str] = ("nars", "bdi")) -> list[MindSpec]:
     """The minds of the paper's comparison, by name: nars, bdi, and ona (NarsMind with
-    ONA 0.9.2 as its reasoner, the peer system, when its ``NAR`` command is installed)."""
+    ONA 0.9.2 as its reasoner, the peer system, when its ``NAR`` command is installed),
+    each made by :mod:`robocog.minds.registry` with the route of the field as its places."""
     specs = []
     for name in names:
         key = name.lower()
-        if key == "nars":
-            specs.append(MindSpec("NARS", _make_nars, _probe_nars))
-        elif key == "bdi":
-            specs.append(MindSpec("BDI", _make_bdi, _probe_bdi))
-        elif key == "ona":
-            specs.append(MindSpec("ONA", _make_ona, _probe_ona))
-        else:
+        if key not in LABELS:
             raise ValueError(f"unknown mind {name!r}: choose nars, bdi or ona")
+        specs.append(MindSpec(LABELS[key], partial(_make, key), partial(registry.probe, key)))
     return specs
 
 
-def _make_nars(world: GarbageField, seed: int) -> Mind:
-    from robocog.minds.nars_mind import NarsMind, NarsSettings
-
-    return NarsMind(world.route, NarsSettings(seed=seed))
-
-
-def _probe_nars() -> str | None:
-    try:
-        from robocog.minds.nars_mind import probe
-    except Exception as exc:
-        return f"the NARS engine cannot be imported: {type(exc).__name__}: {exc}"
-    return probe()
-
-
-def _make_ona(world: GarbageField, seed: int) -> Mind:
-    from robocog.minds.nars_mind import NarsMind, NarsSettings
-    from robocog.minds.ona_shell import OnaShell, ona_knowledge
-
-    shell = OnaShell()
-    return NarsMind(world.route, NarsSettings(seed=seed), ona_knowledge(), nar=shell)  # type: ignore[arg-type]
-
-
-def _probe_ona() -> str | None:
-    try:
-        from robocog.minds.ona_shell import unavailable
-    except Exception as exc:
-        return f"the ONA adapter cannot be imported: {type(exc).__name__}: {exc}"
-    return unavailable()
-
-
-def _make_bdi(world: GarbageField, seed: int) -> Mind:
-    from robocog.minds.bdi_mind import BdiMind
-
-    return BdiMind()
-
-
-def _probe_bdi() -> str | None:
-    try:
-        from robocog.minds.bdi_mind import probe
-    except Exception as exc:
-        return f"the AgentSpeak engine cannot be imported: {type(exc).__name__}: {exc}"
-    return probe()
+def _make(name: str, world: GarbageField, seed: int) -> Mind:
+    return registry.make(registry.MindConfig(name, seed, places=tuple(world.route)))
 
 
 def run_experiment(

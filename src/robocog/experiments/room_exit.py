@@ -26,14 +26,14 @@ import math
 from collections import Counter
 from collections.abc import Callable
 from dataclasses import asdict, dataclass, field
-from importlib import resources
 from pathlib import Path
 from typing import Any
 
 from robocog.atomic import write_json, write_text
 from robocog.experiments import convergence
 from robocog.experiments.report import add_run_arguments, provenance, provenance_lines
-from robocog.minds.qbo import QboPerception, ReachExitReference
+from robocog.minds import registry
+from robocog.minds.qbo import QboPerception
 from robocog.robot.loop import Loop
 from robocog.robot.protocols import Mind
 from robocog.worlds.room import RoomConfig, RoomWorld
@@ -46,18 +46,6 @@ OUTCOMES = (
     "exit not found",
     "door not reached",
 )
-
-
-#: the one copy of Figs. 6-8 in robocog, kept with the AgentSpeak interpreter's examples
-PLANS = ("robocog.bdi", "examples/qbo_reach_exit.asl")
-
-
-def plans_source() -> str:
-    """The .asl program: Figs. 6-8 as printed, the sub-goals the paper leaves out, and
-    the initial goal ``!reach_exit``."""
-    package, path = PLANS
-    text = resources.files(package).joinpath(path).read_text(encoding="utf-8")
-    return text + "\n!reach_exit.\n"
 
 
 @dataclass
@@ -80,23 +68,23 @@ class RunResult:
     marks: list[tuple[float, float, str]] = field(default_factory=list)
 
 
+#: this experiment's mind names -> the registry's
+REGISTERED = {"bdi": "qbo", "reference": "qbo-reference"}
+
+
 class MindUnavailable(RuntimeError):
     """The engine behind a mind is not part of this build."""
 
 
 def build_mind(name: str) -> tuple[Mind, QboPerception]:
     """A fresh mind and the perception it keeps (its ``looking_for`` names the phase)."""
-    if name == "reference":
-        mind = ReachExitReference()
-        return mind, mind.perception
-    if name == "bdi":
-        from robocog.minds.qbo import qbo_bdi_mind
-
-        try:
-            return qbo_bdi_mind(plans_source())
-        except (ImportError, FileNotFoundError) as exc:  # not part of this build
-            raise MindUnavailable(f"the AgentSpeak mind cannot be built: {exc}") from exc
-    raise ValueError(f"unknown mind {name!r}")
+    if name not in REGISTERED:
+        raise ValueError(f"unknown mind {name!r}")
+    try:
+        mind = registry.make(registry.MindConfig(REGISTERED[name]))
+    except (registry.MindUnavailable, FileNotFoundError) as exc:  # not part of this build
+        raise MindUnavailable(f"the AgentSpeak mind cannot be built: {exc}") from exc
+    return mind, mind.perception  # type: ignore[attr-defined]
 
 
 def run_once(

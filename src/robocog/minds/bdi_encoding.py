@@ -1,7 +1,9 @@
 """Percepts as AgentSpeak beliefs and environment actions as Commands, for BdiMind.
 
-Pure functions over text, so they can be read and tested without an interpreter. The
-beliefs carry the same information as NARS's channels (Hammer et al., Section IV):
+Pure functions, so they can be read and tested without an interpreter: the beliefs are
+written as text, which the agent reads as its percepts (through a cached reader), and an
+action's arguments come as the Python values the agent hands over. The beliefs carry
+the same information as NARS's channels (Hammer et al., Section IV):
 
 - ``see(bottle)`` and ``position(bottle, left|center|right)`` per detected label;
 - ``obstacle(left|front|right|free)``;
@@ -13,9 +15,9 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Iterable
+from collections.abc import Iterable, Sequence
 
-from robocog.minds.nars_encoding import DEFAULT_FOV, FORWARD_STEP, TURN_STEP, direction
+from robocog.minds.channels import DEFAULT_FOV, FORWARD_STEP, TURN_STEP, direction
 from robocog.robot.commands import Command, Drop, Forward, GoTo, Pick, Turn
 from robocog.robot.percepts import Detection, Gripper, Obstacle, Percept, Pose
 
@@ -44,25 +46,30 @@ def percept_beliefs(percepts: Iterable[Percept], fov: float = DEFAULT_FOV) -> li
     return list(dict.fromkeys(out))
 
 
-def command_for_action(functor: str, args: list[str]) -> Command | None:
-    """The Command an environment action stands for, or None if the robot has none."""
+def command_for_action(functor: str, args: Sequence[object]) -> Command | None:
+    """The Command an environment action stands for, or None if the robot has none.
+
+    ``args`` are the action's arguments as the agent hands them (numbers as numbers,
+    atoms and strings as text), so a distance or an angle is never printed and read back.
+    """
     if functor == "goto":
-        return GoTo(args[0] if args else "next")
+        return GoTo(str(args[0]) if args else "next")
     if functor == "pick":
-        return Pick(args[0] if args else "trash")
+        return Pick(str(args[0]) if args else "trash")
     if functor == "drop":
         return Drop()
     if functor == "forward":
-        return Forward(float(args[0]) if args and _number(args[0]) else FORWARD_STEP)
+        metres = _number(args[0]) if args else None
+        return Forward(FORWARD_STEP if metres is None else metres)
     if functor in ("left", "right"):
-        angle = math.radians(float(args[0])) if args and _number(args[0]) else TURN_STEP
+        degrees = _number(args[0]) if args else None
+        angle = TURN_STEP if degrees is None else math.radians(degrees)
         return Turn(angle if functor == "left" else -angle)
     return None
 
 
-def _number(text: str) -> bool:
-    try:
-        float(text)
-    except ValueError:
-        return False
-    return True
+def _number(value: object) -> float | None:
+    """A number argument as a float, else None."""
+    if isinstance(value, (int, float)) and not isinstance(value, bool):
+        return float(value)
+    return None

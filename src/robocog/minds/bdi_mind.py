@@ -18,7 +18,7 @@ from collections.abc import Sequence
 from robocog.bdi.actions import ActionHandle
 from robocog.bdi.agent import Agent
 from robocog.minds.bdi_encoding import command_for_action, percept_beliefs
-from robocog.minds.nars_encoding import DEFAULT_FOV
+from robocog.minds.channels import DEFAULT_FOV
 from robocog.robot.commands import Command, Outcome, Pick
 from robocog.robot.percepts import Detection, Gripper, Obstacle, Percept, Pose
 
@@ -61,7 +61,7 @@ class BdiMind:
 
     def _environment_action(self, functor: str):  # noqa: ANN202 - the agent's callback type
         def act(*args: object) -> bool | ActionHandle:
-            command = command_for_action(functor, [str(a) for a in args])
+            command = command_for_action(functor, args)
             self.actions.append(f"{functor}({', '.join(str(a) for a in args)})")
             if command is None:
                 return False

@@ -48,19 +48,23 @@ from typing import TYPE_CHECKING
 from robocog.minds.nars_encoding import (
     DEFAULT_FOV,
     OPERATIONS,
+    TASK_GOAL,
+    arrived_at,
     command_for,
-    encode,
+    frame_events,
     goal_at,
     gripper_events,
     not_seen,
     recall_questions,
     seen_as,
+    seen_kind,
 )
 from robocog.robot.commands import Command, Drop, GoTo, Outcome, Pick
 from robocog.robot.percepts import Detection, Gripper, Obstacle, Percept, Pose
 
 if TYPE_CHECKING:
-    from robocog.nars import NAR
+    from robocog.nars import NAR, Term
+    from robocog.nars.narsese import Sentence
 
 TRASH_QUESTION = "<<({SELF} * {?1}) --> at> =/> <trash --> [see]>>?"
 
@@ -121,17 +125,18 @@ class NarsMind:
         self.settings = settings or NarsSettings()
         self.places = list(places)
         if nar is None:
-            from robocog.nars import NAR  # the engine is needed only when none is given
+            from robocog.nars import NAR  # a reasoner is made only when none is given
 
             nar = NAR(seed=self.settings.seed, **self.settings.overrides)
         self.nar = nar
         self.lines: deque[str] = deque(maxlen=self.settings.transcript or 1)
         if self.settings.transcript:
             self.nar.output = self.lines.append
-        self._executed: list[tuple[str, str | None]] = []
-        self._frame: list[str] = []
-        self._questions: list[str] = []
-        self._kinds: set[str] = set()  # kinds of things reported seen so far
+        self._executed: list[tuple[str, Term | None]] = []
+        self._place: list[Sentence] = []  # where the robot is, told first
+        self._frame: list[Sentence] = []  # the rest of the frame
+        self._questions: list[Term] = []
+        self._kinds: set[Term] = set()  # kinds of things reported seen so far
         self._idle = 0
         self._last_place: str | None = None
         self._reported_place: str | None = None  # the place last told to the reasoner
@@ -160,16 +165,25 @@ class NarsMind:
                 self.notes.append(f"read {BRACKETED[line]!r} for the printed {line!r} ({exc})")
 
     def _callback(self, op: str):  # noqa: ANN202 - the reasoner's callback type
-        def execute(args: object = None) -> None:
-            self._executed.append((op, None if args is None else str(args)))
+        def execute(args: Term | None = None) -> None:
+            self._executed.append((op, args))
 
         return execute
 
     def _input(self, line: str) -> None:
+        """A line of text: a shell command or a line of the knowledge file."""
         try:
             self.nar.add_input(line)
         except Exception as exc:  # the reasoner names the line and column
             raise NotReady(f"the reasoner rejected {line.strip()!r}: {exc}") from exc
+        self.inputs += 1
+
+    def _tell(self, sentence: Sentence) -> None:
+        """An event or goal the mind built: handed to the reasoner as it is, unparsed."""
+        try:
+            self.nar.add_sentence(sentence)
+        except Exception as exc:
+            raise NotReady(f"the reasoner rejected {sentence}: {exc}") from exc
         self.inputs += 1
 
     # ---- the Mind protocol ----------------------------------------------------
@@ -190,7 +204,7 @@ class NarsMind:
         self._questions = (
             recall_questions(percepts, self.settings.max_detections) if self.settings.recall else []
         )
-        self._frame = encode(
+        self._place, self._frame = frame_events(
             percepts,
             self.settings.fov,
             self.settings.instances,
@@ -199,35 +213,34 @@ class NarsMind:
 
     def decide(self) -> list[Command]:
         """Feed the frame and the goals, cycle, and return what the reasoner executed."""
-        place = [ln for ln in self._frame if ln.startswith("<({SELF} * ")]
-        for line in place:
-            self._input(line)
-        seen_kinds: dict[str, None] = {}
+        for event in self._place:
+            self._tell(event)
+        sightings: list[Sentence] = []
         for question in self._questions:  # what is seen, as what it is, right after where
-            answer = self.ask(question)
+            answer = self.nar.answer(question)
             if answer is not None:
-                event = seen_as(question, *answer)
-                if event is not None and event not in seen_kinds:
-                    seen_kinds[event] = None
-                    self._kinds.add(event.split(" -->")[0].lstrip("<"))
-                    self._input(event)
-        seen = {e.split(" -->")[0].lstrip("<") for e in seen_kinds}
+                truth = answer.truth
+                event = seen_as(question, answer.term, float(truth.f), float(truth.c))
+                if event is not None and event not in sightings:
+                    sightings.append(event)
+                    self._kinds.add(seen_kind(event))
+                    self._tell(event)
+        seen = {seen_kind(e) for e in sightings}
         if self.settings.report_absence:
-            for kind in sorted(self._kinds - seen):  # looked for, and not there
-                self._input(not_seen(kind))
-        for line in self._frame:
-            if line not in place:
-                self._input(line)
-        self._input("G! :|:")
+            for kind in sorted(self._kinds - seen, key=str):  # looked for, and not there
+                self._tell(not_seen(kind))
+        for event in self._frame:
+            self._tell(event)
+        self._tell(TASK_GOAL)
         if self._idle >= self.settings.patience and not self._holding:
             nxt = self.next_place()
             if nxt is not None:
-                self._input(goal_at(nxt))
+                self._tell(goal_at(nxt))
         self.nar.cycles(self.settings.cycles_per_frame)
         executed, self._executed = self._executed, []
         commands: list[Command] = []
         for op, args in executed:
-            self.decisions.append((op, args))
+            self.decisions.append((op, None if args is None else str(args)))
             command = command_for(op, args, [*self.places, "start"])
             if command is not None:
                 commands.append(command)
@@ -240,19 +253,19 @@ class NarsMind:
             self._idle = 0
         if isinstance(command, Pick):
             self._holding = outcome.ok
-            for line in gripper_events(outcome.ok):
-                self._input(line)
+            for event in gripper_events(outcome.ok):
+                self._tell(event)
         elif isinstance(command, GoTo) and outcome.ok:
             place = command.place
             if place == "next":
                 place = self.next_place() or place
             if place in self.places:
                 self._last_place = self._reported_place = place
-                self._input(f"<({{SELF}} * {{{place}}}) --> at>. :|:")
+                self._tell(arrived_at(place))
         elif isinstance(command, Drop) and outcome.ok:
             self._holding = False
-            for line in gripper_events(False):
-                self._input(line)
+            for event in gripper_events(False):
+                self._tell(event)
 
     # ---- the operator's route and the user's questions --------------------------
 

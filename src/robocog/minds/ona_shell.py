@@ -1,9 +1,9 @@
 """ONA 0.9.2 (``NAR shell``, PyPI ``ona``) as the reasoner behind NarsMind.
 
 The peer system the seed's robot ran on, driven through its text protocol: NarsMind's
-calls (``add_input``, ``cycles``, ``register_operation``, ``ask``) become lines on the
-child process's stdin, and its ``^op executed with args ...`` lines call the
-registered operations. Used to measure ONA on the same world, encodings and goals as
+calls (``add_input``, ``add_sentence``, ``cycles``, ``register_operation``, ``answer``)
+become lines on the child process's stdin, and its ``^op executed with args ...`` lines
+call the registered operations with the arguments read as a term. Used to measure ONA on the same world, encodings and goals as
 robocog's own reasoner (``robocog experiment garbage --minds nars,bdi,ona`` and
 ``benchmarks/robot_loop.py``).
 
@@ -21,6 +21,8 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from robocog.minds.nars_mind import BRACKETED_GOTO_RULE, PRINTED_GOTO_RULE, background
+from robocog.nars import NarseseError, Term, parse_term
+from robocog.nars.narsese import Sentence
 
 #: the first rule bracketed as ONA's reader needs it
 ONA_GOTO_RULE = BRACKETED_GOTO_RULE
@@ -36,10 +38,22 @@ class Truth:
 
 @dataclass(frozen=True)
 class Answer:
-    """An ONA answer, shaped like robocog's events (``term``, ``truth``)."""
+    """An ONA answer, shaped like robocog's events (``term``, ``truth``): the term as
+    ONA printed it, or read into robocog's term when :meth:`OnaShell.answer` asked."""
 
-    term: str
+    term: str | Term
     truth: Truth
+
+
+def _term(text: str | None) -> Term | None:
+    """ONA's printed term read by robocog's reader, or None when there is none or it
+    cannot be read."""
+    if not text:
+        return None
+    try:
+        return parse_term(text)
+    except NarseseError:
+        return None
 
 
 def ona_knowledge() -> list[str]:
@@ -71,19 +85,24 @@ class OnaShell:
             text=True,
             bufsize=1,
         )
-        self.ops: dict[str, Callable[[str | None], object]] = {}
+        self.ops: dict[str, Callable[[Term | None], object]] = {}
         self._marker = 0
         self.output: Callable[[str], None] | None = None
         self.add_input("*volume=0")
 
-    def register_operation(self, name: str, fn: Callable[[str | None], object]) -> None:
-        """Call ``fn(args)`` when ONA prints that ``name`` was executed."""
+    def register_operation(self, name: str, fn: Callable[[Term | None], object]) -> None:
+        """Call ``fn(args)`` when ONA prints that ``name`` was executed: the printed
+        arguments read as a term, as robocog's reasoner hands them."""
         self.ops[name] = fn
 
     def add_input(self, line: str) -> None:
         """Send one line (Narsese, a number of cycles, or a ``*`` command)."""
         assert self.proc.stdin is not None
         self.proc.stdin.write(line.strip() + "\n")
+
+    def add_sentence(self, sentence: Sentence) -> None:
+        """Send a sentence built by the mind, in ONA's notation."""
+        self.add_input(str(sentence))
 
     def _sync(self) -> list[str]:
         assert self.proc.stdin is not None and self.proc.stdout is not None
@@ -103,7 +122,7 @@ class OnaShell:
                 op, _, args = line.partition(" executed with args")
                 fn = self.ops.get(op.strip())
                 if fn is not None:
-                    fn(args.strip() or None)
+                    fn(_term(args.strip()))
         raise RuntimeError("ONA's process ended")
 
     def cycles(self, n: int) -> None:
@@ -121,6 +140,14 @@ class OnaShell:
                 c = float(line.split("confidence=")[1].split()[0])
                 return Answer(term, Truth(f, c))
         return None
+
+    def answer(self, question: Term) -> Answer | None:
+        """ONA's answer to the question ``question?``, its term read by robocog's reader."""
+        found = self.ask(f"{question}?")
+        if found is None:
+            return None
+        term = _term(str(found.term))
+        return None if term is None else Answer(term, found.truth)
 
     def close(self) -> None:
         """End the process."""

@@ -24,6 +24,7 @@ import math
 import re
 from collections.abc import Generator, Sequence
 from dataclasses import dataclass, field
+from importlib import resources
 
 from robocog.robot.commands import Command, Forward, Look, Outcome, Turn
 from robocog.robot.percepts import Detection, Percept, Pose, Range
@@ -38,6 +39,17 @@ SEARCH_STEP = 15
 SEARCH_TRIES = 12
 
 ACTIONS = ("looking_Qbo", "forward_Qbo", "search_Qbo")
+
+#: the one copy of Figs. 6-8 in robocog, kept with the AgentSpeak interpreter's examples
+PLANS = ("robocog.bdi", "examples/qbo_reach_exit.asl")
+
+
+def reach_exit_program() -> str:
+    """The .asl program: Figs. 6-8 as printed, the sub-goals the paper leaves out, and
+    the initial goal ``!reach_exit``."""
+    package, path = PLANS
+    text = resources.files(package).joinpath(path).read_text(encoding="utf-8")
+    return text + "\n!reach_exit.\n"
 
 
 def degrees(angle: float) -> int:
@@ -430,9 +442,3 @@ class QboBdiMind:
     def done(self) -> bool:
         """True when the agent has no goal left."""
         return self._handle is None and not self.actions.busy and self.agent.is_idle()
-
-
-def qbo_bdi_mind(program: str) -> tuple[QboBdiMind, QboPerception]:
-    """A :class:`QboBdiMind` for ``program`` and the perception it keeps."""
-    mind = QboBdiMind(program)
-    return mind, mind.perception

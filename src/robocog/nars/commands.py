@@ -97,6 +97,17 @@ def _setter(name: str) -> Callable[[NAR, object], None]:
     return run
 
 
+def _flag(what: str) -> Callable[[str, NAR], bool]:
+    """A parser for ``*what=true`` / ``*what=false``."""
+
+    def parse(arg: str, nar: NAR) -> bool:
+        if arg not in ("true", "false"):
+            raise ValueError(f"*{what}= is true or false")
+        return arg == "true"
+
+    return parse
+
+
 def _volume(arg: str, nar: NAR) -> float:
     return parse_float(arg, 0.0, 100.0, "volume")
 
@@ -223,9 +234,16 @@ _TABLE: list[Command] = [
     Command("load", _file, _load, "FILE: load a memory from the memory directory"),
     Command("concurrent", _none, _concurrent, "the next input happens with the last one"),
 ]
+_TABLE.append(
+    Command(
+        "restrictedconceptcreation",
+        _flag("restrictedconceptcreation"),
+        _setter("restricted_concept_creation"),
+        "true/false: derived beliefs and goals only for existing concepts",
+    )
+)
 for _name in (
     "setoparg",
-    "restrictedconceptcreation",
     "setvalue",
     "space",
     "query",

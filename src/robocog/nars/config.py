@@ -73,10 +73,52 @@ class Config:
     allow_var_intro: bool = True
     top_k_declarative_implications: int = 20
     belief_last_used_tolerance: int = 5
+    # ONA 0.9.3's additions (Config.h names); the defaults keep 0.9.2's behaviour and
+    # ``ONA_VERSIONS["0.9.3"]`` switches them to 0.9.3's (see ``Config.for_ona``)
+    #: a goal ``<X --> Y>`` (also with a product ``(X * Y)`` on the left) meets an
+    #: inheritance or similarity belief sharing a side: the other side becomes a subgoal
+    declarative_inheritance_subgoaling: bool = False
+    #: a goal meets an eternal ``<pre ==> goal>`` belief: ``pre!`` is derived, or, when
+    #: ``pre`` has just happened, the goal's event is predicted instead
+    declarative_implications_subgoaling: bool = False
+    #: every cycle, eternal beliefs made or revised in the last
+    #: ``belief_last_used_tolerance`` cycles travel forward through the strongest
+    #: ``top_k_declarative_implications`` ``==>`` beliefs, revising the consequence's
+    #: eternal belief by deduction (ONA 0.9.3's DECLARATIVE_IMPLICATIONS_CYCLE_PROCESS;
+    #: its half for events robocog does with either version)
+    declarative_implications_cycle_process: bool = False
+    #: anticipation for a plain event predicts from the precondition's event as it is,
+    #: neither projected to now nor in sequence with an operation (0.9.3: a precondition
+    #: seen long ago still promises its outcome, so every input counts a failure)
+    anticipation_projects_precondition: bool = True
+    #: a predicted ``(! x)`` outcome is the prediction of ``x`` with the negated truth,
+    #: and counts as its own failure (0.9.3's negation handling in implication tables)
+    anticipation_negated_outcomes: bool = False
+    #: predictions are printed as derived events (ONA 0.9.3's Globals.h: not)
+    print_predictions: bool = True
+    #: ``<a =/> b>`` for simultaneous ``a`` and ``b`` (dt 0) may be induced
+    allow_concurrent_implications: bool = True
+    #: derived beliefs other than temporal implications only enter concepts that exist
+    #: (the shell's ``*restrictedconceptcreation``)
+    restricted_concept_creation: bool = False
     # printing
     print_derivations: bool = False
     print_input: bool = True
     volume_threshold: float = 0.0
+
+    @classmethod
+    def for_ona(cls, version: str = "0.9.2", **overrides: object) -> Config:
+        """The parameters of ONA ``version`` (a key of :data:`ONA_VERSIONS`), then
+        ``overrides``; ValueError for a version robocog does not follow."""
+        try:
+            preset = ONA_VERSIONS[version]
+        except KeyError:
+            known = ", ".join(ONA_VERSIONS)
+            raise ValueError(f"ONA version {version!r} is not one of {known}") from None
+        c = cls()
+        c.update(**preset)
+        c.update(**overrides)
+        return c
 
     def update(self, **overrides: object) -> None:
         """Set parameters by name; unknown names are an error, not a silent typo, and
@@ -89,6 +131,40 @@ class Config:
         """All parameters by name."""
         return asdict(self)
 
+
+#: the ONA versions whose behaviour a reasoner can take (``NAR(ona=...)``, ``robocog nar
+#: --ona``): the parameters that differ from the defaults, which are ONA 0.9.2's. 0.9.3
+#: changed Config.h's MAX_SEQUENCE_LEN (2 -> 3) and TABLE_SIZE (20 -> 120) and added the
+#: switches above; RESTRICTED_CONCEPT_CREATION and ALLOW_CONCURRENT_IMPLICATIONS keep
+#: their values, and ALLOW_ETERNALIZATION's 0 is robocog's ``eternalize_events`` False
+#: in both (docs/nars.md, "ONA 0.9.3", says what is not followed).
+ONA_VERSIONS: dict[str, dict[str, object]] = {
+    "0.9.2": {},
+    "0.9.3": {
+        "max_sequence_len": 3,
+        "table_size": 120,
+        "declarative_inheritance_subgoaling": True,
+        "declarative_implications_subgoaling": True,
+        "declarative_implications_cycle_process": True,
+        "anticipation_projects_precondition": False,
+        "anticipation_negated_outcomes": True,
+        "print_predictions": False,
+    },
+}
+
+#: parameters a memory saved before they existed lacks: such a memory takes the default
+NEWER_PARAMETERS = frozenset(
+    {
+        "declarative_inheritance_subgoaling",
+        "declarative_implications_subgoaling",
+        "declarative_implications_cycle_process",
+        "anticipation_projects_precondition",
+        "anticipation_negated_outcomes",
+        "print_predictions",
+        "allow_concurrent_implications",
+        "restricted_concept_creation",
+    }
+)
 
 _UNIT = (0.0, 1.0)
 #: the accepted range of each numeric parameter (inclusive). Values outside would make a

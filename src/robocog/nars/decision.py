@@ -14,7 +14,9 @@ import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
+from . import goalreasoning
 from . import truth as tf
+from .declarative import declarative_links
 from .event import BELIEF, GOAL, Event, Implication, revised_or_chosen
 from .sensorimotor import add_implication, executable, split_precondition
 from .stamp import fmt, merge
@@ -123,6 +125,8 @@ def _goal(s: Reasoner, g: Event, priority: float, layer: int) -> Decision | None
     cfg = s.config
     now = s.time
     gp = g  # ONA uses the selected goal as it is (its deductions happen "now")
+    if cfg.declarative_inheritance_subgoaling or cfg.declarative_implications_subgoaling:
+        _declarative_goal_reasoning(s, g, priority, layer)  # ONA 0.9.3
     if g.term.op == SEQUENCE:
         _decompose_sequence(s, g.projected(now), priority, layer)
         return None
@@ -144,6 +148,46 @@ def _goal(s: Reasoner, g: Event, priority: float, layer: int) -> Decision | None
         return best
     _subgoals(s, gp, c, priority, layer)
     return None
+
+
+def _declarative_goal_reasoning(s: Reasoner, g: Event, priority: float, layer: int) -> None:
+    """ONA 0.9.3's Cycle_DeclarativeGoalReasoning (see :mod:`.goalreasoning`):
+    subgoals from inheritance beliefs (queued in the first layer) and from
+    ``==>`` beliefs (one layer below this goal's), or predictions of the goal."""
+    cfg = s.config
+    now = s.time
+    mem = s.memory
+    size = cfg.stamp_size
+    if cfg.declarative_inheritance_subgoaling and g.term.op == "-->":
+        beliefs = [c.belief for c in mem.related(g.term) if c.belief is not None]
+        for sub in goalreasoning.inheritance_subgoals(g, beliefs, size):
+            # into the first layer (ONA's layer of input goals: the next cycle's)
+            _derive_goal(s, sub, priority * expectation(sub.projected(now).truth), -1)
+    if not cfg.declarative_implications_subgoaling:
+        return
+    links = []
+    for link in declarative_links(s):
+        lc = mem.find(link)
+        if link.op == "==>" and lc is not None and lc.belief is not None:
+            links.append((link, lc.belief.truth, lc.belief.stamp))
+    if not links:
+        return
+    own = mem.find(g.term)
+    distance = cfg.event_belief_distance
+
+    def recent(pre: Term) -> Event | None:
+        pc = mem.find(pre)
+        b = pc.belief_spike if pc is not None else None
+        return b if b is not None and now - b.occurrence_time < distance else None
+
+    spike = own.goal_spike if own is not None else None
+    goals, predictions = goalreasoning.implication_subgoals(g, spike, links, recent, now, size)
+    for sub in goals:
+        _derive_goal(s, sub, priority * expectation(sub.truth), layer)
+    for pred in predictions:
+        pc = mem.find(pred.term)
+        if pc is not None:
+            pc.predicted_belief = revised_or_chosen(pc.predicted_belief, pred, size)[0]
 
 
 def _decompose_sequence(s: Reasoner, g: Event, priority: float, layer: int) -> None:
@@ -390,6 +434,8 @@ def _derive_goal(s: Reasoner, g: Event, priority: float, layer: int) -> None:
     c = s.memory.find(g.term)
     if c is not None and c.goal_spike is not None and c.goal_spike.same(g):
         return
+    if c is None and s.config.restricted_concept_creation:
+        return  # ONA 0.9.3's *restrictedconceptcreation
     if add_goal(s, g, priority, layer + 1) and shows(s, priority):
         emit(s, "Derived: " + g.line(priority))
 

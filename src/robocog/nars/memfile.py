@@ -23,7 +23,7 @@ from typing import Any, Protocol
 
 from robocog import __version__
 
-from .config import MAX_TIME, Config, checked_value
+from .config import MAX_TIME, NEWER_PARAMETERS, Config, checked_value
 from .event import BELIEF, ETERNAL, GOAL, Event, Implication
 from .memfile_io import FORMAT, MemoryFileError, read_file, zlib_gzip
 from .memfile_io import is_memory_file as is_memory_file  # (for the shell)
@@ -501,7 +501,11 @@ class _Reader:
 
     # --------------------------------------------------------------- pieces
     def config(self, v: object) -> dict[str, object]:
-        names = Config().as_dict().keys()
+        defaults = Config().as_dict()
+        names = defaults.keys()
+        if isinstance(v, dict):
+            # a memory saved before a parameter existed has that parameter's default
+            v = {k: defaults[k] for k in NEWER_PARAMETERS if k not in v} | v
         c = _obj(v, "config", names)
         out: dict[str, object] = {}
         for k in names:

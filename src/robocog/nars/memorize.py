@@ -15,6 +15,7 @@ import math
 
 from . import truth as tf
 from .decision import add_goal
+from .declarative import note_fresh_belief
 from .event import BELIEF, ETERNAL, GOAL, Event, revised_or_chosen
 from .memory import Concept
 from .rules import rejected
@@ -138,6 +139,8 @@ def _process_new_belief(
         belief, revised = revised_or_chosen(c.belief, e, s.config.stamp_size)
     belief.creation_time = now
     c.belief = belief
+    if s.config.declarative_implications_cycle_process:
+        note_fresh_belief(s, c)  # ONA 0.9.3: it may meet ``==>`` beliefs
     if e.term.op in ("==>", "<=>"):
         note_link(s, e.term)
     if s.pending_questions:
@@ -170,7 +173,12 @@ def add_derived(
         return
     op = term.op
     if (op == "==>" or op == "<=>") and not term.has_indep_var:
-        return
+        # ONA refuses this only for conclusions with variables introduced: a ground
+        # ``==>`` (from a conditional deduction) it keeps, which its 0.9.3 pass uses
+        if term.has_var or not cfg.declarative_implications_cycle_process:
+            return
+    if cfg.restricted_concept_creation and term not in s.memory.concepts:
+        return  # ONA 0.9.3's *restrictedconceptcreation
     priority *= 1.0 / math.log2(1.0 + term.complexity)
     if t.c < cfg.min_confidence or priority <= 0.0:
         return
@@ -194,6 +202,13 @@ def report_answer(s: Reasoner, best: Event) -> None:
         )
     for cb in s.answer_cbs:
         cb(best)
+
+
+def on_new_belief(s: Reasoner, c: Concept) -> None:
+    """``c`` got a new eternal belief outside the event path: open questions may
+    have their answer."""
+    if s.pending_questions:
+        check_pending(s, c)
 
 
 def check_pending(s: Reasoner, c: Concept) -> None:

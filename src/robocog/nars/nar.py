@@ -32,10 +32,9 @@ MAX_CYCLES_PER_LINE = 100_000_000
 class NAR(Reasoner):
     """A Non-Axiomatic Reasoner with ONA's behaviour and a bounded memory."""
 
-    def __init__(self, seed: int = 666, **config_overrides: object) -> None:
-        config = Config()
-        config.update(**config_overrides)
-        Reasoner.__init__(self, config, seed)
+    def __init__(self, seed: int = 666, ona: str = "0.9.2", **config_overrides: object) -> None:
+        # ``ona``: whose behaviour to follow, ONA 0.9.2's (the papers') or 0.9.3's
+        Reasoner.__init__(self, Config.for_ona(ona, **config_overrides), seed)
         self.memory.on_remove = partial(sensorimotor.forget_concept, self)
 
     # ------------------------------------------------------------------ state

@@ -15,12 +15,13 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING, TypeVar
 
 from . import truth as tf
+from .declarative import predict_negated
 from .event import BELIEF, ETERNAL, Event, Implication, revised_or_chosen
 from .rules import hol_component_invalid, introduce_implication_variables
 from .spikegroups import group_add, group_keys, group_remove
 from .stamp import fmt, merge, overlap
 from .state import Reasoner, emit, shows
-from .terms import SEQUENCE, TEMPORAL_IMPLICATION, Term, compound
+from .terms import NEGATION, SEQUENCE, TEMPORAL_IMPLICATION, Term, compound
 from .truth import Truth, expectation
 from .unify import apply, unify
 
@@ -154,6 +155,7 @@ def add_implication(
 
 def forget_concept(s: Reasoner, c: Concept) -> None:
     """Drop an evicted concept from the implication, link and time indexes."""
+    s.fresh_beliefs.pop(c, None)
     if c.timed:
         try:
             s.time_index.remove(c)
@@ -361,6 +363,7 @@ def process_belief_event(s: Reasoner, e: Event, priority: float) -> None:
     # temporal: <c =/> e> for recent non-op events, and the sequence (c &/ e)
     tdiff = cfg.max_sequence_timediff
     reach: float = tdiff
+    concurrent = cfg.allow_concurrent_implications
     for c in () if e_is_op else list(s.time_index):  # an operation pairs with none
         b = c.belief_spike
         if (
@@ -372,6 +375,7 @@ def process_belief_event(s: Reasoner, e: Event, priority: float) -> None:
             or c.term.op in ("==>", "<=>")
             or c.term.is_op
             or overlap(b.stamp, e.stamp)
+            or (not concurrent and b.occurrence_time == occ)
         ):
             continue
         t = tf.intersection(tf.projection(b.truth, b.occurrence_time, occ), e.truth)
@@ -465,6 +469,9 @@ def anticipate(s: Reasoner, e: Event) -> None:
         return
     mem = s.memory
     op_truth = Truth(1.0, 0.9)
+    # ONA 0.9.3 predicts a plain event's outcome from the precondition's event as it
+    # is, at the time that event promises it; 0.9.2 from it projected to now
+    as_is = opi == 0 and not cfg.anticipation_projects_precondition
     threshold: float = cfg.anticipation_threshold
     # A precondition whose projected truth is this weak cannot lift a prediction
     # above the threshold (expectation - 1/2 <= c / 2) nor to confidence 0.05, so
@@ -488,6 +495,8 @@ def anticipate(s: Reasoner, e: Event) -> None:
     stamp_size = cfg.stamp_size
     boost = cfg.eternal_input_usage_boost
     showing = shows(s, 1.0)  # printing is rare: test once
+    shows_predictions = cfg.print_predictions
+    negations = cfg.anticipation_negated_outcomes
     evictions = mem.evictions
     post: Concept
     oc: Concept
@@ -531,9 +540,12 @@ def anticipate(s: Reasoner, e: Event) -> None:
                     by_offset = failures.get(spike.truth)
                     if by_offset is None:
                         by_offset = _remember(failures, spike.truth, {})
-                    pre_i = tf.intersection(
-                        tf.projection(spike.truth, spike.occurrence_time, now), op_truth
-                    )
+                    if as_is:
+                        pre_i = spike.truth  # ONA 0.9.3: the event as it happened
+                    else:
+                        pre_i = tf.intersection(
+                            tf.projection(spike.truth, spike.occurrence_time, now), op_truth
+                        )
                     entry = (
                         spike,
                         pre_i.f,
@@ -590,7 +602,7 @@ def anticipate(s: Reasoner, e: Event) -> None:
                 var_sources.clear()
                 groups = None
             oc.use(now, False, boost)
-            occ = now + rdt
+            occ = (spike.occurrence_time if as_is else now) + rdt
             mkey = (spike.stamp, imp.stamp, stamp_size)
             stamp = merged.get(mkey)
             if stamp is None:
@@ -598,11 +610,18 @@ def anticipate(s: Reasoner, e: Event) -> None:
             # (deduction; ``truth_of`` rather than Truth's keyword-capable constructor:
             # predictions are made thousands of times per input)
             pred = Event(outcome, BELIEF, tf.truth_of(pf, pc), stamp, occ, now)
-            if imp.dt > 0.0:
+            if as_is or imp.dt > 0.0:  # (0.9.3: every prediction is one)
                 old = oc.predicted_belief
                 oc.predicted_belief, _ = revised_or_chosen(old, pred, stamp_size, True)
-                if showing:
+                if showing and shows_predictions:
                     _show_prediction(s, old, oc.predicted_belief)
+                if negations and outcome.op == NEGATION:
+                    predict_negated(s, pred, table, imp, by_offset, rdt)
+                    if mem.evictions != evictions:
+                        evictions = mem.evictions
+                        sources.clear()
+                        var_sources.clear()
+                        groups = None
             elif oc.belief_spike is None or occ > oc.belief_spike.occurrence_time:
                 old = oc.belief_spike
                 oc.belief_spike, _ = revised_or_chosen(old, pred, stamp_size, True)

@@ -19,7 +19,13 @@ from types import FrameType
 from typing import TextIO
 
 from . import memfile
-from .config import DEFAULT_MEMORY_BYTES, ONA_CONCEPTS_MAX, concepts_for_memory, parse_size
+from .config import (
+    DEFAULT_MEMORY_BYTES,
+    ONA_CONCEPTS_MAX,
+    ONA_VERSIONS,
+    concepts_for_memory,
+    parse_size,
+)
 from .nar import NAR
 from .narsese import NarseseError
 
@@ -45,6 +51,13 @@ def configure(parser: argparse.ArgumentParser) -> None:
         f"(default {DEFAULT_MEMORY_BYTES >> 20}MB), or 'ona' for ONA's {ONA_CONCEPTS_MAX} "
         "concepts; --set concepts_max=N overrides it",
     )
+    parser.add_argument(
+        "--ona",
+        choices=list(ONA_VERSIONS),
+        default=None,
+        help=f"follow this ONA version's behaviour (default {SHELL_ONA}; a memory given "
+        "to --load keeps its own unless --ona is given)",
+    )
     parser.add_argument("--seed", type=int, default=666, help="random seed (ONA's is 666)")
     parser.add_argument(
         "--set",
@@ -57,6 +70,9 @@ def configure(parser: argparse.ArgumentParser) -> None:
     # only the command line ends the process itself (see the end of ``run``)
     parser.set_defaults(exit_when_done=True)
 
+
+#: the ONA version the shell follows unless ``--ona`` says otherwise (docs/nars.md: why)
+SHELL_ONA = "0.9.3"
 
 _BOOLEANS = {"true": True, "false": False, "yes": True, "no": False, "on": True, "off": False}
 
@@ -182,12 +198,15 @@ def run(args: argparse.Namespace) -> int:
             print(f"robocog nar: {problem}", file=sys.stderr)
             return 2
     try:
+        ona = getattr(args, "ona", None)
         if args.load:
             nar = NAR.load(args.load)
+            if ona is not None:
+                nar.config.update(**ONA_VERSIONS[ona])
             nar.config.update(**overrides)
             nar.memory.capacity = nar.config.concepts_max
         else:
-            nar = NAR(seed=args.seed, **overrides)
+            nar = NAR(seed=args.seed, ona=ona or SHELL_ONA, **overrides)
     except (OSError, ValueError, KeyError) as exc:
         message = exc.args[0] if isinstance(exc, KeyError) and exc.args else exc
         print(f"robocog nar: {message}", file=sys.stderr)

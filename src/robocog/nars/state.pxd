@@ -25,6 +25,7 @@ cdef class Reasoner:
     cdef public dict table_index
     cdef public dict links_by_subject
     cdef public dict general_links
+    cdef public dict fresh_beliefs
     cdef public list goal_layers
     cdef public dict recent_goal_concepts
     cdef public object groups

@@ -72,6 +72,7 @@ class Reasoner:
         "table_index",
         "links_by_subject",
         "general_links",
+        "fresh_beliefs",
         "goal_layers",
         "recent_goal_concepts",
         "groups",
@@ -120,6 +121,9 @@ class Reasoner:
         #: declarative links by subject: ground subject -> {link term}; general ones apart
         self.links_by_subject: dict[Term, dict[Term, None]]
         self.general_links: dict[Term, None]
+        #: concepts whose eternal belief was made or revised lately (oldest first), for
+        #: ONA 0.9.3's declarative pass (``declarative_implications_cycle_process``)
+        self.fresh_beliefs: dict[Concept, None]
         # -- goals
         #: ONA's cycling goal events, one queue per layer
         self.goal_layers: list[EventQueue]
@@ -171,7 +175,8 @@ def clear(s: Reasoner) -> None:
 
 
 def clear_caches(s: Reasoner) -> None:
-    """Empty the sensorimotor caches (after a reset, or when a saved state is taken)."""
+    """Empty the sensorimotor caches and the fresh beliefs of the declarative pass (after
+    a reset, or when a saved state is taken: a memory file keeps neither)."""
     s.groups = None
     s.outcomes = {}
     s.patterns = {}
@@ -180,6 +185,7 @@ def clear_caches(s: Reasoner) -> None:
     s.failures = {}
     s.failures_for = -1.0
     s.merged = {}
+    s.fresh_beliefs = {}
 
 
 def rand(s: Reasoner) -> int:

@@ -6,7 +6,9 @@ Examples::
         --facts "The workbench is a fixed object." \\
         --goal "The washer is on the screw. The bolt is on the washer."
     robocog plan --pddl domain.pddl task01.pddl --json
-    robocog plan --thesis 5.2 --mode first
+
+The planner knows no paper: ``--thesis TABLE`` (a table of Thiella 2021) is added to
+this command by :mod:`robocog.experiments.plan_cli`, beside the tables it reads.
 """
 
 from __future__ import annotations
@@ -37,11 +39,6 @@ def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--goal", default=None, help="sentences of the request")
     parser.add_argument(
         "--pddl", nargs=2, metavar=("DOMAIN", "PROBLEM"), help="plan a PDDL task instead"
-    )
-    parser.add_argument(
-        "--thesis",
-        metavar="TABLE",
-        help="plan one of the thesis's tables (5.2 ... 5.10, BlockB, BlockC)",
     )
     parser.add_argument("--mode", choices=ALL_MODES, default="astar", help="search (default astar)")
     parser.add_argument("--max-iterations", type=int, default=None, help="for --mode bounded")
@@ -103,13 +100,8 @@ def run(args: argparse.Namespace) -> int:
             )
         else:
             objects, facts, goal = list(args.objects), args.facts, args.goal
-            if args.thesis:
-                from robocog.planning.thesis import experiment
-
-                exp = experiment(args.thesis)
-                objects, facts, goal = list(exp.objects), exp.facts, exp.request
             if goal is None:
-                print("robocog plan: give --goal sentences, --pddl or --thesis", file=sys.stderr)
+                print("robocog plan: give --goal sentences or --pddl", file=sys.stderr)
                 return 2
             planner = Planner(max_seconds=args.max_seconds)
             scene = scene_from_english(objects, facts)

@@ -6,7 +6,7 @@ from collections.abc import Callable, Iterator
 
 from robocog.bdi import plans as P
 from robocog.bdi.logic import ActionError
-from robocog.bdi.terms import Literal, Term, is_list, iter_list, term_str
+from robocog.bdi.terms import Literal, Term, list_items, term_str
 from robocog.bdi.unifier import resolve, undo, unify
 
 LIBRARY: dict[str, Callable] = {}
@@ -41,9 +41,10 @@ def need_args(args: tuple, n: int, name: str, most: int | None = None) -> None:
 def arg_list(t: Term, s: dict, name: str) -> list:
     """The items of the list ``t`` is bound to; an ActionError naming ``.name`` otherwise."""
     v = resolve(t, s)
-    if not is_list(v):
+    items = list_items(v)
+    if items is None:
         raise ActionError(f".{name}: {term_str(v)} is not a list")
-    return list(iter_list(v))
+    return list(items)
 
 
 def arg_number(t: Term, s: dict, name: str) -> int | float:

@@ -8,7 +8,7 @@ from robocog.bdi import plans as P
 from robocog.bdi.logic import ActionError, solve
 from robocog.bdi.stdlib.base import belief_event, bind, internal, need_args
 from robocog.bdi.terms import Literal, make_list, sort_key
-from robocog.bdi.unifier import resolve, undo
+from robocog.bdi.unifier import deref, resolve, undo
 
 if TYPE_CHECKING:
     from robocog.bdi.agent import Agent
@@ -17,6 +17,11 @@ if TYPE_CHECKING:
 @internal("findall")
 def _findall(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
     need_args(args, 3, "findall")
+    query = deref(args[1], s)
+    if query.__class__ is Literal and query.functor[0] != "." and query.args:
+        got = ag.bb.collect(query, args[0], s)
+        if got is not None:
+            return bind(make_list(got), args[2], s, trail)
     out = []
     mark = len(trail)
     for _ in solve(ag, args[1], s, trail):

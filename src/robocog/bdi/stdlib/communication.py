@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
+from robocog.bdi.messages import broadcast, send
 from robocog.bdi.signals import DONE
 from robocog.bdi.stdlib.base import LIBRARY, bind, internal, need_args
 from robocog.bdi.terms import NIL, Literal, make_list
@@ -16,16 +17,12 @@ if TYPE_CHECKING:
 
 @internal("send")
 def _send(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Any:
-    from robocog.bdi.messages import send
-
     need_args(args, 3, "send", 5)
     return send(ag, args, s, ctx)
 
 
 @internal("broadcast")
 def _broadcast(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
-    from robocog.bdi.messages import broadcast
-
     need_args(args, 2, "broadcast")
     broadcast(ag, resolve(args[0], s), resolve(args[1], s))
     return True

@@ -18,15 +18,20 @@ from robocog.bdi.stdlib.base import (
     unifies,
 )
 from robocog.bdi.terms import (
+    NIL,
     Cons,
     Nil,
     Term,
     Var,
     is_list,
     iter_list,
+    list_items,
     make_list,
+    max_term,
+    min_term,
     print_str,
     sort_key,
+    sorted_terms,
     term_str,
 )
 from robocog.bdi.unifier import deref, resolve, undo, unify
@@ -40,12 +45,11 @@ def _length(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
     need_args(args, 2, "length")
     v = resolve(args[0], s)
     if v.__class__ is str:
-        n = len(v)
-    elif is_list(v):
-        n = sum(1 for _ in iter_list(v))
-    else:
+        return bind(len(v), args[1], s, trail)
+    items = list_items(v)
+    if items is None:
         return False  # Jason: neither a list nor a string has no length, and says nothing
-    return bind(n, args[1], s, trail)
+    return bind(len(items), args[1], s, trail)
 
 
 @internal("member")
@@ -106,7 +110,7 @@ def _max(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
     items = arg_list(args[0], s, "max")
     if not items:
         return False
-    return bind(max(items, key=sort_key), args[1], s, trail)
+    return bind(max_term(items), args[1], s, trail)
 
 
 @internal("min")
@@ -115,14 +119,17 @@ def _min(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
     items = arg_list(args[0], s, "min")
     if not items:
         return False
-    return bind(min(items, key=sort_key), args[1], s, trail)
+    return bind(min_term(items), args[1], s, trail)
 
 
 @internal("sort")
 def _sort(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
     need_args(args, 2, "sort")
-    items = sorted(arg_list(args[0], s, "sort"), key=sort_key)
-    return bind(make_list(items), args[1], s, trail)
+    v = resolve(args[0], s)
+    items = list_items(v)
+    if items is None:
+        raise ActionError(f".sort: {term_str(v)} is not a list")
+    return bind(make_list(sorted_terms(items), NIL, v.ground), args[1], s, trail)
 
 
 @internal("reverse")

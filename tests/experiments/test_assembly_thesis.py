@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import pytest
 
+from robocog.experiments.assembly_thesis import EXPERIMENTS, WHOLE_ASSEMBLIES, experiment
 from robocog.planning.planner import Planner, scene_from_english
-from robocog.planning.thesis import EXPERIMENTS, WHOLE_ASSEMBLIES, experiment
 from robocog.planning.world import Scene
 
 

@@ -1,16 +1,36 @@
-"""Run one environment with one reasoner for a number of steps, timing the whole run."""
+"""Run one environment with one reasoner for a number of steps, timing the whole run.
+
+A reasoner is anything with the :class:`Reasoner` protocol: the worlds know no engine,
+and the reasoners that run one (robocog's NAR, ONA's shell) are in
+:mod:`robocog.experiments.procedures.reasoners`.
+"""
 
 from __future__ import annotations
 
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING
+from typing import Protocol
 
-from .base import ProcedureEnv
+from .base import Feed, ProcedureEnv
 
-if TYPE_CHECKING:
-    from .reasoners import Reasoner
+
+class Reasoner(Protocol):
+    """What the runner needs from a reasoner."""
+
+    name: str
+
+    def start(self, env: ProcedureEnv, seed: int) -> None:
+        """Prepare a fresh reasoner for ``env`` (operations, babbling, settings)."""
+        ...
+
+    def feed(self, feed: Feed) -> list[str]:
+        """Input the feed in order; return the operations executed meanwhile."""
+        ...
+
+    def close(self) -> None:
+        """Release the reasoner (end a child process)."""
+        ...
 
 
 @dataclass

@@ -1,9 +1,11 @@
-"""Procedure-learning environments after ONA's system tests, and reasoners to drive them.
+"""Procedure-learning worlds after ONA's system tests, and the runner that drives them.
 
 Each environment is a seeded world (``reset(seed)``, ``step()``, ``execute(op)``, a
 success counter) with the rules of one of ONA's ``src/system_tests``; a reasoner is
 anything that takes Narsese lines and cycle counts and reports the operations it
-executed (ONA's shell through pipes, robocog's NAR, or a scripted policy).
+executed (:class:`~robocog.worlds.procedures.runner.Reasoner`). The worlds speak
+Narsese as text and know no engine; the reasoners (ONA's shell through pipes, robocog's
+NAR, a scripted policy) are in :mod:`robocog.experiments.procedures`.
 """
 
 from .alien import Alien
@@ -12,7 +14,7 @@ from .base import Feed, ProcedureEnv, Score
 from .cartpole import Cartpole
 from .pong import Pong, Pong2
 from .robot import Robot
-from .runner import RunResult, run
+from .runner import Reasoner, RunResult, run
 
 #: Environment classes by command-line name.
 ENVIRONMENTS: dict[str, type[ProcedureEnv]] = {
@@ -28,6 +30,7 @@ __all__ = [
     "Pong",
     "Pong2",
     "ProcedureEnv",
+    "Reasoner",
     "Robot",
     "RunResult",
     "Score",

@@ -1,4 +1,8 @@
-"""Reasoners that can drive a procedure-learning environment.
+"""Reasoners that can drive a procedure-learning world (:mod:`robocog.worlds.procedures`).
+
+They live here, not beside the worlds, because one of them runs robocog's NARS engine
+and the worlds know no engine; the worlds' runner drives any object with the
+:class:`~robocog.worlds.procedures.runner.Reasoner` protocol.
 
 A reasoner takes feeds (Narsese lines, one cycle each, and counts of free cycles) and
 returns the operations it executed while digesting them, in order:
@@ -23,9 +27,10 @@ import subprocess
 import threading
 from collections import deque
 from collections.abc import Callable, Sequence
-from typing import Any, Protocol
+from typing import Any
 
-from .base import Feed, ProcedureEnv
+from robocog.worlds.procedures.base import Feed, ProcedureEnv
+from robocog.worlds.procedures.runner import Reasoner
 
 _EXECUTED = re.compile(r"^(\^\S+) executed with args")
 
@@ -36,24 +41,6 @@ class ReasonerUnavailable(RuntimeError):
 
 class ReasonerError(RuntimeError):
     """The reasoner failed during a run (died, timed out, rejected input)."""
-
-
-class Reasoner(Protocol):
-    """What the runner needs from a reasoner."""
-
-    name: str
-
-    def start(self, env: ProcedureEnv, seed: int) -> None:
-        """Prepare a fresh reasoner for ``env`` (operations, babbling, settings)."""
-        ...
-
-    def feed(self, feed: Feed) -> list[str]:
-        """Input the feed in order; return the operations executed meanwhile."""
-        ...
-
-    def close(self) -> None:
-        """Release the reasoner (end a child process)."""
-        ...
 
 
 def setup_commands(env: ProcedureEnv) -> list[str]:
