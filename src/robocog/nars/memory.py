@@ -329,9 +329,12 @@ class Memory:
         batch = max(1, self.capacity // 16)
         # usefulness u/(u+1), u = uses per cycle since the last use, of every group
         now1 = now + 1
-        ranked = [
-            ((u := n / (now1 - last)) / (u + 1.0), g) for (n, last), g in self._groups.items()
-        ]
+        u: float
+        ranked: list = []
+        for key, g in self._groups.items():
+            n, last = key
+            u = n / (now1 - last)
+            ranked.append((u / (u + 1.0), g))
         ranked.sort(key=itemgetter(0))
         # the least useful groups until the batch is full, with every group as useful
         # as the last one taken, so the oldest of those can be picked
