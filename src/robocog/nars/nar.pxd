@@ -5,7 +5,7 @@
 from robocog.nars.terms cimport Term
 from robocog.nars.truth cimport Truth, expectation
 from robocog.nars cimport truth as tf
-from robocog.nars.stamp cimport merge, overlap
+from robocog.nars.stamp cimport has_duplicate, merge, overlap
 from robocog.nars.event cimport Event, Implication, revised_or_chosen
 from robocog.nars.memory cimport Concept
 from robocog.nars.table cimport Table
