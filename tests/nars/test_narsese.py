@@ -126,3 +126,43 @@ def test_hostile_lines_are_errors_not_crashes() -> None:
     for text in ["<" * 3000 + "a", "(" * 300 + "a" + ")" * 300 + ".", "x" * 5000 + ".", "\x00."]:
         with pytest.raises(NarseseError):
             parse_sentence(text)
+
+
+@settings(max_examples=300, deadline=None)
+@given(
+    st.sampled_from(["a", "B7", "n_12", "0", "SELF", "dt", "x1y"]),
+    st.sampled_from(["-->", "<->"]),
+    st.sampled_from(["b", "n3", "_", "42", "see", "at"]),
+    st.sampled_from(".!?"),
+    st.sampled_from(["", " :|:"]),
+)
+def test_plain_statements_read_as_the_grammar_reads_them(
+    s: str, cop: str, p: str, punct: str, tense: str
+) -> None:
+    """``<a --> b>.`` lines skip the parser; they must come out as the grammar makes them."""
+    from robocog.nars import narsese
+
+    line = f"<{s} {cop} {p}>{punct}{tense}"
+    assert narsese._SIMPLE.fullmatch(line) is not None
+    fast = narsese._parse_sentence.__wrapped__(line)
+    slow = narsese._BUILD.transform(narsese._SENTENCE.parse(line))
+    assert fast == slow
+    assert fast.term is slow.term
+    assert str(fast) == str(slow) == line
+
+
+@pytest.mark.parametrize(
+    "line",
+    [
+        "<a --> b>",
+        "<a -->b>.",
+        "<$1 --> b>.",
+        "<a.b --> c>.",
+        "<a --> b>. %1.0;0.9%",
+        "<a --> b>.  :|:",
+    ],
+)
+def test_lines_near_the_plain_shape_go_to_the_parser(line: str) -> None:
+    from robocog.nars import narsese
+
+    assert narsese._SIMPLE.fullmatch(line) is None

@@ -4,5 +4,5 @@
 
 from robocog.nars.event cimport Event
 from robocog.nars.memory cimport Concept
-from robocog.nars.stamp cimport merge, overlap
+from robocog.nars.stamp cimport has_duplicate, merge, overlap
 from robocog.nars.state cimport Reasoner, emit, shows

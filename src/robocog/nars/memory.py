@@ -277,17 +277,18 @@ class Memory:
 
     def conceptualize(self, term: Term, now: int) -> Concept:
         """The concept of ``term``, made (evicting the least useful if full) if missing."""
-        concepts = self.concepts
-        c = concepts.get(term)
-        if c is not None:
-            return c
+        concepts: dict = self.concepts
+        found = concepts.get(term)
+        if found is not None:
+            return found
         if len(concepts) >= self.capacity:
             self._evict(now)
-        c = Concept(self.next_concept_id, term, now, self.operations, self.table_size)
+        c: Concept = Concept(self.next_concept_id, term, now, self.operations, self.table_size)
         self.next_concept_id += 1
         concepts[term] = c
         self._unfiled.append(c)
-        index = self.atom_index
+        index: dict = self.atom_index
+        d: dict
         for a in term.index_names():
             d = index.get(a)
             if d is None:
@@ -299,15 +300,17 @@ class Memory:
     def _refile(self) -> None:
         """Put the concepts made or used since the last call into the group of their
         (use_count, last_used)."""
-        groups = self._groups
-        concepts = self.concepts
-        unfiled = self._unfiled
+        groups: dict = self._groups
+        concepts: dict = self.concepts
+        unfiled: list = self._unfiled
+        c: Concept
+        g: dict
         for c in unfiled:
             if concepts.get(c.term) is not c:
                 continue  # removed meanwhile
-            key = (c.use_count, c.last_used)
             old = c.filed
-            if key != old:
+            if old is None or old[0] != c.use_count or old[1] != c.last_used:
+                key = (c.use_count, c.last_used)
                 if old is not None:
                     _ungroup(groups, old, c)
                 g = groups.get(key)
@@ -326,9 +329,12 @@ class Memory:
         batch = max(1, self.capacity // 16)
         # usefulness u/(u+1), u = uses per cycle since the last use, of every group
         now1 = now + 1
-        ranked = [
-            ((u := n / (now1 - last)) / (u + 1.0), g) for (n, last), g in self._groups.items()
-        ]
+        u: float
+        ranked: list = []
+        for key, g in self._groups.items():
+            n, last = key
+            u = n / (now1 - last)
+            ranked.append((u / (u + 1.0), g))
         ranked.sort(key=itemgetter(0))
         # the least useful groups until the batch is full, with every group as useful
         # as the last one taken, so the oldest of those can be picked
@@ -354,10 +360,13 @@ class Memory:
     def _remove_all(self, cs: list[Concept] | tuple[Concept, ...]) -> None:
         """Forget the concepts ``cs`` in order (one loop, so an eviction batch of
         hundreds pays the attribute look-ups once)."""
-        concepts = self.concepts
-        index = self.atom_index
-        groups = self._groups
+        concepts: dict = self.concepts
+        index: dict = self.atom_index
+        groups: dict = self._groups
         on_remove = self.on_remove
+        c: Concept
+        gone: Concept
+        d: dict
         for c in cs:
             gone = concepts.pop(c.term, None)
             if gone is not None:

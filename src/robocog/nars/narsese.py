@@ -9,6 +9,7 @@ so a person typing into the shell sees where the line went wrong.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 from functools import lru_cache
 
@@ -246,10 +247,22 @@ def parse_sentence(text: str, line: int = 1) -> Sentence:
         raise NarseseError(line, exc.column, exc.message) from None
 
 
+#: the commonest line, ``<a --> b>.`` between two plain names (no variable, no dot), with
+#: ``:|:`` or nothing after it: read without the parser, into the same sentence the
+#: grammar makes of it (a taxonomy of 10,000 such lines spent a twentieth of its time
+#: in the parser)
+_SIMPLE = re.compile(r"<([A-Za-z0-9_]+) (-->|<->) ([A-Za-z0-9_]+)>([.!?])( :\|:)?")
+
+
 @lru_cache(maxsize=4096)
 def _parse_sentence(text: str) -> Sentence:
     if len(text) > MAX_LINE:
         raise NarseseError(1, MAX_LINE + 1, f"line longer than {MAX_LINE} characters")
+    simple = _SIMPLE.fullmatch(text)
+    if simple is not None:
+        s, cop, p, punct, tense = simple.groups()
+        term = compound(cop, (atom(s), atom(p)))
+        return Sentence(term, punct, tense[1:] if tense else None, None, None)
     try:
         tree = _SENTENCE.parse(text)
         return _BUILD.transform(tree)  # type: ignore[no-any-return]

@@ -4,7 +4,7 @@
 
 from robocog.nars.terms cimport Term
 from robocog.nars.truth cimport expectation
-from robocog.nars.stamp cimport merge, overlap
+from robocog.nars.stamp cimport has_duplicate, merge, overlap
 from robocog.nars.event cimport Event, Implication
 from robocog.nars.memory cimport Concept
 from robocog.nars.unify cimport unify

@@ -3,6 +3,9 @@
 
 cimport cython
 
+@cython.locals(la=Py_ssize_t, lb=Py_ssize_t, n=Py_ssize_t, i=Py_ssize_t)
 cpdef tuple merge(tuple a, tuple b, long size=*)
 @cython.locals(x=long, y=long)
 cpdef bint overlap(tuple a, tuple b)
+@cython.locals(n=Py_ssize_t, i=Py_ssize_t, j=Py_ssize_t, x=long)
+cpdef bint has_duplicate(tuple a)

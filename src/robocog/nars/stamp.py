@@ -20,11 +20,18 @@ def merge(a: Stamp, b: Stamp, size: Size = STAMP_SIZE) -> Stamp:
         return a if len(a) <= size else a[:size]
     if not a:
         return b if len(b) <= size else b[:size]
-    n = min(len(a), len(b))
-    out = [0] * (2 * n)
-    out[0::2] = a[:n]
-    out[1::2] = b[:n]
-    out += a[n:] or b[n:]  # the longer stamp's tail follows the interleaved part
+    la = len(a)
+    lb = len(b)
+    n = la if la < lb else lb
+    # one pass, stopping once ``size`` ids are taken (compiled: C indexes, see stamp.pxd)
+    out: list = []
+    i = 0
+    while i < n and len(out) < size:
+        out.append(a[i])
+        out.append(b[i])
+        i += 1
+    if len(out) < size:
+        out += a[n:] if la > n else b[n:]  # the longer stamp's tail follows
     return tuple(out[:size])
 
 
@@ -43,7 +50,15 @@ def overlap(a: Stamp, b: Stamp) -> bool:
 
 def has_duplicate(a: Stamp) -> bool:
     """True if one id occurs twice (the sentence double-counts its own evidence)."""
-    return len(set(a)) != len(a)
+    # at most ``STAMP_SIZE`` ids: pairwise comparisons, compiled with C longs, cost less
+    # than building a set
+    n = len(a)
+    for i in range(1, n):
+        x = a[i]
+        for j in range(i):
+            if a[j] == x:
+                return True
+    return False
 
 
 def fmt(a: Stamp) -> str:

@@ -20,5 +20,7 @@ cdef class Term:
     cdef public object _names
     cdef public object hol
 
+    cpdef tuple index_names(self)
+
 cpdef Term compound(str op, tuple args)
 cpdef Term substitute(Term t, dict mapping)

@@ -131,6 +131,9 @@ class Term:
         got = self._names
         if got is None:
             args = self.args
+            a: Term
+            b: Term
+            x: Term
             if len(args) == 2 and args[0].op is None and args[1].op is None:
                 a, b = args  # ``<a --> b>``: the most common shape, no walk needed
                 if a.is_var:
@@ -217,16 +220,17 @@ def _sweep() -> None:
     runs (interpreted, the call's argument is one more; compiled, it is not), so it is
     measured on a probe entry that only the table holds, visited first.
     """
-    table = _TABLE
+    table: dict = _TABLE
     table[_PROBE_KEY] = Term.__new__(Term)  # newest: the first one visited
-    keys = list(table)
-    pop = keys.pop
+    keys: list = list(table)
+    # the terms beside their keys, read without hashing a key per term
+    terms: list = list(table.values())
     refs = sys.getrefcount
     t = None
     alone = -1
     while keys:
-        k = pop()  # the previous key and term are released here and on the next line
-        t = table[k]
+        k = keys.pop()  # the previous key and term are released here and on the next line
+        t = terms.pop()
         n = refs(t)
         if alone < 0:
             alone = n  # the probe's count
@@ -248,10 +252,11 @@ def interned_count() -> int:
 def atom(name: str) -> Term:
     """The interned atom ``name`` (names, ``^ops``, ``$1``/``#1``/``?1`` variables)."""
     key = (None, name)
-    t = _TABLE.get(key)
-    if t is not None:
-        return t
-    t = Term.__new__(Term)
+    table: dict = _TABLE
+    found = table.get(key)
+    if found is not None:
+        return found
+    t: Term = Term.__new__(Term)
     t.op = None
     t.name = name
     t.args = ()
@@ -270,16 +275,17 @@ def atom(name: str) -> Term:
     t.n_temp = 0
     t._names = None
     t.hol = None
-    if len(_TABLE) >= _SWEEP_AT[0]:
+    if len(table) >= _SWEEP_AT[0]:
         _sweep()
-    _TABLE[key] = t
+    table[key] = t
     return t
 
 
 def compound(op: str, args: Components) -> Term:
     """The interned compound with connector ``op`` over ``args``."""
     key = (op, args)
-    t = _TABLE.get(key)
+    table: dict = _TABLE
+    t = table.get(key)
     if t is not None:
         return t
     return _make_compound(key, op, args)
@@ -287,7 +293,9 @@ def compound(op: str, args: Components) -> Term:
 
 def _make_compound(key: tuple[object, ...], op: str, args: tuple[Term, ...]) -> Term:
     """Build and intern a new compound; every per-term property is computed once here."""
-    t = Term.__new__(Term)
+    t: Term = Term.__new__(Term)
+    a: Term
+    b: Term
     t.op = op
     t.name = None
     t.args = args
@@ -352,9 +360,10 @@ def _make_compound(key: tuple[object, ...], op: str, args: tuple[Term, ...]) -> 
     t.cache = None  # per-term results of pure checks (conclusion filters)
     t._names = None
     t.hol = None
-    if len(_TABLE) >= _SWEEP_AT[0]:
+    table: dict = _TABLE
+    if len(table) >= _SWEEP_AT[0]:
         _sweep()
-    _TABLE[key] = t
+    table[key] = t
     return t
 
 
