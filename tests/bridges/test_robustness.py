@@ -210,6 +210,7 @@ class _Failing:
         return getattr(self.reader, name)
 
 
+@pytest.mark.slow
 def test_a_sim_killed_mid_goal_halts_the_robot_and_the_bridge_carries_on_when_it_returns(
     tmp_path: Any,
 ) -> None:

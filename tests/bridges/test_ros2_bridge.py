@@ -12,6 +12,9 @@ import pytest
 
 from tests.bridges.procs import Child, bridge_argv
 
+#: every test here starts a robot and a bridge as processes and waits on them over DDS
+pytestmark = pytest.mark.slow
+
 WATCHDOG = 1.0
 #: scheduling slack on a loaded two-core machine, on top of the watchdog time
 SLACK = 1.5

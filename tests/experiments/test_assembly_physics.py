@@ -19,6 +19,7 @@ pytest.importorskip("imageio", reason="the physics extra (imageio) is not instal
 from robocog.experiments import assembly  # noqa: E402
 
 
+@pytest.mark.slow
 def test_table_5_2_runs_physically_with_a_report_a_film_and_a_key_frame(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:

@@ -129,6 +129,7 @@ def _without_timings(doc: object) -> object:
     return doc
 
 
+@pytest.mark.slow
 def test_two_demos_give_the_same_report_apart_from_timings(tmp_path: Path) -> None:
     """Nothing in a result depends on the wall clock: same arguments, same report."""
     pages, docs = [], []
@@ -157,6 +158,7 @@ def test_detection_and_grasp_can_be_set_apart_from_the_light() -> None:
         GarbageConfig(detection=1.5)
 
 
+@pytest.mark.slow
 def test_nars_ranks_the_hotspots_first_after_a_few_rounds() -> None:
     """A small field (six checkpoints, two hotspots, six objects a round) for six rounds:
     the order comes from NARS's evidence for ``<<({SELF} * {p}) --> at> =/> <trash -->

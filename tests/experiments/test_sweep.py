@@ -55,6 +55,7 @@ def test_a_sweep_is_every_combination_and_refuses_what_the_study_lacks() -> None
         check(SweepSpec("garbage", (), ("cortex",), 1, 1))
 
 
+@pytest.mark.slow
 def test_local_pool_and_this_process_give_the_same_table(tmp_path: Path) -> None:
     spec = _spec(("bdi", "nars"), runs=1)
     # missions of a third of a battery charge: what is compared is the table, not the length
@@ -67,6 +68,7 @@ def test_local_pool_and_this_process_give_the_same_table(tmp_path: Path) -> None
     assert all(0 <= r["collected"] <= r["objects"] for r in here)
 
 
+@pytest.mark.slow
 def test_a_local_ray_cluster_gives_the_same_table(tmp_path: Path) -> None:
     pytest.importorskip("ray")
     spec = _spec(("bdi",), runs=2)

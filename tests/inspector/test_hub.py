@@ -153,6 +153,7 @@ def test_the_experiments_hand_their_loops_to_the_inspector() -> None:
     assert ins.history.latest().world["done"]
 
 
+@pytest.mark.slow
 def test_nars_views_show_the_checkpoint_hypotheses_as_they_form() -> None:
     ins = Inspector(capacity=10_000, min_mind_interval=0.0, mind_budget=1.0)
     learn_accumulation(default_minds(["nars"])[0], GarbageConfig(), 2, 2, watch=ins.watcher())

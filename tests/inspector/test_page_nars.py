@@ -5,6 +5,8 @@ from __future__ import annotations
 import re
 from typing import Any
 
+import pytest
+
 from robocog.experiments.garbage import MindSpec, default_minds, learn_accumulation
 from robocog.worlds.garbage import GarbageConfig
 from tests.inspector.conftest import browser
@@ -60,6 +62,7 @@ def test_the_robot_moves_on_the_map_and_pause_and_step_work(live, page, screensh
     screenshot(page)
 
 
+@pytest.mark.slow
 @browser
 def test_a_checkpoint_hypothesis_gains_confidence_over_rounds(live, page, screenshot) -> None:
     lv = live(rounds(3))
@@ -101,6 +104,7 @@ def test_a_checkpoint_hypothesis_gains_confidence_over_rounds(live, page, screen
     screenshot(page)
 
 
+@pytest.mark.slow
 @browser
 def test_a_question_typed_in_the_console_gets_its_answer(live, page, screenshot) -> None:
     lv = live(rounds(1))

@@ -110,6 +110,7 @@ def test_beyond_loopback_every_request_needs_the_token() -> None:
     assert InspectorServer(ins).token is None
 
 
+@pytest.mark.slow
 def test_a_browser_that_stops_reading_never_holds_up_the_robot() -> None:
     from robocog.inspector.server import InspectorServer
 

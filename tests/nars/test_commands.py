@@ -250,6 +250,7 @@ _ENGINES = ["pure"] + (["compiled"] if nars.ENGINE == "compiled" else [])
 
 # two shell processes an example: the property itself has 60 examples in process above,
 # so a few here show that the shell, on each engine, keeps it too
+@pytest.mark.slow
 @pytest.mark.parametrize("engine", _ENGINES)
 @settings(max_examples=5, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(junk=_junk)

@@ -101,6 +101,7 @@ def _shell(text: str, pure: bool, memory_dir: Path | None = None) -> str:
     return run.stdout
 
 
+@pytest.mark.slow
 @pytest.mark.skipif(nars.ENGINE != "compiled", reason=f"engine in use: {nars.ENGINE}")
 def test_compiled_and_python_engines_print_the_same() -> None:
     text = _workload()
@@ -109,6 +110,7 @@ def test_compiled_and_python_engines_print_the_same() -> None:
     assert outs[0] == outs[1]
 
 
+@pytest.mark.slow
 @pytest.mark.skipif(nars.ENGINE != "compiled", reason=f"engine in use: {nars.ENGINE}")
 def test_each_engine_continues_from_the_others_save(tmp_path: Path) -> None:
     lines = _workload().splitlines()

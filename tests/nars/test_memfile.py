@@ -48,7 +48,13 @@ def _run(lines: list[str], cut: int | None, tmp: Path, **config: object) -> list
     return out
 
 
-@pytest.mark.parametrize("config", [{}, {"concepts_max": 48, "cycling_belief_events_max": 8}])
+@pytest.mark.parametrize(
+    "config",
+    [
+        pytest.param({}, marks=pytest.mark.slow),
+        {"concepts_max": 48, "cycling_belief_events_max": 8},
+    ],
+)
 def test_the_continuation_after_save_and_load_equals_the_uninterrupted_run(
     tmp_path: Path, config: dict[str, object]
 ) -> None:

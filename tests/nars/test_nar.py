@@ -118,6 +118,7 @@ def test_random_stream_keeps_memory_within_capacity() -> None:
     assert set(nar.time_index) <= live
 
 
+@pytest.mark.slow
 def test_forgotten_concepts_are_released_under_an_endless_event_stream() -> None:
     """Evicted concepts must not stay reachable from any index: recurring preconditions
     into many consequences overflow the small implication tables, which is where a

@@ -25,7 +25,7 @@ from robocog.sim.field import column_of, fence_ranges  # noqa: E402
 from robocog.sim.ros2 import GarbageRobot  # noqa: E402
 from robocog.worlds.garbage import GarbageConfig, GarbageField  # noqa: E402
 from tests.bridges.conftest import random_domain  # noqa: E402
-from tests.bridges.procs import child_env, wait_until  # noqa: E402
+from tests.bridges.procs import Child, child_env, wait_until  # noqa: E402
 
 
 def test_the_scan_is_cast_against_the_fence() -> None:
@@ -120,6 +120,7 @@ def test_a_stalled_base_makes_goto_fail_after_its_time_out() -> None:
 # -- whole missions: the sim in this process, the bridge (the mind) in another ----------------
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("mind", ["nars", "bdi"])
 def test_a_mission_over_ros2_collects_what_the_same_mission_collects_in_process(
     mind: str,
@@ -142,47 +143,50 @@ def test_a_mission_over_ros2_collects_what_the_same_mission_collects_in_process(
     assert remote.sim_seconds == pytest.approx(local.sim_seconds)
 
 
+@pytest.mark.slow
 def test_the_two_commands_of_the_readme_collect_trash() -> None:
     """``robocog sim garbage --ros2 --loopback`` and ``robocog bridge ros2 --loopback``,
-    each a process of its own, as a user starts them (fast: --rate 40)."""
+    each a process of its own, as a user starts them (fast: --rate 40).
+
+    The sim is stopped (SIGTERM, as Ctrl-C would) once the bridge has reached a
+    checkpoint and dropped what it picked, a few tens of simulated seconds in, rather
+    than at the end of the mission; it then reports what the field counted."""
     domain = str(random_domain())
     env = child_env({"CYCLONEDDS_URI": LOOPBACK_URI})
     base = [sys.executable, "-m", "robocog.cli"]
-    sim = subprocess.Popen(
+    sim = Child(
         [*base, "sim", "garbage", "--ros2", "--loopback", "--domain", domain, "--seed", "3"]
         + ["--rate", "40"],
-        stdout=subprocess.PIPE,
-        stderr=subprocess.PIPE,
-        text=True,
-        env=env,
+        env,
+        "sim",
     )
-    bridge = subprocess.Popen(
+    bridge = Child(
         [*base, "bridge", "ros2", "--loopback", "--domain", domain, "--mind", "bdi", "-v"],
-        stdout=subprocess.DEVNULL,
-        stderr=subprocess.PIPE,
-        text=True,
-        env=env,
+        env,
+        "bridge",
     )
     try:
-        out, err = sim.communicate(timeout=120)
+
+        def cleaned() -> bool:
+            err = bridge.stderr_text()
+            return "GoTo(place='next') -> succeeded" in err and "Drop() -> succeeded" in err
+
+        wait_until(lambda: cleaned() or sim.proc.poll() is not None, 120)
+        sim.stop(timeout=30)
     finally:
-        bridge.terminate()
-        try:
-            _, bridge_err = bridge.communicate(timeout=30)
-        except subprocess.TimeoutExpired:
-            # it stops in under a second on a quiet machine; on a loaded one a stop that
-            # comes while it is still starting can take longer: what it wrote is enough
-            bridge.kill()
-            _, bridge_err = bridge.communicate(timeout=30)
-        if sim.poll() is None:
-            sim.kill()
-    assert sim.returncode == 0, err[-2000:]
+        # it stops in under a second on a quiet machine; on a loaded one a stop that
+        # comes while it is still starting can take longer: what it wrote is enough
+        bridge.stop(timeout=30)
+        sim.stop()
+    out, bridge_err = "".join(sim.lines), bridge.stderr_text()
+    assert sim.proc.returncode == 0, sim.stderr_text()[-2000:]
     collected = int(out.split("collected ")[1].split(" of ")[0])
     assert collected >= 1, out + bridge_err[-3000:]
     assert "GoTo(place='next') -> succeeded" in bridge_err
     assert "unknown place" not in bridge_err
 
 
+@pytest.mark.slow
 def test_a_recorded_mission_replays_to_the_same_decisions(tmp_path: Path) -> None:
     """``robocog replay``: the recorded percepts, fed to a fresh mind of the same seed,
     give the decisions recorded in every frame."""

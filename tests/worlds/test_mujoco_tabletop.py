@@ -89,6 +89,7 @@ def fresh_world() -> MujocoTabletop:
     w.close()
 
 
+@pytest.mark.slow
 def test_the_arm_stacks_one_cube_on_another_and_the_camera_sees_it_on_top(
     fresh_world: MujocoTabletop,
 ) -> None:
@@ -115,6 +116,7 @@ def test_the_arm_stacks_one_cube_on_another_and_the_camera_sees_it_on_top(
     assert clamp == []
 
 
+@pytest.mark.slow
 def test_planner_mind_sees_a_cube_moved_onto_its_target_and_replans_physically() -> None:
     from robocog.experiments.assembly_thesis import experiment
     from robocog.minds.planner_mind import PlannerMind
