@@ -80,7 +80,6 @@ print("second-committed", flush=True)
 """
 
 
-@pytest.mark.slow
 def test_killed_store_leaves_the_previous_state_readable(tmp_path: Path) -> None:
     db = tmp_path / "kill.db"
     proc = subprocess.Popen(
