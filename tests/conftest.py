@@ -1,11 +1,13 @@
-"""What every test shares: the long tests are started first.
+"""What every test shares: the order in which pytest-xdist hands tests to its workers.
 
-``python -m pytest -n auto`` hands tests to its workers in collection order, a share at
-the start and the rest as workers free up. A long test handed out near the end keeps
-its worker busy while the others have run out of work; handed out first, it runs while
-the others work through the short tests, which then fill in the end evenly. So the
-tests marked ``slow`` (a few seconds or more each) are moved to the front, keeping
-their order among themselves and leaving every other test where it was.
+``python -m pytest -n auto`` runs the tests in worker processes. Its default (``load``)
+scheduling hands each worker a block of consecutive tests at the start (a quarter of
+its share) and more blocks as it runs low; a worker that drew the long tests then works
+on while the others, having run out, wait. Here the tests marked ``slow`` (a few seconds
+or more each) come first, and tests are handed out one at a time (as ``--maxschedchunk
+1`` would), so each worker takes the next test when it is free: the long tests are
+spread over the workers from the start and the short ones even out the end. The order
+is a stable sort, the same in every worker, as pytest-xdist requires.
 """
 
 from __future__ import annotations
@@ -13,7 +15,13 @@ from __future__ import annotations
 import pytest
 
 
+def pytest_configure(config: pytest.Config) -> None:
+    """One test at a time to each free worker, unless ``--maxschedchunk`` says otherwise."""
+    if hasattr(config.option, "maxschedchunk") and config.option.maxschedchunk is None:
+        config.option.maxschedchunk = 1
+
+
 @pytest.hookimpl(trylast=True)
 def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
-    """The ``slow`` tests first; a stable sort, so the same order in every worker."""
+    """The ``slow`` tests first, each group keeping its order."""
     items.sort(key=lambda item: item.get_closest_marker("slow") is None)
