@@ -148,9 +148,10 @@ def test_the_two_commands_of_the_readme_collect_trash() -> None:
     """``robocog sim garbage --ros2 --loopback`` and ``robocog bridge ros2 --loopback``,
     each a process of its own, as a user starts them (fast: --rate 40).
 
-    The sim is stopped (SIGTERM, as Ctrl-C would) once the bridge has reached a
-    checkpoint and dropped what it picked, a few tens of simulated seconds in, rather
-    than at the end of the mission; it then reports what the field counted."""
+    Both are stopped (SIGTERM) once the bridge has reached a checkpoint and dropped what
+    it picked, a few tens of simulated seconds in, rather than at the end of the
+    mission: the bridge first, while the sim still answers the goal it may be waiting
+    on, then the sim, which reports what the field counted."""
     domain = str(random_domain())
     env = child_env({"CYCLONEDDS_URI": LOOPBACK_URI})
     base = [sys.executable, "-m", "robocog.cli"]
@@ -172,12 +173,11 @@ def test_the_two_commands_of_the_readme_collect_trash() -> None:
             return "GoTo(place='next') -> succeeded" in err and "Drop() -> succeeded" in err
 
         wait_until(lambda: cleaned() or sim.proc.poll() is not None, 120)
-        sim.stop(timeout=30)
     finally:
         # it stops in under a second on a quiet machine; on a loaded one a stop that
         # comes while it is still starting can take longer: what it wrote is enough
         bridge.stop(timeout=30)
-        sim.stop()
+        sim.stop(timeout=30)
     out, bridge_err = "".join(sim.lines), bridge.stderr_text()
     assert sim.proc.returncode == 0, sim.stderr_text()[-2000:]
     collected = int(out.split("collected ")[1].split(" of ")[0])
