@@ -85,8 +85,12 @@ def _extensions() -> list[Extension]:
     if "editable_wheel" in sys.argv and _compiled_is_current():
         print("robocog: the compiled NARS engine is current; it is not built again")
         return []
-    print("robocog: compiling the NARS engine with Cython (a few minutes; set")
-    print("ROBOCOG_PURE_PYTHON=1 to skip it and run the pure-Python engine)")
+    print(
+        f"robocog: compiling the NARS engine ({len(ENGINE_MODULES)} modules of robocog/nars) "
+        "with Cython; this takes a few minutes, and a reinstall with the engine unchanged "
+        "does not compile it again (set ROBOCOG_PURE_PYTHON=1 to skip it and run the "
+        "pure-Python engine)"
+    )
     try:
         from Cython.Build import cythonize
     except ImportError:
