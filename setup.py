@@ -39,6 +39,8 @@ ENGINE_MODULES = (
     "spikegroups",
     "sensorimotor",
     "decision",
+    "goalreasoning",
+    "declarative",
     "memorize",
     "inference",
     "questions",
