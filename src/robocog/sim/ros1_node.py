@@ -24,6 +24,7 @@ When the field's mission is over, or on SIGTERM or SIGINT, it prints one line,
 
 import argparse
 import math
+import os
 import signal
 import sys
 import threading
@@ -35,6 +36,9 @@ from robocog.robot.commands import Drop, Forward, GoTo, Pick, Turn
 from robocog.robot.percepts import Detection, Gripper, Pose
 from robocog.sim.field import BEAMS, RANGE_MAX, column_of, fence_ranges, target_place
 from robocog.worlds.garbage import GarbageConfig, GarbageField
+
+#: how long rospy's shutdown may take once the field has reported
+SHUTDOWN_SECONDS = 5.0
 
 
 class Ros1GarbageRobot:
@@ -230,12 +234,22 @@ def main() -> int:
         robot.run()
     finally:
         robot.stop.set()
-        robot.rospy.signal_shutdown("the mission is over")
+    # the report first: it is the field's own count, whatever rospy's shutdown does next
     print(
         f"robocog sim: collected {world.collected()} of {len(world.objects())} objects in "
         f"{world.time():.0f} simulated seconds ({robot.frames} frames, {robot.goals} goals)",
         flush=True,
     )
+    # rospy's shutdown joins its connections' threads, which a peer that went away
+    # mid-request can hold; a sim told to stop ends within SHUTDOWN_SECONDS regardless
+    closing = threading.Thread(
+        target=robot.rospy.signal_shutdown, args=("the mission is over",), daemon=True
+    )
+    closing.start()
+    closing.join(SHUTDOWN_SECONDS)
+    if closing.is_alive():
+        sys.stderr.flush()
+        os._exit(0)
     return 0
 
 
