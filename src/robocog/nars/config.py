@@ -249,7 +249,8 @@ ENGINE_BYTES = 160 << 20
 #: the shell's budget when none is given: room for 49,152 concepts, enough for the
 #: taxonomy's 10,000 links (which need about 12,000)
 DEFAULT_MEMORY_BYTES = 256 << 20
-#: ONA 0.9.2's concept capacity (``--memory ona``)
+#: ONA's concept capacity of 0.9.3 (``--memory ona``); the v0.9.2 tag's Config.h has 16,384,
+#: robocog's 0.9.2 defaults keep 4,096, the capacity its recorded traces were made with
 ONA_CONCEPTS_MAX = 4096
 _UNITS = {"": 1, "b": 1, "k": 1 << 10, "kb": 1 << 10, "m": 1 << 20, "mb": 1 << 20}
 _UNITS |= {"g": 1 << 30, "gb": 1 << 30, "t": 1 << 40, "tb": 1 << 40}
