@@ -299,3 +299,19 @@ def test_shell_settings_accept_boolean_words_and_refuse_nonsense() -> None:
     assert bad.returncode == 2
     assert "not a number or true/false" in bad.stderr
     assert "Traceback" not in bad.stderr
+
+
+def test_a_reasoner_at_the_end_of_its_clock_refuses_sentences_from_text_and_from_terms() -> None:
+    from robocog.nars.config import MAX_TIME
+    from robocog.nars.narsese import parse_sentence
+
+    nar = NAR()
+    nar.time = MAX_TIME
+    for give in (
+        lambda: nar.add_input("<a --> b>. :|:"),
+        lambda: nar.add_sentence(parse_sentence("<a --> b>. :|:")),
+        lambda: nar.add_sentence(parse_sentence("<a --> b>?")),
+    ):
+        with pytest.raises(NarseseError, match="reached"):
+            give()
+    assert nar.time == MAX_TIME and nar.stats["inputs"] == 0

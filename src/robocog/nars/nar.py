@@ -140,13 +140,12 @@ class NAR(Reasoner):
         if line.startswith("*"):
             self._command(line)
             return
-        s = parse_sentence(line)
-        if self.time >= MAX_TIME:
-            raise NarseseError(1, 1, f"the reasoner's time has reached {MAX_TIME}; *reset")
-        self.add_sentence(s)
+        self.add_sentence(parse_sentence(line))
 
     def add_sentence(self, s: Sentence) -> None:
         """Enter a parsed sentence: beliefs and goals run one cycle, questions are answered."""
+        if self.time >= MAX_TIME:
+            raise NarseseError(1, 1, f"the reasoner's time has reached {MAX_TIME}; *reset")
         if s.punctuation == "?":
             questions.answer(self, s.term, s.tense)
             return
