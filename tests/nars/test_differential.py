@@ -16,6 +16,7 @@ import subprocess
 import pytest
 
 from robocog.nars import NAR
+from tests.nars.test_nar import run_lines
 
 ONA = shutil.which("NAR")
 pytestmark = pytest.mark.skipif(ONA is None, reason="ONA (pip install ona==0.9.2) not found")
@@ -50,13 +51,7 @@ def _ona(lines: list[str]) -> list[str]:
 
 
 def _ours(lines: list[str]) -> list[str]:
-    nar = NAR()
-    out: list[str] = []
-    nar.output = out.append
-    nar.config.print_derivations = True
-    for line in lines:
-        nar.add_input(line)
-    return out
+    return run_lines(NAR(), lines)
 
 
 @pytest.mark.parametrize("seed", [1, 2, 3])

@@ -14,17 +14,12 @@ from robocog.nars import NAR, memfile
 from robocog.nars.config import NEWER_PARAMETERS, ONA_VERSIONS, Config
 from robocog.nars.goalreasoning import inheritance_subgoal
 from robocog.nars.narsese import parse_term
+from tests.nars.test_nar import run_lines
 
 
 def run(lines: list[str], ona: str = "0.9.3", **config: object) -> list[str]:
     """The shell's output lines for ``lines`` (derivations shown, as the shell does)."""
-    nar = NAR(ona=ona, **config)
-    out: list[str] = []
-    nar.output = out.append
-    nar.config.print_derivations = True
-    for line in lines:
-        nar.add_input(line)
-    return out
+    return run_lines(NAR(ona=ona, **config), lines)
 
 
 def answers(out: list[str]) -> list[str]:
