@@ -9,6 +9,7 @@ from robocog.nars cimport truth as tf
 from robocog.nars.unify cimport apply, unify
 from robocog.nars.state cimport Reasoner
 from robocog.nars.memorize cimport add_derived
+from robocog.nars.rules cimport variable_forms
 
 cdef class Derivation:
     cdef public Reasoner state

@@ -9,15 +9,10 @@ from __future__ import annotations
 
 from . import truth as tf
 from .memorize import add_derived
-from .rules import (
-    RuleTable,
-    hol_component_invalid,
-    introduce_conjunction_variables,
-    introduce_implication_variables,
-)
+from .rules import RuleTable, variable_forms
 from .stamp import Stamp
 from .state import Reasoner
-from .terms import CONJUNCTION, EQUIVALENCE, IMPLICATION, TEMPORAL_IMPLICATION, Term, compound
+from .terms import CONJUNCTION, EQUIVALENCE, IMPLICATION, Term, compound
 from .truth import Truth
 from .unify import apply, unify
 
@@ -60,22 +55,9 @@ class Derivation:
         if not var_intro:  # the common case
             add_derived(self.state, term, t, self.stamp, self.occurrence, priority)
             return
-        op = term.op
-        if op in (IMPLICATION, EQUIVALENCE, TEMPORAL_IMPLICATION):
-            for ext in (True, False):
-                v = introduce_implication_variables(term, ext)
-                if v is not None and v is not term and not hol_component_invalid(v):
-                    if v.op in (IMPLICATION, EQUIVALENCE) and not v.has_indep_var:
-                        continue
-                    add_derived(self.state, v, t, self.stamp, self.occurrence, priority)
-            return
-        if op == CONJUNCTION:
-            for ext in (True, False):
-                v = introduce_conjunction_variables(term, ext)
-                if v is not None and v is not term and not hol_component_invalid(v):
-                    add_derived(self.state, v, t, self.stamp, self.occurrence, priority)
-            return
-        add_derived(self.state, term, t, self.stamp, self.occurrence, priority)
+        v: Term
+        for v in variable_forms(term):
+            add_derived(self.state, v, t, self.stamp, self.occurrence, priority)
 
 
 def apply_single(table: RuleTable, term: Term, t: Truth, d: Derivation) -> None:

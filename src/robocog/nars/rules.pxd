@@ -5,3 +5,5 @@
 from robocog.nars.terms cimport Term, compound, substitute
 from robocog.nars.truth cimport Truth
 from robocog.nars cimport truth as tf
+
+cpdef tuple variable_forms(Term t)

@@ -575,6 +575,41 @@ def introduce_conjunction_variables(t: Term, extensional: bool) -> Term | None:
     return substitute(t, mapping)
 
 
+def variable_forms(t: Term) -> tuple[Term, ...]:
+    """The conclusions a rule that introduces variables derives from its conclusion
+    ``t``: for ``==>``/``<=>``/``=/>`` and ``&&`` the forms with variables introduced
+    (extensionally, then intensionally) that pass the component filter, a ``==>`` or
+    ``<=>`` only with an independent variable; any other term itself.
+
+    A function of the term alone, kept on it: the same premise pairs meet at nearly
+    every step, so the same conclusions come back.
+    """
+    got = t.forms
+    if got is None:
+        got = t.forms = _variable_forms(t)
+    return got
+
+
+def _variable_forms(t: Term) -> tuple[Term, ...]:
+    op = t.op
+    found: list[Term] = []
+    if op == IMPLICATION or op == EQUIVALENCE or op == TEMPORAL_IMPLICATION:
+        for ext in (True, False):
+            v = introduce_implication_variables(t, ext)
+            if v is not None and v is not t and not hol_component_invalid(v):
+                if (v.op == IMPLICATION or v.op == EQUIVALENCE) and not v.has_indep_var:
+                    continue
+                found.append(v)
+        return tuple(found)
+    if op == CONJUNCTION:
+        for ext in (True, False):
+            v = introduce_conjunction_variables(t, ext)
+            if v is not None and v is not t and not hol_component_invalid(v):
+                found.append(v)
+        return tuple(found)
+    return (t,)
+
+
 # ---------------------------------------------------------------- conclusion filters
 def _simple_atoms(t: Term) -> list[Term]:
     return [a for a in t.atoms() if not a.is_var]

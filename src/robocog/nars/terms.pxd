@@ -19,6 +19,7 @@ cdef class Term:
     cdef public long n_temp
     cdef public object _names
     cdef public object hol
+    cdef public tuple forms
 
     cpdef tuple index_names(self)
 

@@ -61,6 +61,7 @@ class Term:
         "n_temp",
         "_names",
         "hol",
+        "forms",
     )
 
     op: str | None
@@ -275,6 +276,7 @@ def atom(name: str) -> Term:
     t.n_temp = 0
     t._names = None
     t.hol = None
+    t.forms = None
     if len(table) >= _SWEEP_AT[0]:
         _sweep()
     table[key] = t
@@ -360,6 +362,7 @@ def _make_compound(key: tuple[object, ...], op: str, args: tuple[Term, ...]) -> 
     t.cache = None  # per-term results of pure checks (conclusion filters)
     t._names = None
     t.hol = None
+    t.forms = None  # what a variable-introducing rule derives from it (rules.variable_forms)
     table: dict = _TABLE
     if len(table) >= _SWEEP_AT[0]:
         _sweep()
