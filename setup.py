@@ -36,6 +36,7 @@ ENGINE_MODULES = (
     "state",
     "unify",
     "rules",
+    "matchers",
     "spikegroups",
     "sensorimotor",
     "decision",

@@ -188,6 +188,9 @@ def test_the_cycle_finder_sees_a_lazy_cycle(tmp_path: Path) -> None:
 MAX_MODULE_LINES = 800
 #: modules allowed over the bound for now, each with the way it is to be split
 LONG_MODULES: set[str] = set()
+#: modules generated from a table, one function per row, which a reader reads through
+#: their generator and the table (the bound is for modules written by hand)
+GENERATED_MODULES = {"nars/matchers.py"}
 
 
 def long_modules(root: Path = SRC, most: int = MAX_MODULE_LINES) -> dict[str, int]:
@@ -202,7 +205,8 @@ def long_modules(root: Path = SRC, most: int = MAX_MODULE_LINES) -> dict[str, in
 
 
 def test_no_module_is_longer_than_the_bound() -> None:
-    too_long = {name: n for name, n in long_modules().items() if name not in LONG_MODULES}
+    exempt = LONG_MODULES | GENERATED_MODULES
+    too_long = {name: n for name, n in long_modules().items() if name not in exempt}
     assert too_long == {}, f"modules over {MAX_MODULE_LINES} lines: {too_long}"
 
 
@@ -210,6 +214,10 @@ def test_the_known_long_modules_are_still_long() -> None:
     # once one is split, it leaves the list of exceptions (so that the list only shrinks)
     split = LONG_MODULES - set(long_modules())
     assert split == set(), f"now within the bound, remove from LONG_MODULES: {sorted(split)}"
+
+
+def test_the_generated_modules_are_there() -> None:
+    assert all((SRC / name).exists() for name in GENERATED_MODULES), GENERATED_MODULES
 
 
 def test_the_line_counter_sees_a_long_module(tmp_path: Path) -> None:

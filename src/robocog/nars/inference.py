@@ -8,6 +8,7 @@ unification, which is how ``<<$1 --> penguin> ==> ...>`` meets ``<pingu --> peng
 from __future__ import annotations
 
 from . import truth as tf
+from .matchers import MATCHERS
 from .memorize import add_derived
 from .rules import RuleTable, variable_forms
 from .stamp import Stamp
@@ -23,7 +24,7 @@ def rule_table(level: int) -> RuleTable:
     """The rule table of NAL level ``level`` (built once, then shared)."""
     t = _RULE_TABLES.get(level)
     if t is None:
-        t = _RULE_TABLES[level] = RuleTable(level)
+        t = _RULE_TABLES[level] = RuleTable(level, MATCHERS)
     return t
 
 

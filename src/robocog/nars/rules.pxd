@@ -7,3 +7,4 @@ from robocog.nars.truth cimport Truth
 from robocog.nars cimport truth as tf
 
 cpdef tuple variable_forms(Term t)
+cpdef Term make(str op, tuple args)

@@ -1,7 +1,8 @@
 """NAL 1-6 declarative rule table, term reductions and conclusion filters.
 
 Rules are written as Narsese patterns in which single capital letters stand for any
-term; they are compiled once into matchers indexed by the connectors of the two
+term; a straight-line matcher of each is generated from the table into ``matchers.py``
+(by ``rulegen.py``), and the table indexes the matchers by the connectors of the two
 premises, so a premise pair only tries the rules that can fit it. Every two-premise
 rule applies in both premise orders with the truth function's arguments following the
 pattern, as in ONA's generated rule table.
@@ -9,7 +10,7 @@ pattern, as in ONA's generated rule table.
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 from . import truth as tf
@@ -25,6 +26,7 @@ from .terms import (
     INT_SET,
     SIMILARITY,
     TEMPORAL_IMPLICATION,
+    Components,
     Term,
     atom,
     compound,
@@ -36,7 +38,7 @@ from .truth import Truth
 TruthFn = Callable[[Truth, Truth], Truth]
 
 # (premise1, premise2 or None, conclusion, truth function, introduce variables, min NAL level)
-_RULES: list[tuple[str, str | None, str, str, bool, int]] = [
+RULES: list[tuple[str, str | None, str, str, bool, int]] = [
     # NAL-1 syllogisms
     ("<S --> M>", "<M --> P>", "<S --> P>", "deduction", False, 1),
     ("<A --> B>", "<A --> C>", "<C --> B>", "induction", False, 1),
@@ -214,7 +216,7 @@ _RULES: list[tuple[str, str | None, str, str, bool, int]] = [
 ]
 
 
-def _is_pvar(t: Term) -> bool:
+def is_pattern_variable(t: Term) -> bool:
     """Single capital letters are pattern variables in the rule table."""
     return t.op is None and len(t.name) == 1 and t.name.isupper()  # type: ignore[arg-type]
 
@@ -222,7 +224,7 @@ def _is_pvar(t: Term) -> bool:
 def match(p: Term, t: Term, b: dict[Term, Term]) -> bool:
     """Structural match of pattern ``p`` against ``t``, extending bindings ``b``."""
     if p.op is None:
-        if _is_pvar(p):
+        if is_pattern_variable(p):
             got = b.get(p)
             if got is None:
                 b[p] = t
@@ -234,7 +236,7 @@ def match(p: Term, t: Term, b: dict[Term, Term]) -> bool:
     return all(match(pa, ta, b) for pa, ta in zip(p.args, t.args, strict=True))
 
 
-def make(op: str, args: tuple[Term, ...]) -> Term:
+def make(op: str, args: Components) -> Term:
     """Build a compound applying ONA's term reductions."""
     if op in ("&", "|", CONJUNCTION, DISJUNCTION) and len(args) == 2 and args[0] is args[1]:
         return args[0]
@@ -252,7 +254,7 @@ def make(op: str, args: tuple[Term, ...]) -> Term:
 
 
 #: connectors whose terms ``make`` may reduce; every other one is a plain ``compound``
-_REDUCED_OPS = frozenset({"&", "|", CONJUNCTION, DISJUNCTION, EXT_SET, INT_SET})
+REDUCED_OPS = frozenset({"&", "|", CONJUNCTION, DISJUNCTION, EXT_SET, INT_SET})
 
 
 def build(p: Term, b: dict[Term, Term]) -> Term:
@@ -262,9 +264,16 @@ def build(p: Term, b: dict[Term, Term]) -> Term:
     return make(p.op, tuple(build(a, b) for a in p.args))
 
 
+#: where a matcher hands its conclusion: ``emit(term, truth, introduce_variables)``
+Emit = Callable[[Term, Truth, bool], None]
+#: a rule's matcher: ``matcher(t1, t2, v1, v2, emit)`` (``t2``, ``v2`` repeat the
+#: premise for a single-premise rule)
+Matcher = Callable[[Term, Term, Truth, Truth, Emit], None]
+
+
 @dataclass(slots=True)
 class Rule:
-    """One compiled rule; ``apply(t1, t2, v1, v2, emit)`` matches and emits."""
+    """One rule of the table; ``apply(t1, t2, v1, v2, emit)`` matches and emits."""
 
     p1: Term
     p2: Term | None
@@ -273,75 +282,27 @@ class Rule:
     var_intro: bool
     level: int
     name: str
-    apply: Callable[..., None] | None = None
+    apply: Matcher | None = None
 
 
 def _root(p: Term) -> str:
-    return "*any*" if _is_pvar(p) else (p.op or "*atom*")
-
-
-def _compile(rule: Rule) -> Callable[..., None]:
-    """Generate a straight-line matcher for ``rule`` (no recursion, no dict of bindings)."""
-    lines: list[str] = []
-    bound: set[str] = set()
-    consts: dict[str, object] = {"make": make, "compound": compound, "truth": rule.truth}
-    counter = [0]
-
-    def gen(p: Term, expr: str) -> None:
-        if p.op is None:
-            if _is_pvar(p):
-                name = f"v_{p.name}"
-                if name in bound:
-                    lines.append(f"if {expr} is not {name}: return")
-                else:
-                    lines.append(f"{name} = {expr}")
-                    bound.add(name)
-            else:
-                k = f"c{len(consts)}"
-                consts[k] = p
-                lines.append(f"if {expr} is not {k}: return")
-            return
-        lines.append(f"if {expr}.op != {p.op!r} or len({expr}.args) != {len(p.args)}: return")
-        counter[0] += 1
-        base = f"x{counter[0]}"
-        lines.append(f"{base} = {expr}.args")
-        for i, a in enumerate(p.args):
-            gen(a, f"{base}[{i}]")
-
-    def build_expr(p: Term) -> str:
-        if p.op is None:
-            if _is_pvar(p):
-                return f"v_{p.name}"
-            k = f"c{len(consts)}"
-            consts[k] = p
-            return k
-        inner = ", ".join(build_expr(a) for a in p.args)
-        if len(p.args) == 1:
-            inner += ","
-        if p.op in _REDUCED_OPS:
-            return f"make({p.op!r}, ({inner}))"
-        return f"compound({p.op!r}, ({inner}))"  # ``make`` would only forward it
-
-    gen(rule.p1, "t1")
-    if rule.p2 is not None:
-        gen(rule.p2, "t2")
-    lines.append(f"emit({build_expr(rule.conclusion)}, truth(v1, v2), {rule.var_intro})")
-    src = "def f(t1, t2, v1, v2, emit):\n" + "\n".join("    " + x for x in lines)
-    ns: dict[str, object] = dict(consts)
-    exec(compile(src, f"<rule {rule.name}>", "exec"), ns)  # noqa: S102 - generated from our table
-    return ns["f"]  # type: ignore[return-value]
+    return "*any*" if is_pattern_variable(p) else (p.op or "*atom*")
 
 
 class RuleTable:
     """Compiled rules, indexed by premise connectors."""
 
-    def __init__(self, level: int = 6) -> None:
+    def __init__(self, level: int, matchers: Sequence[Matcher]) -> None:
+        """The rules of NAL ``level`` and below, each with its matcher from
+        ``matchers`` (one per row of the table, in order: ``matchers.MATCHERS``)."""
         self.single: dict[str, list[Rule]] = {}
         self.double: dict[tuple[str, str], list[Rule]] = {}
         self._cache: dict[tuple[str | None, str | None], list[Rule]] = {}
         self._single_cache: dict[str | None, list[Rule]] = {}
         self._shape_cache: dict[tuple[object, ...], list[Rule]] = {}
-        for p1, p2, c, fn, vi, lvl in _RULES:
+        if len(matchers) != len(RULES):
+            raise ValueError(f"{len(matchers)} matchers for {len(RULES)} rules")
+        for (p1, p2, c, fn, vi, lvl), matcher in zip(RULES, matchers, strict=True):
             if lvl > level:
                 continue
             r = Rule(
@@ -353,7 +314,7 @@ class RuleTable:
                 lvl,
                 fn,
             )
-            r.apply = _compile(r)
+            r.apply = matcher
             if r.p2 is None:
                 self.single.setdefault(_root(r.p1), []).append(r)
             else:
@@ -419,19 +380,19 @@ def _fits(r: Rule, key: tuple[object, ...]) -> bool:
     """Could rule ``r`` match a premise pair of shape ``key`` (see ``candidates``)?"""
     comps: list[Term | None] = []
     for p, k in ((r.p1, 0), (r.p2, 1)):
-        if p is None or _is_pvar(p):
+        if p is None or is_pattern_variable(p):
             comps += [None, None]
             continue
         if p.op != key[k] or len(p.args) != 2:
             return False
         for i, a in enumerate(p.args):
-            if not _is_pvar(a) and a.op != key[2 + 2 * k + i]:
+            if not is_pattern_variable(a) and a.op != key[2 + 2 * k + i]:
                 return False
             comps.append(a)
     eq = key[6]
     for bit, (i, j) in enumerate(_PAIRS):
         a, b = comps[i], comps[j]
-        if a is not None and b is not None and a is b and _is_pvar(a):
+        if a is not None and b is not None and a is b and is_pattern_variable(a):
             if not eq >> bit & 1:  # type: ignore[operator]
                 return False
     return True
