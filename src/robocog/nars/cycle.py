@@ -88,18 +88,9 @@ def semantic_inference(s: Reasoner, e: Event, priority: float) -> None:
             + (avg - cfg.belief_concept_match_target) * cfg.concept_threshold_adaptation,
         ),
     )
-    threshold = s.concept_threshold
-    chosen: list[tuple[Concept, float]] = []
-    limit = cfg.belief_concept_match_target
-    durability = cfg.concept_durability
-    c: Concept
-    for c in s.memory.related(e.term):
-        cp = c.priority_at(now, durability)
-        if cp < threshold:
-            continue
-        chosen.append((c, cp))
-        if len(chosen) >= limit:
-            break
+    chosen: list[tuple[Concept, float]] = s.memory.related_above(
+        e.term, now, cfg.concept_durability, s.concept_threshold, cfg.belief_concept_match_target
+    )
     s.matched_total += len(chosen)
     spikes_alone = cfg.event_pairs_with_events
     for c, cp in chosen:

@@ -12,3 +12,4 @@ from robocog.nars.unify cimport unify
 from robocog.nars.state cimport Reasoner, emit, shows
 
 cpdef void add_derived(Reasoner s, Term term, Truth t, tuple stamp, long occurrence, double priority)
+cpdef bint _needs_existing_concept(Term t, long occurrence)

@@ -27,6 +27,10 @@ from .truth import Cycle, Truth
 from .unify import unify
 
 _IMAGES = frozenset({"/1", "/2", "\\1", "\\2"})
+#: a derived belief's priority factor for its term's complexity, ``1 / log2(1 + c)``,
+#: computed once for the complexities of nearly every term (a term's is at least 1)
+_SCALED = 256
+_BY_COMPLEXITY = [0.0] + [1.0 / math.log2(1.0 + c) for c in range(1, _SCALED)]
 _COMPOSED = frozenset({"-", "~", "&", "|"})
 
 
@@ -179,7 +183,8 @@ def add_derived(
             return
     if cfg.restricted_concept_creation and term not in s.memory.concepts:
         return  # ONA 0.9.3's *restrictedconceptcreation
-    priority *= 1.0 / math.log2(1.0 + term.complexity)
+    cx = term.complexity
+    priority *= _BY_COMPLEXITY[cx] if 0 < cx < _SCALED else 1.0 / math.log2(1.0 + cx)
     if t.c < cfg.min_confidence or priority <= 0.0:
         return
     e = Event(term, BELIEF, t, stamp, occurrence, s.time)
@@ -222,7 +227,7 @@ def check_pending(s: Reasoner, c: Concept) -> None:
             report_answer(s, b)
 
 
-def _needs_existing_concept(t: Term, occurrence: int) -> bool:
+def _needs_existing_concept(t: Term, occurrence: Cycle) -> bool:
     """ONA: images at the top, differences and intersections anywhere, and
     conjunctions with dependent variables (or in time) are derived only into
     concepts that already exist."""

@@ -5,6 +5,9 @@ from robocog.nars.terms cimport Term
 from robocog.nars.event cimport Event
 from robocog.nars.table cimport Table
 
+# ``pow`` in memory.py is C's (the same function Python's float power calls)
+from libc.math cimport pow
+
 cdef class Concept:
     cdef public long id
     cdef public Term term
