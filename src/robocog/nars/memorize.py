@@ -17,7 +17,7 @@ from . import truth as tf
 from .decision import add_goal
 from .declarative import note_fresh_belief
 from .event import BELIEF, ETERNAL, GOAL, Event, revised_or_chosen
-from .memory import Concept
+from .memory import Concept, EventQueue
 from .rules import rejected
 from .sensorimotor import add_implication, note_event, note_link
 from .stamp import Stamp, fmt
@@ -80,14 +80,14 @@ def _store(
 
 
 def _queue(s: Reasoner, e: Event, priority: float) -> bool:
-    q = s.memory.belief_events
+    q: EventQueue = s.memory.belief_events
     if e.type == BELIEF:
         prio = q.prio
         if len(prio) >= q.capacity and priority < q.lowest():
             return False  # the full queue would refuse it whatever the checks below say
         if q.contains(e):
             return False
-        c = s.memory.find(e.term)
+        c: Concept | None = s.memory.find(e.term)
         if c is not None and c.belief is not None:
             if c.belief.same(e):
                 return False
@@ -107,7 +107,10 @@ def _process_new_belief(
             emit(s, "Input: " + e.line(priority))
         add_implication(s, e.term, e.truth, e.stamp, e.dt, is_input, priority)
         return
-    c: Concept = s.memory.conceptualize(e.term, now)
+    # most conclusions are about a concept that exists: found without the method call
+    c: Concept | None = s.memory.find(e.term)
+    if c is None:
+        c = s.memory.conceptualize(e.term, now)
     c.use(now, eternal_input, s.config.eternal_input_usage_boost)
     raise_priority(s, c, priority)
     if e.occurrence_time != ETERNAL:
@@ -233,10 +236,9 @@ def _needs_existing_concept(t: Term, occurrence: Cycle) -> bool:
     concepts that already exist."""
     if t.op == "&&" and (t.has_dep_var or occurrence != ETERNAL):
         return True
-    if (
-        t.op is not None
-        and len(t.args) == 2
-        and (t.args[0].op in _IMAGES or t.args[1].op in _IMAGES)
-    ):
-        return True
+    if t.op is not None and len(t.args) == 2:
+        a: Term = t.args[0]
+        b: Term = t.args[1]
+        if a.op in _IMAGES or b.op in _IMAGES:
+            return True
     return bool(t.flags & F_COMPOSED)

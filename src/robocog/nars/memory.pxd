@@ -29,3 +29,15 @@ cdef class Concept:
 
     cpdef use(self, long now, bint eternal_input, long boost)
     cpdef double priority_at(self, long now, double durability)
+
+cdef class EventQueue:
+    cdef public list events
+    cdef public list prio
+    cdef public long capacity
+    cdef public dict keys
+    cdef object _low
+
+    cpdef double lowest(self)
+    cpdef bint contains(self, Event e)
+    cpdef void _forget(self, Event e)
+    cpdef bint push(self, Event e, double priority)

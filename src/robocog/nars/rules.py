@@ -337,8 +337,10 @@ class RuleTable:
         a2 = t2.args
         if len(a1) != 2 or len(a2) != 2:
             return self.double_rules(t1.op, t2.op)
-        x0, x1 = a1
-        y0, y1 = a2
+        x0: Term = a1[0]
+        x1: Term = a1[1]
+        y0: Term = a2[0]
+        y1: Term = a2[1]
         key = (
             t1.op,
             t2.op,
