@@ -17,3 +17,5 @@ cdef class Derivation:
     cdef public tuple stamp
     cdef public double parent_priority
     cdef public double concept_priority
+
+    cpdef void emit(self, Term term, Truth t, bint var_intro=*)

@@ -63,18 +63,16 @@ class Derivation:
 
 def apply_single(table: RuleTable, term: Term, t: Truth, d: Derivation) -> None:
     """Single-premise rules on ``term``."""
-    emit = d.emit
-    for r in table.single_rules(term.op):
-        r.apply(term, term, t, t, emit)  # type: ignore[misc]
+    c: Term
+    for c, fn, _swapped, var_intro in table.single_conclusions(term):
+        d.emit(c, fn(t, t), var_intro)
 
 
 def apply_double(table: RuleTable, t1: Term, t2: Term, v1: Truth, v2: Truth, d: Derivation) -> None:
     """Two-premise rules in both premise orders (truth arguments follow the pattern)."""
-    emit = d.emit
-    for r in table.candidates(t1, t2):
-        r.apply(t1, t2, v1, v2, emit)  # type: ignore[misc]
-    for r in table.candidates(t2, t1):
-        r.apply(t2, t1, v2, v1, emit)  # type: ignore[misc]
+    c: Term
+    for c, fn, swapped, var_intro in table.conclusions(t1, t2):
+        d.emit(c, fn(v2, v1) if swapped else fn(v1, v2), var_intro)
 
 
 def special(term1: Term, term2: Term, v1: Truth, v2: Truth, d: Derivation) -> None:

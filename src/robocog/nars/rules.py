@@ -271,6 +271,24 @@ Emit = Callable[[Term, Truth, bool], None]
 Matcher = Callable[[Term, Term, Truth, Truth, Emit], None]
 
 
+#: one conclusion of a premise pair: its term, the truth function, whether that takes
+#: the premises' truths in the opposite order, whether variables are to be introduced
+Conclusion = tuple[Term, TruthFn, bool, bool]
+#: how many premise pairs (and single premises) a rule table remembers the conclusions of
+REMEMBERED_PAIRS = 1 << 15
+#: the truth the matchers are given while their conclusions are only recorded
+_SOME_TRUTH = Truth(1.0, 0.9)
+
+
+def _recorder(into: list[Conclusion], truth: TruthFn, swapped: bool) -> Emit:
+    """An ``emit`` that records a matcher's conclusions into ``into``."""
+
+    def record(term: Term, _t: Truth, var_intro: bool) -> None:
+        into.append((term, truth, swapped, var_intro))
+
+    return record
+
+
 @dataclass(slots=True)
 class Rule:
     """One rule of the table; ``apply(t1, t2, v1, v2, emit)`` matches and emits."""
@@ -300,6 +318,9 @@ class RuleTable:
         self._cache: dict[tuple[str | None, str | None], list[Rule]] = {}
         self._single_cache: dict[str | None, list[Rule]] = {}
         self._shape_cache: dict[tuple[object, ...], list[Rule]] = {}
+        # what the rules conclude from a premise (pair), see ``conclusions``
+        self._pairs: dict[tuple[Term, Term], tuple[Conclusion, ...]] = {}
+        self._singles: dict[Term, tuple[Conclusion, ...]] = {}
         if len(matchers) != len(RULES):
             raise ValueError(f"{len(matchers)} matchers for {len(RULES)} rules")
         for (p1, p2, c, fn, vi, lvl), matcher in zip(RULES, matchers, strict=True):
@@ -319,6 +340,44 @@ class RuleTable:
                 self.single.setdefault(_root(r.p1), []).append(r)
             else:
                 self.double.setdefault((_root(r.p1), _root(r.p2)), []).append(r)
+
+    def conclusions(self, t1: Term, t2: Term) -> tuple[Conclusion, ...]:
+        """What the two-premise rules conclude from ``t1`` and ``t2`` in both orders,
+        in the order the rules apply: each conclusion with how its truth is had from
+        the premises' (:data:`Conclusion`).
+
+        The conclusions are a function of the two (interned) terms alone, and the same
+        premise pairs meet at nearly every step, so they are remembered (up to
+        :data:`REMEMBERED_PAIRS` pairs, then afresh): a pair met again costs one look-up
+        instead of its rules' matching and the building of their conclusions.
+        """
+        key = (t1, t2)
+        got = self._pairs.get(key)
+        if got is None:
+            found: list[Conclusion] = []
+            for r in self.candidates(t1, t2):
+                r.apply(t1, t2, _SOME_TRUTH, _SOME_TRUTH, _recorder(found, r.truth, False))  # type: ignore[misc]
+            for r in self.candidates(t2, t1):
+                r.apply(t2, t1, _SOME_TRUTH, _SOME_TRUTH, _recorder(found, r.truth, True))  # type: ignore[misc]
+            got = tuple(found)
+            if len(self._pairs) >= REMEMBERED_PAIRS:
+                self._pairs.clear()
+            self._pairs[key] = got
+        return got
+
+    def single_conclusions(self, t: Term) -> tuple[Conclusion, ...]:
+        """What the single-premise rules conclude from ``t`` (as ``conclusions``, the
+        truth function taking the premise's truth twice), remembered alike."""
+        got = self._singles.get(t)
+        if got is None:
+            found: list[Conclusion] = []
+            for r in self.single_rules(t.op):
+                r.apply(t, t, _SOME_TRUTH, _SOME_TRUTH, _recorder(found, r.truth, False))  # type: ignore[misc]
+            got = tuple(found)
+            if len(self._singles) >= REMEMBERED_PAIRS:
+                self._singles.clear()
+            self._singles[t] = got
+        return got
 
     def single_rules(self, op: str | None) -> list[Rule]:
         """Single-premise rules whose premise can have connector ``op``."""
