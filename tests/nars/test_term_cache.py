@@ -14,7 +14,7 @@ from hypothesis import strategies as st
 from robocog.nars.narsese import parse_term
 from robocog.nars.rules import _rejected, rejected
 from robocog.nars.stamp import has_duplicate, merge, overlap
-from robocog.nars.terms import Term, atom, compound, names_repeat
+from robocog.nars.terms import F_IMAGE_ARGUMENT, Term, atom, compound, names_repeat
 
 _ATOMS = ["a", "b", "c", "$1", "#1", "?1"]
 _OPS = ["-->", "<->", "==>", "&&", "*", "|", "&", "-", "~", "/1", "{}", "[]"]
@@ -63,6 +63,9 @@ def test_complexity_and_flags_follow_the_components(t: Term) -> None:
     assert t.has_var == any(a.is_var for a in atoms)
     assert t.has_dep_var == any(a.name.startswith("#") for a in atoms if a.is_var)
     assert t.n_imp == sum(1 for x in t.walk() if x.op in ("==>", "<=>"))
+    images = ("/1", "/2", "\\1", "\\2")
+    image_argument = len(t.args) == 2 and any(a.op in images for a in t.args)
+    assert bool(t.flags & F_IMAGE_ARGUMENT) == image_argument
 
 
 def test_rejected_filters_known_cases() -> None:

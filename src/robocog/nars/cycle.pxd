@@ -6,3 +6,4 @@ from robocog.nars.event cimport Event
 from robocog.nars.memory cimport Concept
 from robocog.nars.stamp cimport has_duplicate, merge, overlap
 from robocog.nars.state cimport Reasoner, emit, shows
+from robocog.nars.inference cimport Derivation, apply_double, apply_single, special

@@ -93,12 +93,19 @@ def semantic_inference(s: Reasoner, e: Event, priority: float) -> None:
     )
     s.matched_total += len(chosen)
     spikes_alone = cfg.event_pairs_with_events
+    # read once for every concept below (nothing in the loop changes them)
+    timed = e.occurrence_time != ETERNAL
+    distance = cfg.event_belief_distance
+    stamp_size = cfg.stamp_size
+    c: Concept
+    cp: float
+    belief: Event | None
     for c, cp in chosen:
         belief = c.belief
         if (
-            e.occurrence_time != ETERNAL
+            timed
             and c.belief_spike is not None
-            and abs(e.occurrence_time - c.belief_spike.occurrence_time) < cfg.event_belief_distance
+            and abs(e.occurrence_time - c.belief_spike.occurrence_time) < distance
             and (belief is not None or spikes_alone)
         ):
             belief = c.belief_spike.projected(e.occurrence_time)
@@ -107,7 +114,7 @@ def semantic_inference(s: Reasoner, e: Event, priority: float) -> None:
         if overlap(e.stamp, belief.stamp):
             continue
         c.use(now, False, 0)
-        stamp = merge(e.stamp, belief.stamp, cfg.stamp_size)
+        stamp = merge(e.stamp, belief.stamp, stamp_size)
         if has_duplicate(stamp):
             continue
         d = Derivation(s, e.occurrence_time, stamp, priority, cp)

@@ -1,6 +1,6 @@
 # For the compiled engine: the extension types and C functions that inference.py names,
 # so that its annotated variables are read as structs and its calls made in C, and the
-# layout of its own Derivation.
+# layout of its own Derivation and the C signatures of the functions the cycle calls.
 # inference.py stays the only source of behaviour; see setup.py.
 
 from robocog.nars.terms cimport Term, compound
@@ -19,3 +19,7 @@ cdef class Derivation:
     cdef public double concept_priority
 
     cpdef void emit(self, Term term, Truth t, bint var_intro=*)
+
+cpdef void apply_single(object table, Term term, Truth t, Derivation d)
+cpdef void apply_double(object table, Term t1, Term t2, Truth v1, Truth v2, Derivation d)
+cpdef void special(Term term1, Term term2, Truth v1, Truth v2, Derivation d)

@@ -22,11 +22,10 @@ from .rules import rejected
 from .sensorimotor import add_implication, note_event, note_link
 from .stamp import Stamp, fmt
 from .state import Reasoner, emit, shows
-from .terms import F_COMPOSED, TEMPORAL_IMPLICATION, Term
+from .terms import F_COMPOSED, F_IMAGE_ARGUMENT, TEMPORAL_IMPLICATION, Term
 from .truth import Cycle, Truth
 from .unify import unify
 
-_IMAGES = frozenset({"/1", "/2", "\\1", "\\2"})
 #: a derived belief's priority factor for its term's complexity, ``1 / log2(1 + c)``,
 #: computed once for the complexities of nearly every term (a term's is at least 1)
 _SCALED = 256
@@ -234,11 +233,6 @@ def _needs_existing_concept(t: Term, occurrence: Cycle) -> bool:
     """ONA: images at the top, differences and intersections anywhere, and
     conjunctions with dependent variables (or in time) are derived only into
     concepts that already exist."""
-    if t.op == "&&" and (t.has_dep_var or occurrence != ETERNAL):
+    if t.flags & (F_COMPOSED | F_IMAGE_ARGUMENT):  # kept on the term
         return True
-    if t.op is not None and len(t.args) == 2:
-        a: Term = t.args[0]
-        b: Term = t.args[1]
-        if a.op in _IMAGES or b.op in _IMAGES:
-            return True
-    return bool(t.flags & F_COMPOSED)
+    return t.op == "&&" and (t.has_dep_var or occurrence != ETERNAL)

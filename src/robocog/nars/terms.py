@@ -183,6 +183,9 @@ F_IMP = 1  # count of ==>/<=> is kept separately; these are presence bits
 F_JUNCTION_RIGHT_NESTED = 2  # some && or || has && or || as right component
 F_COMPOSED = 4  # contains - ~ & |
 F_IMAGE = 8  # contains /1 /2 \1 \2
+#: a binary term with an image as a component, at the top only (not passed on to the
+#: terms containing it): a derived belief of such a term needs an existing concept
+F_IMAGE_ARGUMENT = 16
 _IMPS = ("==>", "<=>")
 _JUNCTIONS = ("&&", "||")
 _COMPOSED_OPS = ("-", "~", "&", "|")
@@ -310,7 +313,9 @@ def _make_compound(key: tuple[object, ...], op: str, args: tuple[Term, ...]) -> 
         complexity = 1 + a.complexity + b.complexity
         if op in SETS:
             complexity += 2
-        flags = a.flags | b.flags
+        flags = (a.flags | b.flags) & ~F_IMAGE_ARGUMENT
+        if a.op in _IMAGE_OPS or b.op in _IMAGE_OPS:
+            flags |= F_IMAGE_ARGUMENT
         n_imp = a.n_imp + b.n_imp
         n_temp = a.n_temp + b.n_temp
         hv = a.has_var or b.has_var
@@ -339,6 +344,7 @@ def _make_compound(key: tuple[object, ...], op: str, args: tuple[Term, ...]) -> 
             hq = hq or a.has_query_var
             hi = hi or a.has_indep_var
             hd = hd or a.has_dep_var
+        flags &= ~F_IMAGE_ARGUMENT
         t.is_op = False
     kind = _OP_KINDS.get(op)  # one look-up: most terms are ``-->`` or ``*``, of no kind
     if kind is not None:
