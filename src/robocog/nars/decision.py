@@ -225,6 +225,7 @@ def _decompose_sequence(s: Reasoner, g: Event, priority: float, layer: int) -> N
 def _preconditions(s: Reasoner, pre: Term) -> list[Event]:
     """Recent belief events that fulfil precondition ``pre`` (unifying variables)."""
     mem = s.memory
+    c: Concept | None
     if _ground(pre):
         c = mem.find(pre)
         if c is not None and c.belief_spike is not None:
@@ -244,8 +245,20 @@ def _preconditions(s: Reasoner, pre: Term) -> list[Event]:
                 out_n.append(Event(pre, b.type, t, b.stamp, b.occurrence_time, b.creation_time))
         return out_n
     out = []
+    # (the tests are pure reads, so their order is free: a connector other than the
+    # precondition's is what unify would refuse first, and the groundness test is
+    # ``_ground`` written out; the index has hundreds of entries)
+    pop = pre.op
+    ct: Term
     for c in s.time_index:
-        if c.belief_spike is not None and _ground(c.term) and unify(pre, c.term) is not None:
+        if c.belief_spike is None:
+            continue
+        ct = c.term
+        if pop is not None and ct.op != pop:
+            continue
+        if ct.has_indep_var or ct.has_dep_var or ct.has_query_var:
+            continue
+        if unify(pre, ct) is not None:
             out.append(c.belief_spike)
     return out
 
@@ -255,10 +268,14 @@ def _goal_concepts(s: Reasoner, g: Event, c: Concept) -> list[tuple[Concept, dic
     out: list[tuple[Concept, dict[Term, Term]]] = [(c, {})]
     seen = {c}
     general_goal = g.term.has_var
+    gop = g.term.op
+    post: Concept
     for table in s.table_index.values():
         for post in table:
             if post in seen:
                 continue
+            if gop is not None and post.term.op is not None and post.term.op != gop:
+                continue  # what unify would refuse first, either way round
             if post.term.has_var:
                 b = unify(post.term, g.term)
                 if b is not None:
@@ -306,8 +323,11 @@ def _best_candidate(s: Reasoner, g: Event, c: Concept) -> Decision | None:
                 pre, op = split_precondition(subj)
                 if op is None:
                     continue
+                spikes = _preconditions(s, pre)
+                if not spikes:
+                    continue  # (most links: nothing to deduce from)
                 gd = tf.goal_deduction(g.truth, imp.truth)
-                for spike in _preconditions(s, pre):
+                for spike in spikes:
                     b2 = unify(pre, spike.term) or {}
                     op_g = apply(op, b2)
                     if not _ground(op_g) or not _self_operation(op_g):

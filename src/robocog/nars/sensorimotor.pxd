@@ -21,3 +21,15 @@ cdef class _Pattern:
     cdef public dict matches
 
     cpdef dict match(self, Term term)
+
+# the C signatures of the functions that the processing of every selected event calls
+# many times over (induction and what it stores)
+cpdef tuple split_precondition(Term subject)
+cpdef long _sequence_length(Term t)
+cpdef bint _has_op(Term t)
+cpdef bint executable(Term op)
+cpdef long op_id(Reasoner s, Term op)
+cpdef void note_event(Reasoner s, Concept c)
+cpdef void _activate_sequence(Reasoner s, Event se)
+cpdef void _induce(Reasoner s, Event pre, Event op, Event post, double priority)
+cpdef tuple _variable_forms(Reasoner s, Term term)

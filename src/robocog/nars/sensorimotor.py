@@ -139,9 +139,18 @@ def add_implication(
     target: Concept = mem.conceptualize(predicate, now)
     target.use(now, is_input, cfg.eternal_input_usage_boost)
     imp = Implication(term, t, stamp, dt, now if creation_time is None else creation_time, pre)
-    table = target.tables(cfg.operations_max, cfg.table_size)[opi]
+    # (the concept's tables read directly once made, and the index's entry for the
+    # operation made only when missing: this runs for every induced link)
+    tables = target.precondition_beliefs
+    if tables is None:
+        tables = target.tables(cfg.operations_max, cfg.table_size)
+    table: Table = tables[opi]
     stored = table.add_and_revise(imp, cfg.stamp_size)
-    s.table_index.setdefault(opi, {})[target] = None
+    posts = s.table_index.get(opi)
+    if posts is None:
+        s.table_index[opi] = {target: None}
+    else:
+        posts[target] = None
     if stored is not None and not is_input and shows(s, priority):
         emit(s, f"Derived: dt={dt:f} {term}. Priority={priority:f} Stamp={fmt(stamp)} {t}")
         if stored is not imp and stored.truth.c > t.c:
@@ -215,6 +224,8 @@ def forward_links(s: Reasoner) -> None:
     b: Term
     cond: Term
     concl: Term
+    term: Term
+    target: Term
     # (a loop rather than a comprehension, so that the compiled engine reads ``c``
     # and ``last`` as declared; and the age test against a float, a C double when
     # compiled, exact for any cycle count below 2**53, so the index's 512 entries
@@ -226,24 +237,45 @@ def forward_links(s: Reasoner) -> None:
         last = c.belief_spike
         if last is not None and last.creation_time >= oldest and not c.term.has_var:
             fresh.append(c)
+    limit = cfg.top_k_declarative_implications * 4
+    consequences = _CONSEQUENCES
+    found: object
     for c in fresh:
         spike = c.belief_spike
-        links = list(s.links_by_subject.get(c.term, ()))
+        term = c.term
+        links = list(s.links_by_subject.get(term, ()))
         for g in s.general_links:
             links.append(g)
-        for link in links[: cfg.top_k_declarative_implications * 4]:
+        if len(links) > limit:
+            del links[limit:]
+        for link in links:
             lc = mem.find(link)
             if lc is None or lc.belief is None:
-                s.links_by_subject.get(c.term, {}).pop(link, None)
+                s.links_by_subject.get(term, {}).pop(link, None)
                 continue
             a, b = link.args
-            for cond, concl in ((a, b), (b, a)) if link.op == "<=>" else ((a, b),):
-                if cond.op is not None and cond.op != c.term.op:
+            # (each side of ``<=>`` in turn, chosen without building pairs of sides)
+            for side in range(2 if link.op == "<=>" else 1):
+                if side == 0:
+                    cond = a
+                    concl = b
+                else:
+                    cond = b
+                    concl = a
+                if cond.op is not None and cond.op != term.op:
                     continue  # what unify would say first, without the call
-                bind = unify(cond, c.term)
-                if bind is None:
+                # the consequence is a function of the three terms: the same concept
+                # meets the same link at every cycle while its event is fresh
+                key = (cond, concl, term)
+                found = consequences.get(key, _UNKNOWN)
+                if found is _UNKNOWN:
+                    bind = unify(cond, term)
+                    found = _remember(
+                        consequences, key, None if bind is None else apply(concl, bind)
+                    )
+                if found is None:
                     continue
-                target = apply(concl, bind)
+                target = found
                 if target.has_var or overlap(spike.stamp, lc.belief.stamp):
                     continue
                 fn = tf.deduction if link.op == "==>" else tf.analogy
@@ -268,10 +300,19 @@ def forward_links(s: Reasoner) -> None:
                 note_event(s, tcon)
 
 
+#: (condition, conclusion, event term) -> the conclusion with the bindings that make the
+#: condition the event's term, or None when none do (see ``forward_links``)
+_CONSEQUENCES: dict[tuple[Term, Term, Term], Term | None] = {}
+
+
 # -------------------------------------------------------------- induction
 def note_event(s: Reasoner, c: Concept) -> None:
     """Remember that ``c`` just received an event (newest first)."""
     idx = s.time_index
+    if c.timed and idx and idx[0] is c:
+        # the newest already, and so the newest of its groups too (each change of the
+        # index since its last note would have made another concept the newest)
+        return
     groups = s.groups
     present = False
     if c.timed:  # it has been in the index (a search for any other is in vain)
