@@ -11,3 +11,9 @@ from robocog.nars.memory cimport Concept
 from robocog.nars.table cimport Table
 from robocog.nars.unify cimport apply, unify
 from robocog.nars.state cimport Reasoner, emit, shows
+from robocog.nars.sensorimotor cimport executable, split_precondition
+
+# the C signatures of the helpers that the choice of a decision calls for every link
+cpdef bint _ground(Term t)
+cpdef bint _self_operation(Term op)
+cpdef list _preconditions(Reasoner s, Term pre)

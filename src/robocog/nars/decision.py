@@ -245,17 +245,30 @@ def _preconditions(s: Reasoner, pre: Term) -> list[Event]:
                 out_n.append(Event(pre, b.type, t, b.stamp, b.occurrence_time, b.creation_time))
         return out_n
     out = []
-    # (the tests are pure reads, so their order is free: a connector other than the
-    # precondition's is what unify would refuse first, and the groundness test is
-    # ``_ground`` written out; the index has hundreds of entries)
+    # (the tests are pure reads, so their order is free: another connector or arity,
+    # or another term where the precondition has a component without variables, is
+    # what unify would refuse, and the groundness test is ``_ground`` written out;
+    # the index has hundreds of entries, most of them refused so, without the call)
     pop = pre.op
+    pargs = pre.args
+    n = len(pargs)
     ct: Term
+    x: Term
     for c in s.time_index:
         if c.belief_spike is None:
             continue
         ct = c.term
-        if pop is not None and ct.op != pop:
-            continue
+        if pop is not None:
+            if ct.op != pop or len(ct.args) != n:
+                continue
+            clash = False
+            for i in range(n):
+                x = pargs[i]
+                if not x.has_var and x is not ct.args[i]:
+                    clash = True
+                    break
+            if clash:
+                continue
         if ct.has_indep_var or ct.has_dep_var or ct.has_query_var:
             continue
         if unify(pre, ct) is not None:
