@@ -364,41 +364,45 @@ def process_belief_event(s: Reasoner, e: Event, priority: float) -> None:
     # 2**53 cycles: the first test of every index entry makes no integer)
     at: float = occ
     span: float = window
-    opc: Concept
-    pc: Concept
     c: Concept
-    op_ev: Event | None
-    pre: Event | None
+    op_ev: Event
+    pre: Event
     b: Event | None
     if not e_is_op:
-        # procedural: <(pre &/ op) =/> e> for an op between pre and e
-        snapshot = list(s.time_index)
-        for opc in snapshot:
-            op_ev = opc.belief_spike
-            if (
-                op_ev is None
-                or not opc.term.is_op
-                or op_ev.creation_time >= now
-                or op_ev.occurrence_time >= occ
-                or abs(op_ev.occurrence_time - occ) >= window
-                or abs(opc.selected_time - occ) >= window
-            ):
+        # procedural: <(pre &/ op) =/> e> for an op between pre and e. One pass over
+        # the index finds the operation events in the window and the precondition
+        # events that pass every test but the one against the operation's time, in
+        # the index's order; the pairs are made after it. (``_induce`` changes no
+        # concept's event, selection time or term, nor any event, so what the pass
+        # sees holds while the pairs are made; and the tests are pure reads, so
+        # their order is free: the time window, which excludes most of the index,
+        # comes first.)
+        op_events: list[Event] = []
+        pre_events: list[Event] = []
+        for c in s.time_index:
+            b = c.belief_spike
+            if b is None:
                 continue
-            # (the tests are pure reads, so their order is free: the time window,
-            # which excludes most of the index, comes first)
-            for pc in snapshot:
-                pre = pc.belief_spike
+            if c.term.is_op:
                 if (
-                    pre is None
-                    or abs(pre.occurrence_time - at) >= span
-                    or pc.term.is_op
-                    or pre.creation_time >= now
-                    or pre.occurrence_time >= op_ev.occurrence_time
-                    or abs(pc.selected_time - occ) >= window
-                    or pc.term.op in ("==>", "<=>")
-                    or pc.term is e.term
-                    or overlap(pre.stamp, e.stamp)
+                    b.creation_time >= now
+                    or b.occurrence_time >= occ
+                    or abs(b.occurrence_time - occ) >= window
+                    or abs(c.selected_time - occ) >= window
                 ):
+                    continue
+                op_events.append(b)
+            elif not (
+                abs(b.occurrence_time - at) >= span
+                or b.creation_time >= now
+                or abs(c.selected_time - occ) >= window
+                or c.term.op in ("==>", "<=>")
+                or c.term is e.term
+            ):
+                pre_events.append(b)
+        for op_ev in op_events:
+            for pre in pre_events:
+                if pre.occurrence_time >= op_ev.occurrence_time or overlap(pre.stamp, e.stamp):
                     continue
                 _induce(s, pre, op_ev, e, priority)
     # temporal: <c =/> e> for recent non-op events, and the sequence (c &/ e)
