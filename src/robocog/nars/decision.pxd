@@ -17,3 +17,5 @@ from robocog.nars.sensorimotor cimport executable, split_precondition
 cpdef bint _ground(Term t)
 cpdef bint _self_operation(Term op)
 cpdef list _preconditions(Reasoner s, Term pre)
+cpdef bint _has_measurement(Term t)
+cpdef dict _unified(Term general, Term specific)

@@ -55,7 +55,45 @@ def _measurement(a: Term) -> tuple[str, float] | None:
 
 
 def _has_measurement(t: Term) -> bool:
+    found = _MEASURED.get(t)
+    if found is None:  # (a function of the term: every goal asks it of the same ones)
+        found = _remember(_MEASURED, t, _names_measurement(t))
+    return found
+
+
+def _names_measurement(t: Term) -> bool:
     return any(_measurement(a) is not None for a in t.atoms())
+
+
+#: results of pure functions of interned terms that the goals ask again and again,
+#: kept here: whether a term names a measurement; unify(general, specific) for
+#: the preconditions and consequences that goals meet
+_MEASURED: dict[Term, bool] = {}
+_UNIFIED: dict[tuple[Term, Term], dict[Term, Term] | None] = {}
+
+#: "not yet known" in those
+_UNKNOWN = object()
+
+#: entries a remembered-results dict holds before it starts afresh
+_CACHE_SIZE = 4096
+
+
+def _remember(cache: dict, key: object, value: object) -> object:
+    """Store ``value`` under ``key`` in ``cache``, emptied first when it is full (its
+    results are pure, so starting afresh only costs recomputation), and return it."""
+    if len(cache) >= _CACHE_SIZE:
+        cache.clear()
+    cache[key] = value
+    return value
+
+
+def _unified(general: Term, specific: Term) -> dict[Term, Term] | None:
+    """``unify(general, specific)``, remembered: nobody changes the bindings returned."""
+    key = (general, specific)
+    b = _UNIFIED.get(key, _UNKNOWN)
+    if b is _UNKNOWN:
+        b = _remember(_UNIFIED, key, unify(general, specific))
+    return b
 
 
 def _numeric_similarity(general: Term, specific: Term, distance: float) -> float | None:
@@ -271,7 +309,7 @@ def _preconditions(s: Reasoner, pre: Term) -> list[Event]:
                 continue
         if ct.has_indep_var or ct.has_dep_var or ct.has_query_var:
             continue
-        if unify(pre, ct) is not None:
+        if _unified(pre, ct) is not None:
             out.append(c.belief_spike)
     return out
 
@@ -290,11 +328,11 @@ def _goal_concepts(s: Reasoner, g: Event, c: Concept) -> list[tuple[Concept, dic
             if gop is not None and post.term.op is not None and post.term.op != gop:
                 continue  # what unify would refuse first, either way round
             if post.term.has_var:
-                b = unify(post.term, g.term)
+                b = _unified(post.term, g.term)
                 if b is not None:
                     seen.add(post)
                     out.append((post, b))
-            elif general_goal and unify(g.term, post.term) is not None:
+            elif general_goal and _unified(g.term, post.term) is not None:
                 seen.add(post)  # a goal with variables is served by its instances
                 out.append((post, {}))
     return out
