@@ -238,8 +238,8 @@ def forward_links(s: Reasoner) -> None:
         if last is not None and last.creation_time >= oldest and not c.term.has_var:
             fresh.append(c)
     limit = cfg.top_k_declarative_implications * 4
-    consequences = _CONSEQUENCES
     found: object
+    known: dict
     for c in fresh:
         spike = c.belief_spike
         term = c.term
@@ -254,6 +254,12 @@ def forward_links(s: Reasoner) -> None:
                 s.links_by_subject.get(term, {}).pop(link, None)
                 continue
             a, b = link.args
+            # the consequence of each side is a function of the link and the term:
+            # the same concept meets the same link at every cycle while its event
+            # is fresh, so it is kept, per link and side
+            sides = _CONSEQUENCES.get(link)
+            if sides is None:
+                sides = _remember(_CONSEQUENCES, link, ({}, {}), 256)
             # (each side of ``<=>`` in turn, chosen without building pairs of sides)
             for side in range(2 if link.op == "<=>" else 1):
                 if side == 0:
@@ -262,17 +268,14 @@ def forward_links(s: Reasoner) -> None:
                 else:
                     cond = b
                     concl = a
-                if cond.op is not None and cond.op != term.op:
+                if not _may_unify(cond, term):
                     continue  # what unify would say first, without the call
-                # the consequence is a function of the three terms: the same concept
-                # meets the same link at every cycle while its event is fresh
-                key = (cond, concl, term)
-                found = consequences.get(key, _UNKNOWN)
+                known = sides[side]
+                found = known.get(term, _UNKNOWN)
                 if found is _UNKNOWN:
                     bind = unify(cond, term)
-                    found = _remember(
-                        consequences, key, None if bind is None else apply(concl, bind)
-                    )
+                    consequence = None if bind is None else apply(concl, bind)
+                    found = _remember(known, term, consequence, 1024)
                 if found is None:
                     continue
                 target = found
@@ -300,9 +303,29 @@ def forward_links(s: Reasoner) -> None:
                 note_event(s, tcon)
 
 
-#: (condition, conclusion, event term) -> the conclusion with the bindings that make the
-#: condition the event's term, or None when none do (see ``forward_links``)
-_CONSEQUENCES: dict[tuple[Term, Term, Term], Term | None] = {}
+#: link -> for each side taken as the condition, event term -> the other side with the
+#: bindings that make the condition the event's term, or None when none do (see
+#: ``forward_links``)
+_CONSEQUENCES: dict[Term, tuple[dict[Term, Term | None], dict[Term, Term | None]]] = {}
+
+
+def _may_unify(general: Term, specific: Term) -> bool:
+    """False when ``unify(general, specific)`` is sure to fail at its first look:
+    another connector or number of components, or another term where ``general``
+    has a component without variables (ground terms are interned); else True, and
+    unify decides."""
+    if general.op is None:
+        return True
+    ga = general.args
+    sa = specific.args
+    if general.op != specific.op or len(ga) != len(sa):
+        return False
+    x: Term
+    for i in range(len(ga)):
+        x = ga[i]
+        if not x.has_var and x is not sa[i]:
+            return False
+    return True
 
 
 # -------------------------------------------------------------- induction
