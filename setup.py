@@ -39,6 +39,7 @@ ENGINE_MODULES = (
     "matchers",
     "spikegroups",
     "sensorimotor",
+    "links",
     "decision",
     "goalreasoning",
     "declarative",

@@ -7,7 +7,7 @@ modules below: ``sensorimotor`` for a selected belief event, ``decision`` for go
 
 from __future__ import annotations
 
-from . import decision, declarative, memorize, sensorimotor
+from . import decision, declarative, links, memorize, sensorimotor
 from .event import ETERNAL, Event
 from .inference import Derivation, apply_double, apply_single, rule_table, special
 from .memory import Concept
@@ -42,7 +42,7 @@ def cycle(s: Reasoner) -> None:
             sensorimotor.process_belief_event(s, e, priority)
     # 3. Let the events that just happened travel forward through ==> and <=> beliefs,
     #    and (ONA 0.9.3) the fresh eternal beliefs through ==> beliefs
-    sensorimotor.forward_links(s)
+    links.forward_links(s)
     if s.config.declarative_implications_cycle_process:
         declarative.forward_eternal(s, memorize.on_new_belief)
     # 4. Process the goals layer by layer, deriving subgoals, until one is decided on;

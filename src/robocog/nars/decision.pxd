@@ -9,7 +9,7 @@ from robocog.nars.stamp cimport merge
 from robocog.nars.event cimport Event, Implication, revised_or_chosen
 from robocog.nars.memory cimport Concept
 from robocog.nars.table cimport Table
-from robocog.nars.unify cimport apply, unify
+from robocog.nars.unify cimport apply, may_unify, unify
 from robocog.nars.state cimport Reasoner, emit, shows
 from robocog.nars.sensorimotor cimport executable, split_precondition
 
@@ -17,5 +17,5 @@ from robocog.nars.sensorimotor cimport executable, split_precondition
 cpdef bint _ground(Term t)
 cpdef bint _self_operation(Term op)
 cpdef list _preconditions(Reasoner s, Term pre)
-cpdef bint _has_measurement(Term t)
-cpdef dict _unified(Term general, Term specific)
+cpdef bint _has_measurement(Reasoner s, Term t)
+cpdef dict _unified(Reasoner s, Term general, Term specific)

@@ -23,7 +23,7 @@ from .stamp import fmt, merge
 from .state import Reasoner, emit, rand, shows
 from .terms import SEQUENCE, Term, atom
 from .truth import Truth, expectation
-from .unify import apply, unify
+from .unify import apply, may_unify, unify
 
 if TYPE_CHECKING:
     from .memory import Concept
@@ -54,10 +54,10 @@ def _measurement(a: Term) -> tuple[str, float] | None:
         return None
 
 
-def _has_measurement(t: Term) -> bool:
-    found = _MEASURED.get(t)
+def _has_measurement(s: Reasoner, t: Term) -> bool:
+    found = s.measured.get(t)
     if found is None:  # (a function of the term: every goal asks it of the same ones)
-        found = _remember(_MEASURED, t, _names_measurement(t))
+        found = _remember(s.measured, t, _names_measurement(t))
     return found
 
 
@@ -65,16 +65,10 @@ def _names_measurement(t: Term) -> bool:
     return any(_measurement(a) is not None for a in t.atoms())
 
 
-#: results of pure functions of interned terms that the goals ask again and again,
-#: kept here: whether a term names a measurement; unify(general, specific) for
-#: the preconditions and consequences that goals meet
-_MEASURED: dict[Term, bool] = {}
-_UNIFIED: dict[tuple[Term, Term], dict[Term, Term] | None] = {}
-
-#: "not yet known" in those
+#: "not yet known" in the goal caches of the reasoner
 _UNKNOWN = object()
 
-#: entries a remembered-results dict holds before it starts afresh
+#: entries a goal cache holds before it starts afresh
 _CACHE_SIZE = 4096
 
 
@@ -87,12 +81,12 @@ def _remember(cache: dict, key: object, value: object) -> object:
     return value
 
 
-def _unified(general: Term, specific: Term) -> dict[Term, Term] | None:
+def _unified(s: Reasoner, general: Term, specific: Term) -> dict[Term, Term] | None:
     """``unify(general, specific)``, remembered: nobody changes the bindings returned."""
     key = (general, specific)
-    b = _UNIFIED.get(key, _UNKNOWN)
+    b = s.unified.get(key, _UNKNOWN)
     if b is _UNKNOWN:
-        b = _remember(_UNIFIED, key, unify(general, specific))
+        b = _remember(s.unified, key, unify(general, specific))
     return b
 
 
@@ -268,7 +262,7 @@ def _preconditions(s: Reasoner, pre: Term) -> list[Event]:
         c = mem.find(pre)
         if c is not None and c.belief_spike is not None:
             return [c.belief_spike]
-        if not _has_measurement(pre):
+        if not _has_measurement(s, pre):
             return []
         # numeric similarity: B_0.8 stands in for B_0.9, weakened by their distance
         out_n: list[Event] = []
@@ -283,33 +277,19 @@ def _preconditions(s: Reasoner, pre: Term) -> list[Event]:
                 out_n.append(Event(pre, b.type, t, b.stamp, b.occurrence_time, b.creation_time))
         return out_n
     out = []
-    # (the tests are pure reads, so their order is free: another connector or arity,
-    # or another term where the precondition has a component without variables, is
-    # what unify would refuse, and the groundness test is ``_ground`` written out;
-    # the index has hundreds of entries, most of them refused so, without the call)
-    pop = pre.op
-    pargs = pre.args
-    n = len(pargs)
+    # (the tests are pure reads, so their order is free: ``may_unify`` refuses most
+    # of the index's hundreds of terms without a call of unify, and the groundness
+    # test is ``_ground`` written out)
     ct: Term
-    x: Term
     for c in s.time_index:
         if c.belief_spike is None:
             continue
         ct = c.term
-        if pop is not None:
-            if ct.op != pop or len(ct.args) != n:
-                continue
-            clash = False
-            for i in range(n):
-                x = pargs[i]
-                if not x.has_var and x is not ct.args[i]:
-                    clash = True
-                    break
-            if clash:
-                continue
+        if not may_unify(pre, ct):
+            continue
         if ct.has_indep_var or ct.has_dep_var or ct.has_query_var:
             continue
-        if _unified(pre, ct) is not None:
+        if _unified(s, pre, ct) is not None:
             out.append(c.belief_spike)
     return out
 
@@ -328,11 +308,11 @@ def _goal_concepts(s: Reasoner, g: Event, c: Concept) -> list[tuple[Concept, dic
             if gop is not None and post.term.op is not None and post.term.op != gop:
                 continue  # what unify would refuse first, either way round
             if post.term.has_var:
-                b = _unified(post.term, g.term)
+                b = _unified(s, post.term, g.term)
                 if b is not None:
                     seen.add(post)
                     out.append((post, b))
-            elif general_goal and _unified(g.term, post.term) is not None:
+            elif general_goal and _unified(s, g.term, post.term) is not None:
                 seen.add(post)  # a goal with variables is served by its instances
                 out.append((post, {}))
     return out

@@ -36,6 +36,9 @@ cdef class Reasoner:
     cdef public dict failures
     cdef public double failures_for
     cdef public dict merged
+    cdef public dict consequences
+    cdef public dict unified
+    cdef public dict measured
 
 cpdef emit(Reasoner s, str line)
 cpdef bint shows(Reasoner s, double priority)

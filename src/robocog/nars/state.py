@@ -83,6 +83,9 @@ class Reasoner:
         "failures",
         "failures_for",
         "merged",
+        "consequences",
+        "unified",
+        "measured",
     )
 
     def __init__(self, config: Config, seed: int) -> None:
@@ -147,6 +150,14 @@ class Reasoner:
         self.failures_for: float
         #: (event stamp, link stamp, size) -> their merge: a prediction's stamp
         self.merged: dict[tuple[tuple[int, ...], tuple[int, ...], int], tuple[int, ...]]
+        #: declarative link -> for each side as the condition, event term -> the other
+        #: side instantiated for that term, or None (``links.forward_links``)
+        self.consequences: dict[Term, tuple[dict[Term, Term | None], dict[Term, Term | None]]]
+        # -- goal caches (pure functions of their keys)
+        #: (general, specific) -> unify(general, specific), for goals' preconditions
+        self.unified: dict[tuple[Term, Term], dict[Term, Term] | None]
+        #: term -> whether it names a measured value (``decision._has_measurement``)
+        self.measured: dict[Term, bool]
         clear(self)
 
 
@@ -175,7 +186,7 @@ def clear(s: Reasoner) -> None:
 
 
 def clear_caches(s: Reasoner) -> None:
-    """Empty the sensorimotor caches and the fresh beliefs of the declarative pass (after
+    """Empty the sensorimotor and goal caches and the fresh beliefs of the declarative pass (after
     a reset, or when a saved state is taken: a memory file keeps neither)."""
     s.groups = None
     s.outcomes = {}
@@ -185,6 +196,9 @@ def clear_caches(s: Reasoner) -> None:
     s.failures = {}
     s.failures_for = -1.0
     s.merged = {}
+    s.consequences = {}
+    s.unified = {}
+    s.measured = {}
     s.fresh_beliefs = {}
 
 

@@ -17,6 +17,25 @@ def unify(general: Term, specific: Term, query_only: bool = False) -> Bindings |
     return b if _unify(general, specific, b, query_only) else None
 
 
+def may_unify(general: Term, specific: Term) -> bool:
+    """False when ``unify(general, specific)`` is sure to fail at its first look:
+    another connector or number of components, or another term where ``general`` has
+    a component without variables (ground terms are interned); else True, and unify
+    decides. A test of a few fields, for loops that meet many terms few of which match."""
+    if general.op is None:
+        return True
+    ga = general.args
+    sa = specific.args
+    if general.op != specific.op or len(ga) != len(sa):
+        return False
+    x: Term
+    for i in range(len(ga)):
+        x = ga[i]
+        if not x.has_var and x is not sa[i]:
+            return False
+    return True
+
+
 def _unify(g: Term, s: Term, b: Bindings, query_only: bool) -> bool:
     if g is s and not g.has_var:
         return True
