@@ -328,8 +328,8 @@ def process_belief_event(s: Reasoner, e: Event, priority: float) -> None:
 def _activate_sequence(s: Reasoner, se: Event) -> None:
     """A sequence that just happened: its concept gets the event, it is not queued."""
     mem = s.memory
-    c = mem.conceptualize(se.term, s.time)
-    old = c.belief_spike
+    c: Concept = mem.conceptualize(se.term, s.time)
+    old: Event | None = c.belief_spike
     if old is None or old.occurrence_time < se.occurrence_time:
         c.belief_spike = se
     c.selected_time = s.time
