@@ -344,6 +344,10 @@ def _best_candidate(s: Reasoner, g: Event, c: Concept) -> Decision | None:
     best: Decision | None = None
     best_cx = 10**9
     vetoes: dict[Term, bool] = {}
+    # (declared for the compiled engine: concepts, links and events read as structs)
+    post: Concept
+    imp: Implication
+    spike: Event
     for post, bind in _goal_concepts(s, g, c):
         tables = post.precondition_beliefs
         if tables is None:
@@ -424,6 +428,12 @@ def _outcomes_acceptable(s: Reasoner, op: Term, opi: int) -> bool:
     now = s.time
     mem = s.memory
     acc: Event | None = None
+    # (declared for the compiled engine: concepts, links and events read as structs)
+    gc: Concept
+    gs: Event | None
+    imp: Implication
+    prec: Concept | None
+    spike: Event | None
     for gc in s.recent_goal_concepts:
         gs = gc.goal_spike
         if gs is None or now - gs.occurrence_time >= cfg.neg_goal_age_max:
@@ -453,6 +463,10 @@ def _subgoals(s: Reasoner, g: Event, c: Concept, priority: float, layer: int) ->
     subgoal one layer down, goal ⊗ implication, priority ``priority`` × E."""
     cfg = s.config
     now = s.time
+    # (declared for the compiled engine: concepts, links and events read as structs)
+    post: Concept
+    imp: Implication
+    gs: Event
     for post, bind in _goal_concepts(s, g, c):
         if post is not c and not bind and not post.term.has_var:
             continue  # an instance of a general goal: ONA passes the goal upward only
