@@ -3,9 +3,9 @@
 implications).
 
 Functions over a :class:`~robocog.nars.state.Reasoner`. An eternal ``==>``/``<=>``
-belief is indexed by its condition (:func:`note_link`); at every cycle, each concept of
-the occurrence-time index whose event is fresh meets the links whose condition it
-instantiates, and the consequence gets a belief event at the same time
+belief is indexed by its condition (``sensorimotor.note_link``); at every cycle, each
+concept of the occurrence-time index whose event is fresh meets the links whose
+condition it instantiates, and the consequence gets a belief event at the same time
 (:func:`forward_links`).
 """
 
@@ -39,18 +39,6 @@ def _remember(cache: dict[Term, object], key: Term, value: object, size: int) ->
         cache.clear()
     cache[key] = value
     return value
-
-
-def note_link(s: Reasoner, term: Term) -> None:
-    """Index an eternal ``==>``/``<=>`` belief by its condition (both sides of ``<=>``)."""
-    sides = [term.args[0]] if term.op == "==>" else [term.args[0], term.args[1]]
-    for side in sides:
-        if side.has_var:
-            s.general_links[term] = None
-            while len(s.general_links) > 4 * s.config.table_size:
-                del s.general_links[next(iter(s.general_links))]
-        else:
-            s.links_by_subject.setdefault(side, {})[term] = None
 
 
 def forward_links(s: Reasoner) -> None:

@@ -17,10 +17,9 @@ from . import truth as tf
 from .decision import add_goal
 from .declarative import note_fresh_belief
 from .event import BELIEF, ETERNAL, GOAL, Event, revised_or_chosen
-from .links import note_link
 from .memory import Concept, EventQueue
 from .rules import rejected
-from .sensorimotor import add_implication, note_event
+from .sensorimotor import add_implication, note_event, note_link
 from .stamp import Stamp, fmt
 from .state import Reasoner, emit, shows
 from .terms import F_COMPOSED, F_IMAGE_ARGUMENT, TEMPORAL_IMPLICATION, Term

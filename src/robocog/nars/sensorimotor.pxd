@@ -13,15 +13,6 @@ from robocog.nars.table cimport Table
 from robocog.nars.unify cimport apply, unify
 from robocog.nars.state cimport Reasoner, emit, shows
 
-cdef class _Pattern:
-    cdef public Term source
-    cdef public list keys
-    cdef public object key
-    cdef public long uses
-    cdef public dict matches
-
-    cpdef dict match(self, Term term)
-
 # the C signatures of the functions that the processing of every selected event calls
 # many times over (induction and what it stores)
 cpdef tuple split_precondition(Term subject)
@@ -34,3 +25,13 @@ cpdef _keys_of(Reasoner s, Term term)
 cpdef void _activate_sequence(Reasoner s, Event se)
 cpdef void _induce(Reasoner s, Event pre, Event op, Event post, double priority)
 cpdef tuple _variable_forms(Reasoner s, Term term)
+
+cdef class _Pattern:
+    cdef public Term source
+    cdef public list keys
+    cdef public object key
+    cdef public long uses
+    cdef public dict matches
+
+    cpdef dict match(self, Term term)
+

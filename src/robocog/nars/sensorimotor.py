@@ -192,6 +192,19 @@ def forget_concept(s: Reasoner, c: Concept) -> None:
                     del s.links_by_subject[side]
 
 
+# ------------------------------------------------------ declarative links
+def note_link(s: Reasoner, term: Term) -> None:
+    """Index an eternal ``==>``/``<=>`` belief by its condition (both sides of ``<=>``)."""
+    sides = [term.args[0]] if term.op == "==>" else [term.args[0], term.args[1]]
+    for side in sides:
+        if side.has_var:
+            s.general_links[term] = None
+            while len(s.general_links) > 4 * s.config.table_size:
+                del s.general_links[next(iter(s.general_links))]
+        else:
+            s.links_by_subject.setdefault(side, {})[term] = None
+
+
 # -------------------------------------------------------------- induction
 def note_event(s: Reasoner, c: Concept) -> None:
     """Remember that ``c`` just received an event (newest first)."""

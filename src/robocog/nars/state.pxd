@@ -25,9 +25,12 @@ cdef class Reasoner:
     cdef public dict table_index
     cdef public dict links_by_subject
     cdef public dict general_links
+    cdef public dict consequences
     cdef public dict fresh_beliefs
     cdef public list goal_layers
     cdef public dict recent_goal_concepts
+    cdef public dict unified
+    cdef public dict measured
     cdef public object groups
     cdef public dict outcomes
     cdef public dict patterns
@@ -36,9 +39,6 @@ cdef class Reasoner:
     cdef public dict failures
     cdef public double failures_for
     cdef public dict merged
-    cdef public dict consequences
-    cdef public dict unified
-    cdef public dict measured
 
 cpdef emit(Reasoner s, str line)
 cpdef bint shows(Reasoner s, double priority)

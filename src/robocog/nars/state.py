@@ -72,9 +72,12 @@ class Reasoner:
         "table_index",
         "links_by_subject",
         "general_links",
+        "consequences",
         "fresh_beliefs",
         "goal_layers",
         "recent_goal_concepts",
+        "unified",
+        "measured",
         "groups",
         "outcomes",
         "patterns",
@@ -83,9 +86,6 @@ class Reasoner:
         "failures",
         "failures_for",
         "merged",
-        "consequences",
-        "unified",
-        "measured",
     )
 
     def __init__(self, config: Config, seed: int) -> None:
@@ -124,6 +124,9 @@ class Reasoner:
         #: declarative links by subject: ground subject -> {link term}; general ones apart
         self.links_by_subject: dict[Term, dict[Term, None]]
         self.general_links: dict[Term, None]
+        #: (a cache) link -> for each side as the condition, event term -> the other
+        #: side instantiated for that term, or None (``links.forward_links``)
+        self.consequences: dict[Term, tuple[dict[Term, Term | None], dict[Term, Term | None]]]
         #: concepts whose eternal belief was made or revised lately (oldest first), for
         #: ONA 0.9.3's declarative pass (``declarative_implications_cycle_process``)
         self.fresh_beliefs: dict[Concept, None]
@@ -132,6 +135,11 @@ class Reasoner:
         self.goal_layers: list[EventQueue]
         #: concepts that recently received a goal (newest last), for the negative-outcome veto
         self.recent_goal_concepts: dict[Concept, None]
+        # -- goal caches (pure functions of their keys)
+        #: (general, specific) -> unify(general, specific), for goals' preconditions
+        self.unified: dict[tuple[Term, Term], dict[Term, Term] | None]
+        #: term -> whether it names a measured value (``decision._has_measurement``)
+        self.measured: dict[Term, bool]
         # -- sensorimotor caches (pure functions of their keys, or rebuilt on demand)
         #: the time index's concepts grouped by term shape (``sensorimotor.spike_groups``),
         #: or None until anticipation first needs them
@@ -150,14 +158,6 @@ class Reasoner:
         self.failures_for: float
         #: (event stamp, link stamp, size) -> their merge: a prediction's stamp
         self.merged: dict[tuple[tuple[int, ...], tuple[int, ...], int], tuple[int, ...]]
-        #: declarative link -> for each side as the condition, event term -> the other
-        #: side instantiated for that term, or None (``links.forward_links``)
-        self.consequences: dict[Term, tuple[dict[Term, Term | None], dict[Term, Term | None]]]
-        # -- goal caches (pure functions of their keys)
-        #: (general, specific) -> unify(general, specific), for goals' preconditions
-        self.unified: dict[tuple[Term, Term], dict[Term, Term] | None]
-        #: term -> whether it names a measured value (``decision._has_measurement``)
-        self.measured: dict[Term, bool]
         clear(self)
 
 
@@ -186,8 +186,11 @@ def clear(s: Reasoner) -> None:
 
 
 def clear_caches(s: Reasoner) -> None:
-    """Empty the sensorimotor and goal caches and the fresh beliefs of the declarative pass (after
-    a reset, or when a saved state is taken: a memory file keeps neither)."""
+    """Empty the sensorimotor and goal caches and the fresh beliefs of the declarative
+    pass (after a reset, or when a saved state is taken: a memory file keeps neither)."""
+    s.consequences = {}
+    s.unified = {}
+    s.measured = {}
     s.groups = None
     s.outcomes = {}
     s.patterns = {}
@@ -196,9 +199,6 @@ def clear_caches(s: Reasoner) -> None:
     s.failures = {}
     s.failures_for = -1.0
     s.merged = {}
-    s.consequences = {}
-    s.unified = {}
-    s.measured = {}
     s.fresh_beliefs = {}
 
 
