@@ -34,4 +34,3 @@ cdef class _Pattern:
     cdef public dict matches
 
     cpdef dict match(self, Term term)
-
