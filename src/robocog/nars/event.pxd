@@ -2,7 +2,7 @@
 # event.py stays the only source of behaviour; see setup.py.
 
 from robocog.nars.terms cimport Term
-from robocog.nars.truth cimport Truth, projection, revision
+from robocog.nars.truth cimport Truth, decay, projection, revision
 from robocog.nars.stamp cimport merge, overlap
 
 cdef class _Record:
@@ -31,4 +31,10 @@ cdef class Implication(_Record):
     cdef public long creation_time
     cdef public Term source
 
+cpdef Event event_of(
+    Term term, str type, Truth truth, tuple stamp, long occurrence_time, long creation_time
+)
 cpdef tuple revised_or_chosen(Event old, Event new, long stamp_size, bint fresh=*)
+cpdef Implication implication_of(
+    Term term, Truth truth, tuple stamp, double dt, long creation_time, Term source
+)

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from .stamp import Size, Stamp, fmt, merge, overlap
 from .terms import Term
-from .truth import Cycle, Truth, projection, revision
+from .truth import Cycle, Truth, decay, projection, revision
 
 ETERNAL = -1
 BELIEF = "."
@@ -106,7 +106,8 @@ class Event(_Record):
         """``self.projected(target_time).truth.c``, without making the projected event."""
         if self.occurrence_time == ETERNAL or self.occurrence_time == target_time:
             return self.truth.c
-        return projection(self.truth, self.occurrence_time, target_time).c
+        # (projection's product, without making the projected truth)
+        return self.truth.c * decay(abs(target_time - self.occurrence_time))
 
     def projected(self, target_time: Cycle) -> Event:
         """This event seen from ``target_time`` (confidence decays with distance); the
@@ -136,6 +137,30 @@ class Event(_Record):
         """ONA's ``Input:``/``Derived:`` payload for this event."""
         dt = f"dt={self.dt:f} " if self.term.op == "=/>" else ""
         return f"{dt}{self.sentence()} Priority={priority:f} Stamp={fmt(self.stamp)} {self.truth}"
+
+
+def event_of(
+    term: Term,
+    type: str,  # noqa: A002 - ONA's name for the punctuation
+    truth: Truth,
+    stamp: Stamp,
+    occurrence_time: Cycle,
+    creation_time: Cycle,
+) -> Event:
+    """``Event(term, type, truth, stamp, occurrence_time, creation_time)`` made without
+    the keyword-capable constructor call: anticipation predicts hundreds of events per
+    input (compiled, this allocates the struct and sets its fields)."""
+    e: Event = Event.__new__(Event)
+    e.term = term
+    e.type = type
+    e.truth = truth
+    e.stamp = stamp
+    e.occurrence_time = occurrence_time
+    e.creation_time = creation_time
+    e.dt = 0.0
+    e.processed = False
+    e.is_input = False
+    return e
 
 
 def revise_events(a: Event, b: Event, stamp_size: int) -> Event:
@@ -197,3 +222,23 @@ class Implication(_Record):
         self.dt = dt
         self.creation_time = creation_time
         self.source = source
+
+
+def implication_of(
+    term: Term,
+    truth: Truth,
+    stamp: Stamp,
+    dt: float,
+    creation_time: Cycle,
+    source: Term | None,
+) -> Implication:
+    """``Implication(term, truth, stamp, dt, creation_time, source)`` made without the
+    keyword-capable constructor call: anticipation revises hundreds of links per input."""
+    imp: Implication = Implication.__new__(Implication)
+    imp.term = term
+    imp.truth = truth
+    imp.stamp = stamp
+    imp.dt = dt
+    imp.creation_time = creation_time
+    imp.source = source
+    return imp

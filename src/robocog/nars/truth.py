@@ -245,12 +245,17 @@ def eternalize(a: Truth) -> Truth:
 _DECAY_POWERS = [PROJECTION_DECAY**d for d in range(1024)]
 
 
+def decay(d: Cycle) -> float:
+    """``PROJECTION_DECAY ** d``, the factor of a confidence projected ``d >= 0`` cycles
+    away (read from a table for the distances that occur)."""
+    return _DECAY_POWERS[d] if d < 1024 else _DECAY**d
+
+
 def projection(a: Truth, source_time: Cycle, target_time: Cycle) -> Truth:
     """Confidence decays by 0.8 per cycle of distance; eternal (-1) is unchanged."""
     if source_time == -1:
         return a
-    d = abs(target_time - source_time)
-    return truth_of(a.f, a.c * (_DECAY_POWERS[d] if d < 1024 else _DECAY**d))
+    return truth_of(a.f, a.c * decay(abs(target_time - source_time)))
 
 
 def anonymous_analogy(a: Truth, b: Truth) -> Truth:
