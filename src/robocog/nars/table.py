@@ -6,18 +6,45 @@ operation id, so a decision looks only at the implications that can reach its go
 
 from __future__ import annotations
 
-from bisect import bisect_left, bisect_right
-
-from .event import Implication
+from .event import Implication, implication_of
 from .stamp import Size, Stamp, merge, overlap
 from .terms import Term
 from .truth import Truth, c2w, expectation, pooled
+
+#: a position in a table (the compiled engine declares it a C Py_ssize_t)
+Index = int
+
+
+def _bisect_left(neg: list, e: float, lo: Index, hi: Index) -> Index:
+    """``bisect.bisect_left(neg, e, lo, hi)`` written out: compiled, a loop over the
+    floats as C doubles instead of a call comparing float objects (anticipation revises
+    hundreds of entries per input)."""
+    while lo < hi:
+        mid = (lo + hi) >> 1
+        v = neg[mid]
+        if v < e:
+            lo = mid + 1
+        else:
+            hi = mid
+    return lo
+
+
+def _bisect_right(neg: list, e: float, lo: Index, hi: Index) -> Index:
+    """``bisect.bisect_right(neg, e, lo, hi)`` written out, as :func:`_bisect_left`."""
+    while lo < hi:
+        mid = (lo + hi) >> 1
+        v = neg[mid]
+        if e < v:
+            hi = mid
+        else:
+            lo = mid + 1
+    return lo
 
 
 class Table:
     """Add-and-revise table of implications, best expectation first."""
 
-    __slots__ = ("items", "size", "_neg", "_entry")
+    __slots__ = ("items", "size", "_neg", "_predictive", "_concurrent")
 
     def __init__(self, size: int) -> None:
         self.items: list[Implication] = []
@@ -25,13 +52,16 @@ class Table:
         #: minus each item's expectation, ascending: kept beside the items so that
         #: placing a revised link is a bisection, not a recomputation of every entry
         self._neg: list[float] = []
-        #: (term, whether dt is 0) -> the one entry of that term and kind; anticipation
-        #: revises hundreds of entries per input, so finding one must not be a scan
-        self._entry: dict[tuple[Term, bool], Implication] = {}
+        #: term -> the one entry of that term with a nonzero offset, and with offset 0
+        #: (a predictive and a concurrent link of one term stay apart); anticipation
+        #: revises hundreds of entries per input, so finding one must not be a scan,
+        #: and the interned term alone is a cheaper key than a (term, kind) pair
+        self._predictive: dict[Term, Implication] = {}
+        self._concurrent: dict[Term, Implication] = {}
 
     def __reduce__(self) -> tuple[object, ...]:
         # by its fields, so that the compiled and the pure engine read each other's saves
-        return (_restored, (self.size, self.items, self._neg, self._entry))
+        return (_restored, (self.size, self.items, self._neg))
 
     def __len__(self) -> int:
         return len(self.items)
@@ -39,19 +69,23 @@ class Table:
     def __iter__(self):  # noqa: ANN204 - iterator of Implication
         return iter(self.items)
 
+    def _entries(self, dt: float) -> dict[Term, Implication]:
+        """The index of the entries whose offset is of the kind of ``dt``."""
+        return self._concurrent if dt == 0.0 else self._predictive
+
     def _insert(self, imp: Implication) -> bool:
         """Place ``imp`` after every entry of equal or higher expectation; False if the
         full table dropped it at once."""
         neg = self._neg
         e = -expectation(imp.truth)
-        i = bisect_right(neg, e)
+        i = _bisect_right(neg, e, 0, len(neg))
         self.items.insert(i, imp)
         neg.insert(i, e)
-        self._entry[imp.term, imp.dt == 0.0] = imp
+        self._entries(imp.dt)[imp.term] = imp
         if len(neg) > self.size:
-            dropped = self.items.pop()
+            dropped: Implication = self.items.pop()
             neg.pop()
-            del self._entry[dropped.term, dropped.dt == 0.0]
+            del self._entries(dropped.dt)[dropped.term]
             return i < self.size
         return True
 
@@ -63,35 +97,42 @@ class Table:
         otherwise only the side it moved to is searched."""
         items = self.items
         neg = self._neg
+        n = len(neg)
         # minus the expectations, written out (this runs for every revision)
         t = old.truth
         e_old = -(t.c * (t.f - 0.5) + 0.5)
-        i = bisect_left(neg, e_old)
+        i = _bisect_left(neg, e_old, 0, n)
         while items[i] is not old:
             i += 1
         t = new.truth
         e = -(t.c * (t.f - 0.5) + 0.5)
-        last = len(neg) - 1
-        if (i == 0 or neg[i - 1] <= e) and (i == last or neg[i + 1] > e):
+        # (the neighbours read into C doubles when compiled, then compared)
+        stays = True
+        if i > 0:
+            v = neg[i - 1]
+            stays = v <= e
+        if stays and i < n - 1:
+            v = neg[i + 1]
+            stays = v > e
+        if stays:
             items[i] = new
             neg[i] = e
         else:
             del items[i]
             del neg[i]
             # the entries before i were <= e_old, those after it >= e_old
-            j = bisect_right(neg, e, i) if e >= e_old else bisect_right(neg, e, 0, i)
+            j = _bisect_right(neg, e, i, n - 1) if e >= e_old else _bisect_right(neg, e, 0, i)
             items.insert(j, new)
             neg.insert(j, e)
-        entry = self._entry
         zero = new.dt == 0.0
-        if zero is not (old.dt == 0.0) or new.term is not old.term:
-            del entry[old.term, old.dt == 0.0]
-        entry[new.term, zero] = new
+        if zero != (old.dt == 0.0) or new.term is not old.term:
+            del self._entries(old.dt)[old.term]
+        self._entries(new.dt)[new.term] = new
 
     def add_and_revise(self, imp: Implication, stamp_size: Size = 10) -> Implication | None:
         """Revise with the entry of the same term (or insert); returns the stored entry."""
         # a concurrent (dt 0) and a predictive (dt > 0) link of one term stay apart
-        old = self._entry.get((imp.term, imp.dt == 0.0))
+        old = self._entries(imp.dt).get(imp.term)
         if old is None:
             return imp if self._insert(imp) else None
         if imp.term.op == "==>" and overlap(old.stamp, imp.stamp):
@@ -105,9 +146,9 @@ class Table:
         imp.source))`` without making that implication: anticipation counts one failure
         (evidence without a stamp) against hundreds of links per input. ``weight`` is
         ``c2w(truth.c)``, the same for all of them."""
-        old = self._entry.get((imp.term, imp.dt == 0.0))
+        old = self._entries(imp.dt).get(imp.term)
         if old is None:
-            self._insert(Implication(imp.term, truth, (), imp.dt, imp.creation_time, imp.source))
+            self._insert(implication_of(imp.term, truth, (), imp.dt, imp.creation_time, imp.source))
             return
         # an empty stamp overlaps nothing: never the ``==>`` case of add_and_revise
         self._revise(old, imp, truth, weight, (), stamp_size)
@@ -129,24 +170,21 @@ class Table:
         kept = old.stamp
         if stamp or len(kept) > stamp_size:
             kept = merge(kept, stamp, stamp_size)
-        revised = Implication(
+        revised = implication_of(
             imp.term, pooled(old.truth, truth, w1, weight), kept, dt, imp.creation_time, imp.source
         )
         self._replace(old, revised)
         return revised
 
 
-def _restored(
-    size: int,
-    items: list[Implication],
-    neg: list[float],
-    entry: dict[tuple[Term, bool], Implication],
-) -> Table:
-    """A table as :meth:`Table.__reduce__` saved it."""
+def _restored(size: int, items: list[Implication], neg: list[float], *_: object) -> Table:
+    """A table as :meth:`Table.__reduce__` saved it (earlier saves add the entry
+    index, which is rebuilt from the items)."""
     table = Table(size)
     table.items = items
     table._neg = neg
-    table._entry = entry
+    for m in items:
+        table._entries(m.dt)[m.term] = m
     return table
 
 
@@ -154,8 +192,4 @@ def restored_table(size: int, items: list[Implication]) -> Table:
     """A table holding ``items`` in their order (best expectation first), as a saved
     memory lists them; the expectations and the entry index are computed as
     :meth:`Table._insert` does."""
-    table = Table(size)
-    table.items = list(items)
-    table._neg = [-expectation(m.truth) for m in items]
-    table._entry = {(m.term, m.dt == 0.0): m for m in items}
-    return table
+    return _restored(size, list(items), [-expectation(m.truth) for m in items])
