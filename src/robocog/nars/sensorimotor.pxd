@@ -3,11 +3,13 @@
 # layout of its own _Pattern.
 # sensorimotor.py stays the only source of behaviour; see setup.py.
 
+cimport cython
+
 from robocog.nars.terms cimport Term, compound
 from robocog.nars.truth cimport Truth, expectation
 from robocog.nars cimport truth as tf
 from robocog.nars.stamp cimport merge, overlap
-from robocog.nars.event cimport Event, Implication, revised_or_chosen
+from robocog.nars.event cimport Event, Implication, event_of, revised_or_chosen
 from robocog.nars.memory cimport Concept
 from robocog.nars.table cimport Table
 from robocog.nars.unify cimport apply, unify
@@ -34,3 +36,20 @@ cdef class _Pattern:
     cdef public dict matches
 
     cpdef dict match(self, Term term)
+
+cdef class _Source:
+    cdef public Event spike
+    cdef public double f
+    cdef public double c
+    cdef public bint weak
+    cdef public dict bind
+    cdef public dict failures
+
+cpdef _Source _source(
+    Reasoner s, Event spike, dict bind, bint as_is, Truth op_truth, double weak, long now
+)
+@cython.locals(n=long, r=double)
+cpdef long _offset(double dt)
+@cython.locals(rdt=long, occ=long)
+cpdef anticipate(Reasoner s, Event e)
+cpdef Event source_spike(Reasoner s, Term source, dict groups=*)

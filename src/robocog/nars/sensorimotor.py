@@ -16,30 +16,18 @@ from typing import TYPE_CHECKING, TypeVar
 
 from . import truth as tf
 from .declarative import predict_negated
-from .event import BELIEF, ETERNAL, Event, Implication, revised_or_chosen
+from .event import BELIEF, ETERNAL, Event, Implication, event_of, revised_or_chosen
 from .rules import hol_component_invalid, introduce_implication_variables
 from .spikegroups import group_add, group_keys, group_remove
 from .stamp import fmt, merge, overlap
 from .state import Reasoner, emit, shows
-from .terms import NEGATION, SEQUENCE, TEMPORAL_IMPLICATION, Term, compound
-from .truth import Truth, expectation
+from .terms import NEGATION, SEQUENCE, TEMPORAL_IMPLICATION, Bindings, Term, compound
+from .truth import Cycle, Truth, expectation
 from .unify import apply, unify
 
 if TYPE_CHECKING:
     from .memory import Concept
     from .table import Table
-
-
-#: what anticipation keeps per precondition term (see ``anticipate``)
-_Source = tuple[
-    Event,
-    float,
-    float,
-    bool,
-    dict[Term, Term] | None,
-    frozenset[int],
-    dict[int, tuple[Truth, float]],
-]
 
 
 #: "not yet known": a precondition not looked up yet in this anticipation, a pattern's
@@ -423,12 +411,10 @@ def anticipate(s: Reasoner, e: Event) -> None:
     # only an exactly-zero predicted frequency still counts; this skips the many
     # implications whose precondition happened long ago without computing them.
     weak = min(0.05, 1.98 * (threshold - 0.5)) if threshold > 0.5 + 1e-9 else 0.0
-    # precondition term -> (its event, the frequency and confidence of that event
-    # projected to now with the operation, whether that is weak, the bindings making
-    # the precondition that event's term, its stamp's ids, the failures counted for
-    # that event's truth by offset); the same precondition serves many implications.
-    # Dropped when an event or the concept store changes below.
-    sources: dict[Term, _Source | None] = {}
+    # precondition term -> what anticipation knows of it (see _Source): the same
+    # precondition serves many implications. Dropped when an event or the concept
+    # store changes below.
+    sources: dict[Term, _Source] = {}
     groups: dict[object, dict[Concept, None]] | None = None
     var_sources: list[Term] = []
     failures = s.failures
@@ -443,18 +429,25 @@ def anticipate(s: Reasoner, e: Event) -> None:
     shows_predictions = cfg.print_predictions
     negations = cfg.anticipation_negated_outcomes
     evictions = mem.evictions
+    # (mem.find and mem.conceptualize of a concept that exists, read from the dict)
+    concepts: dict[Term, Concept] = mem.concepts
     post: Concept
-    oc: Concept
+    oc: Concept | None
     imp: Implication
     it: Truth
     table: Table
     spike: Event
-    pre_f: float
-    pre_c: float
+    src: _Source | None
+    found: Event | None
+    bind: Bindings | None
+    outcome: Term
+    pattern: _Pattern
+    pf: float
+    pc: float
     by_offset: dict[int, tuple[Truth, float]]
     failure: tuple[Truth, float]
     for post in list(targets):
-        if mem.find(post.term) is not post:
+        if concepts.get(post.term) is not post:
             targets.pop(post, None)
             continue
         tables = post.precondition_beliefs
@@ -465,50 +458,32 @@ def anticipate(s: Reasoner, e: Event) -> None:
             source = imp.source
             if source is None:
                 continue
-            # (a miss is common; compiled, raising and catching KeyError costs more)
-            entry = sources.get(source, _UNKNOWN)
-            if entry is _UNKNOWN:
+            src = sources.get(source)
+            if src is None:
                 if source.has_var:
                     var_sources.append(source)
                     if groups is None:
                         groups = spike_groups(s)
-                    spike = source_spike(s, source, groups)
-                    # (source_spike has made the precondition's pattern)
-                    bind = None if spike is None else s.patterns[source].match(spike.term)
-                else:  # what source_spike and unify give for a ground precondition
-                    sc = mem.find(source)
-                    spike = sc.belief_spike if sc is not None else None
-                    bind = None if spike is None or spike.term is not source else {}
-                if spike is None:
-                    entry = None
-                else:
-                    by_offset = failures.get(spike.truth)
-                    if by_offset is None:
-                        by_offset = _remember(failures, spike.truth, {})
-                    if as_is:
-                        pre_i = spike.truth  # ONA 0.9.3: the event as it happened
+                    found = source_spike(s, source, groups)
+                    if found is None:
+                        bind = None
                     else:
-                        pre_i = tf.intersection(
-                            tf.projection(spike.truth, spike.occurrence_time, now), op_truth
-                        )
-                    entry = (
-                        spike,
-                        pre_i.f,
-                        pre_i.c,
-                        pre_i.c < weak,
-                        bind,
-                        frozenset(spike.stamp),
-                        by_offset,
-                    )
-                sources[source] = entry
-            if entry is None:
+                        # (source_spike has made the precondition's pattern)
+                        pattern = s.patterns[source]
+                        bind = pattern.match(found.term)
+                else:  # what source_spike and unify give for a ground precondition
+                    sc = concepts.get(source)
+                    found = sc.belief_spike if sc is not None else None
+                    bind = None if found is None or found.term is not source else {}
+                src = sources[source] = _source(s, found, bind, as_is, op_truth, weak, now)
+            spike = src.spike
+            if spike is None:
                 continue
-            spike, pre_f, pre_c, is_weak, bind, spike_ids, by_offset = entry
             # deduction and its expectation written out (most links stop here);
             # the same operations in the same order as tf.deduction/expectation
             it = imp.truth
-            pf = it.f * pre_f
-            if is_weak and pf != 0.0:
+            pf = it.f * src.f
+            if src.weak and pf != 0.0:
                 continue
             if opi:
                 pre_term, op_term = split_precondition(imp.term.args[0])
@@ -517,16 +492,18 @@ def anticipate(s: Reasoner, e: Event) -> None:
                     continue
                 if unify(apply(op_term, subs), e.term) is None:
                     continue  # same operation, other arguments
-            pc = it.c * pre_c * pf
+            pc = it.c * src.c * pf
             if pc * (pf - 0.5) + 0.5 <= threshold and not (pc < 0.05 and pf == 0.0):
                 continue
             # one failure counted against the link: the same for every link of this
             # precondition truth and offset, at every input
-            rdt = round(imp.dt)  # also the prediction's offset below
+            rdt = _offset(imp.dt)  # also the prediction's offset below
+            by_offset = src.failures
             failure = by_offset.get(rdt)
             if failure is None:
                 failure = by_offset[rdt] = _failure(s, spike.truth, rdt)
             table.add_failure(imp, failure[0], failure[1], stamp_size)
+            bind = src.bind
             if bind is None:
                 continue
             if bind:
@@ -538,23 +515,25 @@ def anticipate(s: Reasoner, e: Event) -> None:
                     outcome = _remember(outcomes, okey, apply(imp.term.args[1], bind))
             else:
                 outcome = imp.term.args[1]
-            if outcome.has_var or not spike_ids.isdisjoint(imp.stamp):
-                continue  # (the stamps overlap)
-            oc = mem.conceptualize(outcome, now)
-            if mem.evictions != evictions:
-                evictions = mem.evictions
-                sources.clear()
-                var_sources.clear()
-                groups = None
+            if outcome.has_var or overlap(spike.stamp, imp.stamp):
+                continue
+            oc = concepts.get(outcome)
+            if oc is None:
+                oc = mem.conceptualize(outcome, now)
+                if mem.evictions != evictions:
+                    evictions = mem.evictions
+                    sources.clear()
+                    var_sources.clear()
+                    groups = None
             oc.use(now, False, boost)
             occ = (spike.occurrence_time if as_is else now) + rdt
             mkey = (spike.stamp, imp.stamp, stamp_size)
             stamp = merged.get(mkey)
             if stamp is None:
                 stamp = _remember(merged, mkey, merge(spike.stamp, imp.stamp, stamp_size))
-            # (deduction; ``truth_of`` rather than Truth's keyword-capable constructor:
-            # predictions are made thousands of times per input)
-            pred = Event(outcome, BELIEF, tf.truth_of(pf, pc), stamp, occ, now)
+            # (deduction; ``truth_of`` and ``event_of`` rather than the keyword-capable
+            # constructors: predictions are made thousands of times per input)
+            pred = event_of(outcome, BELIEF, tf.truth_of(pf, pc), stamp, occ, now)
             if as_is or imp.dt > 0.0:  # (0.9.3: every prediction is one)
                 old = oc.predicted_belief
                 oc.predicted_belief, _ = revised_or_chosen(old, pred, stamp_size, True)
@@ -586,6 +565,68 @@ def anticipate(s: Reasoner, e: Event) -> None:
                     var_sources[:] = kept
 
 
+class _Source:
+    """What anticipation knows of one precondition term during one input."""
+
+    __slots__ = ("spike", "f", "c", "weak", "bind", "failures")
+
+    #: its concept's belief event (or the newest instance's), None if there is none
+    spike: Event | None
+    #: the frequency and confidence of that event projected to now with the operation
+    f: float
+    c: float
+    #: whether that confidence is too weak to lift a prediction (see ``anticipate``)
+    weak: bool
+    #: the bindings making the precondition that event's term (None: it is not)
+    bind: Bindings | None
+    #: the failures counted for that event's truth, by offset
+    failures: dict[int, tuple[Truth, float]]
+
+
+def _source(
+    s: Reasoner,
+    spike: Event | None,
+    bind: Bindings | None,
+    as_is: bool,
+    op_truth: Truth,
+    weak: float,
+    now: Cycle,
+) -> _Source:
+    """The :class:`_Source` of a precondition whose event is ``spike``."""
+    src: _Source = _Source.__new__(_Source)
+    src.spike = spike
+    src.bind = bind
+    if spike is None:
+        return src
+    failures = s.failures
+    by_offset = failures.get(spike.truth)
+    if by_offset is None:
+        by_offset = _remember(failures, spike.truth, {})
+    src.failures = by_offset
+    if as_is:
+        pre_i = spike.truth  # ONA 0.9.3: the event as it happened
+    else:
+        pre_i = tf.intersection(tf.projection(spike.truth, spike.occurrence_time, now), op_truth)
+    src.f = pre_i.f
+    src.c = pre_i.c
+    src.weak = pre_i.c < weak
+    return src
+
+
+def _offset(dt: float) -> int:
+    """``round(dt)`` (halves to even) for an offset, written out so that compiled it is
+    C arithmetic, not a call of the builtin (anticipation rounds hundreds of offsets per
+    input). ``x - int(x)`` is exact for a float, so the comparisons with 1/2 are too;
+    offsets stay far below 2**63, where the compiled engine's integers end."""
+    if dt < 0.0:
+        return -_offset(-dt)
+    n = int(dt)
+    r = dt - n
+    if r > 0.5 or (r == 0.5 and n % 2 == 1):
+        n += 1
+    return n
+
+
 def spike_groups(s: Reasoner) -> dict[object, dict[Concept, None]]:
     """Concepts of the occurrence-time index without variables, grouped so that a
     precondition with variables is unified only against terms that can match it: by
@@ -603,12 +644,15 @@ def spike_groups(s: Reasoner) -> dict[object, dict[Concept, None]]:
     return groups
 
 
-def source_spike(
-    s: Reasoner, source: Term, groups: dict[object, dict[Concept, None]] | None = None
-) -> Event | None:
+#: the groups of ``spike_groups`` (an alias the compiled engine reads as a dict)
+_Groups = dict[object, dict["Concept", None]]
+
+
+def source_spike(s: Reasoner, source: Term, groups: _Groups | None = None) -> Event | None:
     """The belief event of a precondition concept; a concept with variables holds
     the newest event that instantiates it (ONA activates such concepts too)."""
-    c = s.memory.find(source)
+    concepts: dict[Term, Concept] = s.memory.concepts  # (its find, read from the dict)
+    c: Concept | None = concepts.get(source)
     best = c.belief_spike if c is not None else None
     if source.has_var:
         if groups is None:
