@@ -3,7 +3,7 @@
 
 cimport cython
 
-@cython.locals(la=Py_ssize_t, lb=Py_ssize_t, n=Py_ssize_t, i=Py_ssize_t)
+@cython.locals(la=Py_ssize_t, lb=Py_ssize_t, n=Py_ssize_t, m=Py_ssize_t, k=Py_ssize_t)
 cpdef tuple merge(tuple a, tuple b, long size=*)
 @cython.locals(x=long, y=long)
 cpdef bint overlap(tuple a, tuple b)
