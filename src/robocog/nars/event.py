@@ -188,11 +188,13 @@ def revised_or_chosen(
     if old is None:
         return (new if fresh else new.copy()), False
     later = max(old.occurrence_time, new.occurrence_time)
+    # (the tests are pure reads, so their order is free: the cheap ones first, the
+    # comparison of the stamps' ids last)
     if (
-        overlap(new.stamp, old.stamp)
-        or (new.term.op in ("&&", "&/") and new.term.has_dep_var)
+        old.term is not new.term
         or (old.occurrence_time != ETERNAL and old.occurrence_time != new.occurrence_time)
-        or old.term is not new.term
+        or (new.term.op in ("&&", "&/") and new.term.has_dep_var)
+        or overlap(new.stamp, old.stamp)
     ):
         # a choice needs only the projected confidences (anticipation makes thousands
         # of these per input), not the projected events
