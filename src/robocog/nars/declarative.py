@@ -117,18 +117,17 @@ def predict_negated(
     pred: Event,
     table: Table,
     imp: Implication,
-    by_offset: dict[int, tuple[Truth, float]],
-    rdt: int,
+    failure: Truth,
+    weight: float,
 ) -> None:
     """ONA 0.9.3's negation handling: a predicted ``(! x)`` is also ``x`` predicted
     with the negated truth, and if that prediction is expected (or a weak zero) the
-    link counts one more failure."""
+    link counts one more failure (``failure``, of evidence weight ``weight``, as the
+    prediction's did)."""
     cfg = s.config
     t = tf.negation(pred.truth)
     if expectation(t) > cfg.anticipation_threshold or (t.c < 0.05 and t.f == 0.0):
-        failure = by_offset.get(rdt)
-        if failure is not None:
-            table.add_failure(imp, failure[0], failure[1], cfg.stamp_size)
+        table.add_failure(imp, failure, weight, cfg.stamp_size)
     inner = pred.term.args[0]
     if inner.has_var:
         return

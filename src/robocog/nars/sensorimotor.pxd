@@ -34,6 +34,8 @@ cdef class _Pattern:
     cdef public object key
     cdef public long uses
     cdef public dict matches
+    cdef public dict group
+    cdef public dict groups
 
     cpdef dict match(self, Term term)
 
@@ -43,13 +45,15 @@ cdef class _Source:
     cdef public double c
     cdef public bint weak
     cdef public dict bind
-    cdef public dict failures
 
-cpdef _Source _source(
-    Reasoner s, Event spike, dict bind, bint as_is, Truth op_truth, double weak, long now
-)
+@cython.locals(t=Truth, c=double)
+cpdef _Source _source(Event spike, dict bind, bint as_is, Truth op_truth, double weak, long now)
+cpdef _Pattern _pattern(Reasoner s, Term source)
+cpdef Event _newest_instance(_Pattern pattern, dict groups, Event best)
 @cython.locals(n=long, r=double)
 cpdef long _offset(double dt)
+@cython.locals(past_c=double)
+cpdef double _failure_confidence(Truth pre, long rdt, double confidence)
 @cython.locals(rdt=long, occ=long)
 cpdef anticipate(Reasoner s, Event e)
 cpdef Event source_spike(Reasoner s, Term source, dict groups=*)

@@ -417,11 +417,7 @@ def anticipate(s: Reasoner, e: Event) -> None:
     sources: dict[Term, _Source] = {}
     groups: dict[object, dict[Concept, None]] | None = None
     var_sources: list[Term] = []
-    failures = s.failures
-    if s.failures_for != cfg.anticipation_confidence:
-        failures.clear()
-        s.failures_for = cfg.anticipation_confidence
-    merged = s.merged
+    confidence: float = cfg.anticipation_confidence
     outcomes = s.outcomes
     stamp_size = cfg.stamp_size
     boost = cfg.eternal_input_usage_boost
@@ -444,8 +440,8 @@ def anticipate(s: Reasoner, e: Event) -> None:
     pattern: _Pattern
     pf: float
     pc: float
-    by_offset: dict[int, tuple[Truth, float]]
-    failure: tuple[Truth, float]
+    fc: float
+    weight: float
     for post in list(targets):
         if concepts.get(post.term) is not post:
             targets.pop(post, None)
@@ -464,18 +460,17 @@ def anticipate(s: Reasoner, e: Event) -> None:
                     var_sources.append(source)
                     if groups is None:
                         groups = spike_groups(s)
-                    found = source_spike(s, source, groups)
-                    if found is None:
-                        bind = None
-                    else:
-                        # (source_spike has made the precondition's pattern)
-                        pattern = s.patterns[source]
-                        bind = pattern.match(found.term)
+                    # (source_spike, keeping the pattern for the bindings)
+                    pattern = _pattern(s, source)
+                    sc = concepts.get(source)
+                    found = sc.belief_spike if sc is not None else None
+                    found = _newest_instance(pattern, groups, found)
+                    bind = None if found is None else pattern.match(found.term)
                 else:  # what source_spike and unify give for a ground precondition
                     sc = concepts.get(source)
                     found = sc.belief_spike if sc is not None else None
                     bind = None if found is None or found.term is not source else {}
-                src = sources[source] = _source(s, found, bind, as_is, op_truth, weak, now)
+                src = sources[source] = _source(found, bind, as_is, op_truth, weak, now)
             spike = src.spike
             if spike is None:
                 continue
@@ -495,14 +490,12 @@ def anticipate(s: Reasoner, e: Event) -> None:
             pc = it.c * src.c * pf
             if pc * (pf - 0.5) + 0.5 <= threshold and not (pc < 0.05 and pf == 0.0):
                 continue
-            # one failure counted against the link: the same for every link of this
-            # precondition truth and offset, at every input
+            # one failure counted against the link
             rdt = _offset(imp.dt)  # also the prediction's offset below
-            by_offset = src.failures
-            failure = by_offset.get(rdt)
-            if failure is None:
-                failure = by_offset[rdt] = _failure(s, spike.truth, rdt)
-            table.add_failure(imp, failure[0], failure[1], stamp_size)
+            fc = _failure_confidence(spike.truth, rdt, confidence)
+            failure = tf.truth_of(0.0, fc)
+            weight = tf.c2w(fc)
+            table.add_failure(imp, failure, weight, stamp_size)
             bind = src.bind
             if bind is None:
                 continue
@@ -527,10 +520,7 @@ def anticipate(s: Reasoner, e: Event) -> None:
                     groups = None
             oc.use(now, False, boost)
             occ = (spike.occurrence_time if as_is else now) + rdt
-            mkey = (spike.stamp, imp.stamp, stamp_size)
-            stamp = merged.get(mkey)
-            if stamp is None:
-                stamp = _remember(merged, mkey, merge(spike.stamp, imp.stamp, stamp_size))
+            stamp = merge(spike.stamp, imp.stamp, stamp_size)
             # (deduction; ``truth_of`` and ``event_of`` rather than the keyword-capable
             # constructors: predictions are made thousands of times per input)
             pred = event_of(outcome, BELIEF, tf.truth_of(pf, pc), stamp, occ, now)
@@ -540,7 +530,7 @@ def anticipate(s: Reasoner, e: Event) -> None:
                 if showing and shows_predictions:
                     _show_prediction(s, old, oc.predicted_belief)
                 if negations and outcome.op == NEGATION:
-                    predict_negated(s, pred, table, imp, by_offset, rdt)
+                    predict_negated(s, pred, table, imp, failure, weight)
                     if mem.evictions != evictions:
                         evictions = mem.evictions
                         sources.clear()
@@ -568,7 +558,7 @@ def anticipate(s: Reasoner, e: Event) -> None:
 class _Source:
     """What anticipation knows of one precondition term during one input."""
 
-    __slots__ = ("spike", "f", "c", "weak", "bind", "failures")
+    __slots__ = ("spike", "f", "c", "weak", "bind")
 
     #: its concept's belief event (or the newest instance's), None if there is none
     spike: Event | None
@@ -579,12 +569,9 @@ class _Source:
     weak: bool
     #: the bindings making the precondition that event's term (None: it is not)
     bind: Bindings | None
-    #: the failures counted for that event's truth, by offset
-    failures: dict[int, tuple[Truth, float]]
 
 
 def _source(
-    s: Reasoner,
     spike: Event | None,
     bind: Bindings | None,
     as_is: bool,
@@ -598,18 +585,19 @@ def _source(
     src.bind = bind
     if spike is None:
         return src
-    failures = s.failures
-    by_offset = failures.get(spike.truth)
-    if by_offset is None:
-        by_offset = _remember(failures, spike.truth, {})
-    src.failures = by_offset
-    if as_is:
-        pre_i = spike.truth  # ONA 0.9.3: the event as it happened
+    t = spike.truth
+    if as_is:  # ONA 0.9.3: the event as it happened
+        src.f = t.f
+        src.c = t.c
     else:
-        pre_i = tf.intersection(tf.projection(spike.truth, spike.occurrence_time, now), op_truth)
-    src.f = pre_i.f
-    src.c = pre_i.c
-    src.weak = pre_i.c < weak
+        # tf.intersection(tf.projection(t, spike.occurrence_time, now), op_truth),
+        # the same products in the same order, without making the two truths
+        c = t.c
+        if spike.occurrence_time != -1:  # (not ETERNAL: projection leaves those)
+            c = c * tf.decay(abs(now - spike.occurrence_time))
+        src.f = t.f * op_truth.f
+        src.c = c * op_truth.c
+    src.weak = src.c < weak
     return src
 
 
@@ -657,44 +645,65 @@ def source_spike(s: Reasoner, source: Term, groups: _Groups | None = None) -> Ev
     if source.has_var:
         if groups is None:
             groups = spike_groups(s)
-        pattern: _Pattern | None = s.patterns.get(source)
-        if pattern is None:
-            pattern = _remember(s.patterns, source, _Pattern(source))
-        # Every instance is in each of the pattern's groups, all ordered alike (by
-        # their concepts' last event), so each group yields the same first match and
-        # an empty one means none. The smallest is the cheapest to scan; group sizes
-        # drift slowly, so it is chosen afresh only now and then.
-        pattern.uses += 1
-        key = pattern.key
-        if key is _UNKNOWN or not pattern.uses & 31:
-            group: dict[Concept, None] | None = None
-            for k in pattern.keys:
-                g = groups.get(k)
-                if not g:
-                    return best  # no concept has this component here: none matches
-                if group is None or len(g) < len(group):
-                    group = g
-                    key = k
-            pattern.key = key
-        else:
+        best = _newest_instance(_pattern(s, source), groups, best)
+    return best
+
+
+def _pattern(s: Reasoner, source: Term) -> _Pattern:
+    """The :class:`_Pattern` of the precondition ``source`` (with variables), made
+    when first asked for."""
+    pattern: _Pattern | None = s.patterns.get(source)
+    if pattern is None:
+        pattern = _remember(s.patterns, source, _Pattern(source))
+    return pattern
+
+
+def _newest_instance(pattern: _Pattern, groups: _Groups, best: Event | None) -> Event | None:
+    """The belief event of the newest concept in ``groups`` that instantiates
+    ``pattern``'s precondition, if it is newer than ``best``; else ``best``."""
+    # Every instance is in each of the pattern's groups, all ordered alike (by their
+    # concepts' last event), so each group yields the same first match and an empty
+    # one means none. The smallest is the cheapest to scan; group sizes drift slowly,
+    # so it is chosen afresh only now and then.
+    pattern.uses += 1
+    key = pattern.key
+    group: dict[Concept, None] | None
+    if key is _UNKNOWN or not pattern.uses & 31:
+        group = None
+        for k in pattern.keys:
+            g = groups.get(k)
+            if not g:
+                return best  # no concept has this component here: none matches
+            if group is None or len(g) < len(group):
+                group = g
+                key = k
+        pattern.key = key
+    else:
+        # The group read last time is still the one of its key while it has members:
+        # a group leaves ``groups`` only once empty, and a new one is made for the
+        # key if it fills again (this saves hashing the key at every input).
+        group = pattern.group
+        if not group or pattern.groups is not groups:
             group = groups.get(key)
             if not group:
                 return best
-        matches = pattern.matches
-        c2: Concept
-        b: Event | None
-        for c2 in reversed(group):  # newest first
-            b = c2.belief_spike
-            if b is None:
-                continue
-            bind = matches.get(c2.term, _UNKNOWN)  # (pattern.match, read inline)
-            if bind is _UNKNOWN:
-                bind = pattern.match(c2.term)
-            if bind is None:
-                continue
-            if best is None or b.occurrence_time > best.occurrence_time:
-                best = b
-            break
+    pattern.group = group
+    pattern.groups = groups
+    matches = pattern.matches
+    c2: Concept
+    b: Event | None
+    for c2 in reversed(group):  # newest first
+        b = c2.belief_spike
+        if b is None:
+            continue
+        bind = matches.get(c2.term, _UNKNOWN)  # (pattern.match, read inline)
+        if bind is _UNKNOWN:
+            bind = pattern.match(c2.term)
+        if bind is None:
+            continue
+        if best is None or b.occurrence_time > best.occurrence_time:
+            best = b
+        break
     return best
 
 
@@ -706,19 +715,21 @@ def _show_prediction(s: Reasoner, old: Event | None, new: Event) -> None:
     emit(s, "Derived: " + new.line(1.0))
 
 
-def _failure(s: Reasoner, pre_truth: Truth, rdt: int) -> tuple[Truth, float]:
-    """The truth of one failure of a link whose precondition had ``pre_truth``
-    ``rdt`` cycles before the predicted outcome (induction from a {0, anticipation
-    confidence} outcome and the projected precondition), and its evidence weight."""
-    past = tf.projection(pre_truth, 0, rdt)
-    t = tf.eternalize(tf.induction(Truth(0.0, s.config.anticipation_confidence), past))
-    return t, tf.c2w(t.c)
+def _failure_confidence(pre: Truth, rdt: Cycle, confidence: float) -> float:
+    """The confidence of one failure of a link whose precondition had truth ``pre``
+    ``rdt`` cycles before the predicted outcome: induction from a {0, ``confidence``}
+    outcome and the projected precondition, made eternal, so
+    ``tf.eternalize(tf.induction(Truth(0.0, confidence), tf.projection(pre, 0, rdt))).c``
+    (its frequency is 0), the same operations in the same order without making the
+    truths (anticipation counts hundreds of failures per input)."""
+    past_c = pre.c * tf.decay(abs(rdt))
+    return tf.w2c(tf.w2c(pre.f * past_c * confidence))
 
 
 class _Pattern:
     """What ``source_spike`` keeps about a precondition with variables."""
 
-    __slots__ = ("source", "keys", "key", "uses", "matches")
+    __slots__ = ("source", "keys", "key", "uses", "matches", "group", "groups")
 
     def __init__(self, source: Term) -> None:
         self.source = source
@@ -729,6 +740,9 @@ class _Pattern:
         self.uses = 0
         #: ground term -> unify(precondition, term), a pure function of the two
         self.matches: dict[Term, dict[Term, Term] | None] = {}
+        #: the group of ``key`` when last read, and the groups it was read from
+        self.group: dict[Concept, None] | None = None
+        self.groups: _Groups | None = None
 
     def match(self, term: Term) -> dict[Term, Term] | None:
         """``unify(source, term)``, remembered (nobody changes the bindings returned)."""

@@ -36,9 +36,6 @@ cdef class Reasoner:
     cdef public dict patterns
     cdef public dict term_keys
     cdef public dict var_forms
-    cdef public dict failures
-    cdef public double failures_for
-    cdef public dict merged
 
 cpdef emit(Reasoner s, str line)
 cpdef bint shows(Reasoner s, double priority)

@@ -24,7 +24,6 @@ from typing import TYPE_CHECKING
 from .config import Config
 from .memory import EventQueue, Memory
 from .terms import Term
-from .truth import Truth
 
 if TYPE_CHECKING:
     from .event import Event
@@ -83,9 +82,6 @@ class Reasoner:
         "patterns",
         "term_keys",
         "var_forms",
-        "failures",
-        "failures_for",
-        "merged",
     )
 
     def __init__(self, config: Config, seed: int) -> None:
@@ -152,12 +148,6 @@ class Reasoner:
         self.term_keys: dict[Term, list[object]]
         #: induced link -> its forms with variables
         self.var_forms: dict[Term, tuple[Term, ...]]
-        #: precondition truth -> offset -> the failure counted by anticipation, for the
-        #: anticipation confidence ``failures_for``
-        self.failures: dict[Truth, dict[int, tuple[Truth, float]]]
-        self.failures_for: float
-        #: (event stamp, link stamp, size) -> their merge: a prediction's stamp
-        self.merged: dict[tuple[tuple[int, ...], tuple[int, ...], int], tuple[int, ...]]
         clear(self)
 
 
@@ -196,9 +186,6 @@ def clear_caches(s: Reasoner) -> None:
     s.patterns = {}
     s.term_keys = {}
     s.var_forms = {}
-    s.failures = {}
-    s.failures_for = -1.0
-    s.merged = {}
     s.fresh_beliefs = {}
 
 
