@@ -111,3 +111,33 @@ def test_a_failure_is_a_revision_by_a_stampless_link(steps, size, stamp_size) ->
             plain.add_and_revise(imp, stamp_size)
             quick.add_and_revise(imp, stamp_size)
         assert _state(quick) == _state(plain)
+
+
+@settings(max_examples=200, deadline=None)
+@given(
+    _steps,
+    st.integers(1, 4),
+    st.lists(
+        st.tuples(
+            st.integers(0, 20), st.integers(-3, 3), st.floats(0.0, 1.0), st.floats(0.01, 0.95)
+        ),
+        max_size=20,
+    ),
+)
+def test_a_failure_told_where_its_link_is_is_the_same_failure(steps, size, failures) -> None:  # noqa: ANN001
+    """Told where the stored link is (anticipation walks a table in order, so it knows
+    about where), one place off, or somewhere wrong, ``add_failure`` stores what it
+    does when it searches for the link."""
+    searched, told = Table(size), Table(size)
+    for k, dt, f, c, ids, _ in steps:
+        imp = Implication(_TERMS[k], Truth(f, c), tuple(ids), dt, 7, _TERMS[k])
+        searched.add_and_revise(imp)
+        told.add_and_revise(imp)
+    for which, off, f, c in failures:
+        if not told.items:
+            break
+        i = which % len(told.items)
+        truth = Truth(f, c)
+        searched.add_failure(searched.items[i], truth, c2w(c), 10)
+        told.add_failure(told.items[i], truth, c2w(c), 10, i + off)
+        assert _state(told) == _state(searched)

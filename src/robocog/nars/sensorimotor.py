@@ -450,7 +450,9 @@ def anticipate(s: Reasoner, e: Event) -> None:
         if tables is None or opi >= len(tables):
             continue
         table = tables[opi]
-        for imp in list(table.items):
+        items = list(table.items)  # (failures below move the links)
+        for k in range(len(items)):
+            imp = items[k]
             source = imp.source
             if source is None:
                 continue
@@ -495,7 +497,7 @@ def anticipate(s: Reasoner, e: Event) -> None:
             fc = _failure_confidence(spike.truth, rdt, confidence)
             failure = tf.truth_of(0.0, fc)
             weight = tf.c2w(fc)
-            table.add_failure(imp, failure, weight, stamp_size)
+            table.add_failure(imp, failure, weight, stamp_size, k)
             bind = src.bind
             if bind is None:
                 continue

@@ -28,11 +28,13 @@ cdef class Table:
         n=Py_ssize_t, i=Py_ssize_t, j=Py_ssize_t, e=double, e_old=double, v=double,
         stays=bint, zero=bint, t=Truth
     )
-    cpdef _replace(self, Implication old, Implication new)
+    cpdef _replace(self, Implication old, Implication new, Py_ssize_t at=*)
     cpdef Implication add_and_revise(self, Implication imp, long stamp_size=*)
-    cpdef add_failure(self, Implication imp, Truth truth, double weight, long stamp_size)
+    cpdef add_failure(
+        self, Implication imp, Truth truth, double weight, long stamp_size, Py_ssize_t at=*
+    )
     @cython.locals(w1=double, dt=double)
     cpdef Implication _revise(
         self, Implication old, Implication imp, Truth truth, double weight, tuple stamp,
-        long stamp_size
+        long stamp_size, Py_ssize_t at=*
     )

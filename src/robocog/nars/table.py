@@ -89,21 +89,24 @@ class Table:
             return i < self.size
         return True
 
-    def _replace(self, old: Implication, new: Implication) -> None:
+    def _replace(self, old: Implication, new: Implication, at: Index = -1) -> None:
         """Put ``new`` in the stored entry ``old``'s stead, after every other entry of
         equal or higher expectation (where taking ``old`` out and inserting ``new`` would
-        put it). ``old`` is found by its expectation, then identity; a revision moves an
-        entry by a few places at most, so when it stays put no list is shifted, and
-        otherwise only the side it moved to is searched."""
+        put it). ``old`` is at ``at`` if that is not -1, else it is found by its
+        expectation, then identity; a revision moves an entry by a few places at most,
+        so when it stays put no list is shifted, and otherwise only the side it moved
+        to is searched."""
         items = self.items
         neg = self._neg
         n = len(neg)
         # minus the expectations, written out (this runs for every revision)
         t = old.truth
         e_old = -(t.c * (t.f - 0.5) + 0.5)
-        i = _bisect_left(neg, e_old, 0, n)
-        while items[i] is not old:
-            i += 1
+        i = at
+        if i < 0:
+            i = _bisect_left(neg, e_old, 0, n)
+            while items[i] is not old:
+                i += 1
         t = new.truth
         e = -(t.c * (t.f - 0.5) + 0.5)
         # (the neighbours read into C doubles when compiled, then compared)
@@ -141,11 +144,24 @@ class Table:
             return keep
         return self._revise(old, imp, imp.truth, c2w(imp.truth.c), imp.stamp, stamp_size)
 
-    def add_failure(self, imp: Implication, truth: Truth, weight: float, stamp_size: Size) -> None:
+    def add_failure(
+        self, imp: Implication, truth: Truth, weight: float, stamp_size: Size, at: Index = -1
+    ) -> None:
         """``add_and_revise(Implication(imp.term, truth, (), imp.dt, imp.creation_time,
         imp.source))`` without making that implication: anticipation counts one failure
         (evidence without a stamp) against hundreds of links per input. ``weight`` is
-        ``c2w(truth.c)``, the same for all of them."""
+        ``c2w(truth.c)``. ``at`` is where the caller saw ``imp`` among the items, if it
+        knows (anticipation walks a table in order): if ``imp`` is still there, or one
+        place before (where an entry moving back past it puts it), it is the stored
+        entry of its term, and neither the index nor the expectations are searched."""
+        items = self.items
+        if 0 <= at < len(items):
+            if items[at] is imp:
+                self._revise(imp, imp, truth, weight, (), stamp_size, at)
+                return
+            if at > 0 and items[at - 1] is imp:
+                self._revise(imp, imp, truth, weight, (), stamp_size, at - 1)
+                return
         old = self._entries(imp.dt).get(imp.term)
         if old is None:
             self._insert(implication_of(imp.term, truth, (), imp.dt, imp.creation_time, imp.source))
@@ -161,9 +177,11 @@ class Table:
         weight: float,
         stamp: Stamp,
         stamp_size: Size,
+        at: Index = -1,
     ) -> Implication:
-        """Replace ``old`` by its revision with ``imp`` carrying ``truth`` (of evidence
-        weight ``weight``) and ``stamp``; the offset is the weights' mean of both."""
+        """Replace ``old`` (at ``at`` among the items, if not -1) by its revision with
+        ``imp`` carrying ``truth`` (of evidence weight ``weight``) and ``stamp``; the
+        offset is the weights' mean of both."""
         w1 = c2w(old.truth.c)
         dt = (w1 * old.dt + weight * imp.dt) / (w1 + weight) if w1 + weight > 0 else imp.dt
         # merged with no ids, a stamp is itself cut to size
@@ -173,7 +191,7 @@ class Table:
         revised = implication_of(
             imp.term, pooled(old.truth, truth, w1, weight), kept, dt, imp.creation_time, imp.source
         )
-        self._replace(old, revised)
+        self._replace(old, revised, at)
         return revised
 
 
