@@ -450,7 +450,8 @@ def anticipate(s: Reasoner, e: Event) -> None:
         if tables is None or opi >= len(tables):
             continue
         table = tables[opi]
-        items = list(table.items)  # (failures below move the links)
+        # (a copy: failures below move the links; a tuple is the cheapest to make)
+        items = tuple(table.items)
         for k in range(len(items)):
             imp = items[k]
             source = imp.source
