@@ -30,8 +30,7 @@ if TYPE_CHECKING:
     from .table import Table
 
 
-#: "not yet known": a precondition not looked up yet in this anticipation, a pattern's
-#: group before it is first chosen, a match not yet made
+#: "not yet known": a pattern's group before it is first chosen, a match not yet made
 _UNKNOWN = object()
 
 #: entries a remembered-results cache holds before it starts afresh
