@@ -47,7 +47,7 @@ cdef class _Source:
     cdef public dict bind
 
 @cython.locals(t=Truth, c=double)
-cpdef _Source _source(Event spike, dict bind, bint as_is, Truth op_truth, double weak, long now)
+cpdef _Source _source(Event spike, dict bind, bint as_is, Truth op, double weak, long now)
 cpdef _Pattern _pattern(Reasoner s, Term source)
 cpdef Event _newest_instance(_Pattern pattern, dict groups, Event best)
 @cython.locals(n=long, r=double)

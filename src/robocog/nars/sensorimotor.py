@@ -558,30 +558,19 @@ def anticipate(s: Reasoner, e: Event) -> None:
 
 
 class _Source:
-    """What anticipation knows of one precondition term during one input."""
+    """What anticipation knows of one precondition term during one input: ``spike``,
+    its concept's belief event (or the newest instance's), None if there is none; ``f``
+    and ``c``, that event's truth projected to now with the operation; ``weak``, whether
+    that is too weak to lift a prediction (see ``anticipate``); ``bind``, the bindings
+    making the precondition that event's term (None: it is not)."""
 
     __slots__ = ("spike", "f", "c", "weak", "bind")
 
-    #: its concept's belief event (or the newest instance's), None if there is none
-    spike: Event | None
-    #: the frequency and confidence of that event projected to now with the operation
-    f: float
-    c: float
-    #: whether that confidence is too weak to lift a prediction (see ``anticipate``)
-    weak: bool
-    #: the bindings making the precondition that event's term (None: it is not)
-    bind: Bindings | None
-
 
 def _source(
-    spike: Event | None,
-    bind: Bindings | None,
-    as_is: bool,
-    op_truth: Truth,
-    weak: float,
-    now: Cycle,
+    spike: Event | None, bind: Bindings | None, as_is: bool, op: Truth, weak: float, now: Cycle
 ) -> _Source:
-    """The :class:`_Source` of a precondition whose event is ``spike``."""
+    """The :class:`_Source` of a precondition whose event is ``spike``, then ``op``."""
     src: _Source = _Source.__new__(_Source)
     src.spike = spike
     src.bind = bind
@@ -592,13 +581,13 @@ def _source(
         src.f = t.f
         src.c = t.c
     else:
-        # tf.intersection(tf.projection(t, spike.occurrence_time, now), op_truth),
-        # the same products in the same order, without making the two truths
+        # tf.intersection(tf.projection(t, spike.occurrence_time, now), op), the
+        # same products in the same order, without making the two truths
         c = t.c
         if spike.occurrence_time != -1:  # (not ETERNAL: projection leaves those)
             c = c * tf.decay(abs(now - spike.occurrence_time))
-        src.f = t.f * op_truth.f
-        src.c = c * op_truth.c
+        src.f = t.f * op.f
+        src.c = c * op.c
     src.weak = src.c < weak
     return src
 
