@@ -69,11 +69,16 @@ def screenshot(request: pytest.FixtureRequest) -> Callable[[Any, str], Path]:
 class Live:
     """An inspector served on loopback, its robot loop running in a thread."""
 
-    def __init__(self, run: Callable[[Any], None], paused: bool = False) -> None:
+    def __init__(
+        self, run: Callable[[Any], None], paused: bool = False, mind_interval: float = 0.5
+    ) -> None:
         from robocog.inspector.hub import Inspector
         from robocog.inspector.server import InspectorServer
 
-        self.inspector = Inspector()
+        # (the mind is viewed at most every ``mind_interval`` seconds: a test that reads
+        # the mind's history at points of a run sets it short, so that how fast the
+        # engine runs does not decide how many views there are)
+        self.inspector = Inspector(min_mind_interval=mind_interval)
         self.server = InspectorServer(self.inspector, port=0)
         self.url = self.server.start()
         if paused:
@@ -98,11 +103,12 @@ class Live:
 
 @pytest.fixture
 def live() -> Iterator[Callable[..., Live]]:
-    """``live(run, paused=False)`` starts one; all are closed after the test."""
+    """``live(run, paused=False, mind_interval=0.5)`` starts one; all are closed after
+    the test."""
     made: list[Live] = []
 
-    def make(run: Callable[[Any], None], paused: bool = False) -> Live:
-        lv = Live(run, paused)
+    def make(run: Callable[[Any], None], paused: bool = False, mind_interval: float = 0.5) -> Live:
+        lv = Live(run, paused, mind_interval)
         made.append(lv)
         return lv
 

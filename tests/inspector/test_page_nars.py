@@ -65,7 +65,7 @@ def test_the_robot_moves_on_the_map_and_pause_and_step_work(live, page, screensh
 @pytest.mark.slow
 @browser
 def test_a_checkpoint_hypothesis_gains_confidence_over_rounds(live, page, screenshot) -> None:
-    lv = live(rounds(3))
+    lv = live(rounds(3), mind_interval=0.02)  # a view of the mind every few cycles
     page.goto(lv.url)
     lv.thread.join(timeout=0)  # the loop goes on while the page follows it
     page.wait_for_function(
