@@ -10,7 +10,7 @@ from robocog.nars.event cimport Event, Implication, revised_or_chosen
 from robocog.nars.memory cimport Concept
 from robocog.nars.table cimport Table
 from robocog.nars.unify cimport apply, may_unify, unify
-from robocog.nars.state cimport Reasoner, emit, shows
+from robocog.nars.state cimport Reasoner, emit, remember, shows
 from robocog.nars.sensorimotor cimport executable, split_precondition
 
 # the C signatures of the helpers that the choice of a decision calls for every link

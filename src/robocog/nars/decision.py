@@ -20,7 +20,7 @@ from .declarative import declarative_links
 from .event import BELIEF, GOAL, Event, Implication, revised_or_chosen
 from .sensorimotor import add_implication, executable, split_precondition
 from .stamp import fmt, merge
-from .state import Reasoner, emit, rand, shows
+from .state import Reasoner, emit, rand, remember, shows
 from .terms import SEQUENCE, Term, atom
 from .truth import Truth, expectation
 from .unify import apply, may_unify, unify
@@ -57,7 +57,7 @@ def _measurement(a: Term) -> tuple[str, float] | None:
 def _has_measurement(s: Reasoner, t: Term) -> bool:
     found = s.measured.get(t)
     if found is None:  # (a function of the term: every goal asks it of the same ones)
-        found = _remember(s.measured, t, _names_measurement(t))
+        found = remember(s.measured, t, _names_measurement(t))
     return found
 
 
@@ -68,25 +68,13 @@ def _names_measurement(t: Term) -> bool:
 #: "not yet known" in the goal caches of the reasoner
 _UNKNOWN = object()
 
-#: entries a goal cache holds before it starts afresh
-_CACHE_SIZE = 4096
-
-
-def _remember(cache: dict, key: object, value: object) -> object:
-    """Store ``value`` under ``key`` in ``cache``, emptied first when it is full (its
-    results are pure, so starting afresh only costs recomputation), and return it."""
-    if len(cache) >= _CACHE_SIZE:
-        cache.clear()
-    cache[key] = value
-    return value
-
 
 def _unified(s: Reasoner, general: Term, specific: Term) -> dict[Term, Term] | None:
     """``unify(general, specific)``, remembered: nobody changes the bindings returned."""
     key = (general, specific)
     b = s.unified.get(key, _UNKNOWN)
     if b is _UNKNOWN:
-        b = _remember(s.unified, key, unify(general, specific))
+        b = remember(s.unified, key, unify(general, specific))
     return b
 
 

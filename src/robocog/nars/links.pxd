@@ -8,5 +8,5 @@ from robocog.nars.stamp cimport merge, overlap
 from robocog.nars.event cimport Event
 from robocog.nars.memory cimport Concept
 from robocog.nars.unify cimport apply, may_unify, unify
-from robocog.nars.state cimport Reasoner
+from robocog.nars.state cimport Reasoner, remember
 from robocog.nars.sensorimotor cimport note_event

@@ -17,7 +17,7 @@ from . import truth as tf
 from .event import BELIEF, Event
 from .sensorimotor import note_event
 from .stamp import merge, overlap
-from .state import Reasoner
+from .state import Reasoner, remember
 from .terms import Term
 from .unify import apply, may_unify, unify
 
@@ -29,16 +29,6 @@ _CACHE_SIZE = 1024
 
 #: "not yet known": a consequence not yet worked out
 _UNKNOWN = object()
-
-
-def _remember(cache: dict[Term, object], key: Term, value: object, size: int) -> object:
-    """Store ``value`` under ``key`` in ``cache``, emptied first when it holds ``size``
-    entries (its results are pure, so starting afresh only costs recomputation), and
-    return it."""
-    if len(cache) >= size:
-        cache.clear()
-    cache[key] = value
-    return value
 
 
 def forward_links(s: Reasoner) -> None:
@@ -96,7 +86,7 @@ def forward_links(s: Reasoner) -> None:
             # is fresh, so it is kept, per link and side
             sides = consequences.get(link)
             if sides is None:
-                sides = _remember(consequences, link, ({}, {}), 256)
+                sides = remember(consequences, link, ({}, {}), 256)
             # (each side of ``<=>`` in turn, chosen without building pairs of sides)
             for side in range(2 if link.op == "<=>" else 1):
                 if side == 0:
@@ -112,7 +102,7 @@ def forward_links(s: Reasoner) -> None:
                 if found is _UNKNOWN:
                     bind = unify(cond, term)
                     consequence = None if bind is None else apply(concl, bind)
-                    found = _remember(known, term, consequence, _CACHE_SIZE)
+                    found = remember(known, term, consequence, _CACHE_SIZE)
                 if found is None:
                     continue
                 target = found

@@ -13,7 +13,7 @@ from robocog.nars.event cimport Event, Implication, event_of, revised_or_chosen
 from robocog.nars.memory cimport Concept
 from robocog.nars.table cimport Table
 from robocog.nars.unify cimport apply, unify
-from robocog.nars.state cimport Reasoner, emit, shows
+from robocog.nars.state cimport Reasoner, emit, remember, shows
 
 # the C signatures of the functions that the processing of every selected event calls
 # many times over (induction and what it stores)

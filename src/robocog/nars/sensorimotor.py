@@ -12,7 +12,7 @@ anticipation scans the whole memory.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from typing import TYPE_CHECKING, TypeVar
+from typing import TYPE_CHECKING
 
 from . import truth as tf
 from .declarative import predict_negated
@@ -20,7 +20,7 @@ from .event import BELIEF, ETERNAL, Event, Implication, event_of, revised_or_cho
 from .rules import hol_component_invalid, introduce_implication_variables
 from .spikegroups import group_add, group_keys, group_remove
 from .stamp import fmt, merge, overlap
-from .state import Reasoner, emit, shows
+from .state import Reasoner, emit, remember, shows
 from .terms import NEGATION, SEQUENCE, TEMPORAL_IMPLICATION, Bindings, Term, compound
 from .truth import Cycle, Truth, expectation
 from .unify import apply, unify
@@ -32,22 +32,6 @@ if TYPE_CHECKING:
 
 #: "not yet known": a pattern's group before it is first chosen, a match not yet made
 _UNKNOWN = object()
-
-#: entries a remembered-results cache holds before it starts afresh
-_CACHE_SIZE = 4096
-
-_K = TypeVar("_K")
-_V = TypeVar("_V")
-
-
-def _remember(cache: dict[_K, _V], key: _K, value: _V, size: int = _CACHE_SIZE) -> _V:
-    """Store ``value`` under ``key`` in ``cache``, emptied first when it holds ``size``
-    entries (its results are pure, so starting afresh only costs recomputation), and
-    return it."""
-    if len(cache) >= size:
-        cache.clear()
-    cache[key] = value
-    return value
 
 
 def split_precondition(subject: Term) -> tuple[Term, Term | None]:
@@ -225,7 +209,7 @@ def _keys_of(s: Reasoner, term: Term) -> Sequence[object]:
         return ()
     keys = s.term_keys.get(term)
     if keys is None:
-        keys = _remember(s.term_keys, term, group_keys(term))
+        keys = remember(s.term_keys, term, group_keys(term))
     return keys
 
 
@@ -378,7 +362,7 @@ def _variable_forms(s: Reasoner, term: Term) -> tuple[Term, ...]:
             v = introduce_implication_variables(term, ext)
             if v is not None and v is not term and not hol_component_invalid(v):
                 found.append(v)
-        forms = _remember(s.var_forms, term, tuple(found))
+        forms = remember(s.var_forms, term, tuple(found))
     return forms
 
 
@@ -507,7 +491,7 @@ def anticipate(s: Reasoner, e: Event) -> None:
                 okey = (imp.term, spike.term)
                 outcome = outcomes.get(okey)
                 if outcome is None:
-                    outcome = _remember(outcomes, okey, apply(imp.term.args[1], bind))
+                    outcome = remember(outcomes, okey, apply(imp.term.args[1], bind))
             else:
                 outcome = imp.term.args[1]
             if outcome.has_var or overlap(spike.stamp, imp.stamp):
@@ -645,7 +629,7 @@ def _pattern(s: Reasoner, source: Term) -> _Pattern:
     when first asked for."""
     pattern: _Pattern | None = s.patterns.get(source)
     if pattern is None:
-        pattern = _remember(s.patterns, source, _Pattern(source))
+        pattern = remember(s.patterns, source, _Pattern(source))
     return pattern
 
 
@@ -740,5 +724,5 @@ class _Pattern:
         bind = self.matches.get(term, _UNKNOWN)
         if bind is _UNKNOWN:
             # (a few groups' worth: each pattern has its own)
-            bind = _remember(self.matches, term, unify(self.source, term), 128)
+            bind = remember(self.matches, term, unify(self.source, term), 128)
         return bind

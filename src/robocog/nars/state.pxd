@@ -39,3 +39,4 @@ cdef class Reasoner:
 
 cpdef emit(Reasoner s, str line)
 cpdef bint shows(Reasoner s, double priority)
+cpdef remember(dict cache, key, value, long size=*)

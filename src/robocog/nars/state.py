@@ -19,7 +19,7 @@ from __future__ import annotations
 from collections import deque
 from collections.abc import Callable
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from .config import Config
 from .memory import EventQueue, Memory
@@ -204,3 +204,20 @@ def emit(s: Reasoner, line: str) -> None:
 def shows(s: Reasoner, priority: float) -> bool:
     """Whether a derivation of ``priority`` is printed (ONA's volume)."""
     return s.config.print_derivations and priority > s.config.volume_threshold
+
+
+#: entries a remembered-results cache of the reasoner holds before it starts afresh
+CACHE_SIZE = 4096
+
+#: a cache's bound (a C long when compiled; see state.pxd)
+Size = int
+
+
+def remember(cache: dict, key: Any, value: Any, size: Size = CACHE_SIZE) -> Any:
+    """Store ``value`` under ``key`` in ``cache``, emptied first when it holds ``size``
+    entries, and return it. The reasoner's caches hold pure functions of their keys, so
+    starting afresh only costs recomputation, and a cache never outgrows its bound."""
+    if len(cache) >= size:
+        cache.clear()
+    cache[key] = value
+    return value
