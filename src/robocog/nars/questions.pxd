@@ -7,5 +7,5 @@ from robocog.nars.truth cimport expectation
 from robocog.nars.stamp cimport has_duplicate, merge, overlap
 from robocog.nars.event cimport Event, Implication
 from robocog.nars.memory cimport Concept
-from robocog.nars.unify cimport unify
+from robocog.nars.unify cimport may_unify, unify
 from robocog.nars.state cimport Reasoner, emit

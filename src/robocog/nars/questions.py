@@ -19,7 +19,7 @@ from .stamp import has_duplicate, merge, overlap
 from .state import Reasoner, emit
 from .terms import TEMPORAL_IMPLICATION, Term
 from .truth import expectation
-from .unify import unify
+from .unify import may_unify, unify
 
 PENDING_QUESTIONS = 32
 
@@ -33,7 +33,11 @@ def answer(s: Reasoner, question: Term, tense: str | None = None) -> Event | Non
     if question.op == TEMPORAL_IMPLICATION:
         return _answer_implication(s, question)
     for c in _candidates(s, question):
-        if unify(question, c.term, query_only=True) is None and c.term is not question:
+        # (most candidates share only an atom with the question: a look at their
+        # connector and ground components refuses them before unification does)
+        if c.term is not question and (
+            not may_unify(question, c.term) or unify(question, c.term, query_only=True) is None
+        ):
             continue
         cands: list[Event] = []
         if tense is None:
