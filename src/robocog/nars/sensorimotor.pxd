@@ -14,6 +14,7 @@ from robocog.nars.memory cimport Concept
 from robocog.nars.table cimport Table
 from robocog.nars.unify cimport apply, unify
 from robocog.nars.state cimport Reasoner, emit, remember, shows
+from robocog.nars.rules cimport variable_forms
 
 # the C signatures of the functions that the processing of every selected event calls
 # many times over (induction and what it stores)
@@ -26,7 +27,6 @@ cpdef void note_event(Reasoner s, Concept c)
 cpdef _keys_of(Reasoner s, Term term)
 cpdef void _activate_sequence(Reasoner s, Event se)
 cpdef void _induce(Reasoner s, Event pre, Event op, Event post, double priority)
-cpdef tuple _variable_forms(Reasoner s, Term term)
 
 cdef class _Pattern:
     cdef public Term source

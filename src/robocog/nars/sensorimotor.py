@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING
 from . import truth as tf
 from .declarative import predict_negated
 from .event import BELIEF, ETERNAL, Event, Implication, event_of, revised_or_chosen
-from .rules import hol_component_invalid, introduce_implication_variables
+from .rules import variable_forms
 from .spikegroups import group_add, group_keys, group_remove
 from .stamp import fmt, merge, overlap
 from .state import Reasoner, emit, remember, shows
@@ -347,23 +347,9 @@ def _induce(s: Reasoner, pre: Event, op: Event | None, post: Event, priority: fl
     p = priority * expectation(t)
     add_implication(s, term, t, stamp, dt, False, p)
     if cfg.allow_var_intro:
-        for v in _variable_forms(s, term):
+        # (a ``=/>`` link's forms: those a variable-introducing rule would derive)
+        for v in variable_forms(term):
             add_implication(s, v, t, stamp, dt, False, p)
-
-
-def _variable_forms(s: Reasoner, term: Term) -> tuple[Term, ...]:
-    """The forms of an induced link with variables introduced (extensional, then
-    intensional) that are stored beside it. A function of the term alone, kept
-    because the same links are induced again at nearly every step."""
-    forms = s.var_forms.get(term)
-    if forms is None:
-        found = []
-        for ext in (True, False):
-            v = introduce_implication_variables(term, ext)
-            if v is not None and v is not term and not hol_component_invalid(v):
-                found.append(v)
-        forms = remember(s.var_forms, term, tuple(found))
-    return forms
 
 
 # ------------------------------------------------------------ anticipation

@@ -35,7 +35,6 @@ cdef class Reasoner:
     cdef public dict outcomes
     cdef public dict patterns
     cdef public dict term_keys
-    cdef public dict var_forms
 
 cpdef emit(Reasoner s, str line)
 cpdef bint shows(Reasoner s, double priority)

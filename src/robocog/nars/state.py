@@ -81,7 +81,6 @@ class Reasoner:
         "outcomes",
         "patterns",
         "term_keys",
-        "var_forms",
     )
 
     def __init__(self, config: Config, seed: int) -> None:
@@ -146,8 +145,6 @@ class Reasoner:
         self.patterns: dict[Term, _Pattern]
         #: concept term -> its groups' keys (``group_keys``)
         self.term_keys: dict[Term, list[object]]
-        #: induced link -> its forms with variables
-        self.var_forms: dict[Term, tuple[Term, ...]]
         clear(self)
 
 
@@ -185,7 +182,6 @@ def clear_caches(s: Reasoner) -> None:
     s.outcomes = {}
     s.patterns = {}
     s.term_keys = {}
-    s.var_forms = {}
     s.fresh_beliefs = {}
 
 
