@@ -16,6 +16,7 @@ apriltags = pytest.importorskip(
 
 from robocog.robot import Body, Gripper, PickUp, Resting, Stack, Tag  # noqa: E402
 from robocog.worlds.mujoco_tabletop import MujocoTabletop  # noqa: E402
+from robocog.worlds.physics.perception import shared_detector  # noqa: E402
 from robocog.worlds.physics.scene import CUBE  # noqa: E402
 from robocog.worlds.tabletop import FIXED_OBJECTS, INITIAL_BINS  # noqa: E402
 
@@ -28,7 +29,10 @@ def world() -> MujocoTabletop:
 
 
 def test_every_tag_drawn_here_is_read_back_as_its_id() -> None:
-    detector = apriltags.Detector(families="tag36h11")
+    # the process's one detector: pupil-apriltags frees a detector's tag family before
+    # the detector, whose own teardown then reads the freed family, so a second detector
+    # made and dropped here could corrupt the heap of the process running the tests
+    detector = shared_detector()
     for tag_id in range(len(CODES)):
         image = np.kron(tag_cells(tag_id) * 255, np.ones((6, 6), dtype=np.uint8)).astype(np.uint8)
         found = detector.detect(np.pad(image, 12, constant_values=255))
