@@ -35,11 +35,25 @@ def test_a_bdi_agent_shows_its_intention_stack_and_takes_beliefs(live, page, scr
     expect(frame).to_contain_text("+!collect", timeout=20_000)
     assert page.locator("#beliefs li").count() > 0, "the belief base is listed"
     expect(page.locator("#beliefs")).to_contain_text("source(percept)")
+    # the reply to a post comes late: the line typed meanwhile stays in the input
+    page.evaluate(
+        """() => {
+          window.plainFetch = window.fetch;
+          window.fetch = (url, opts) => (opts && opts.method === "POST")
+            ? new Promise((ok) => setTimeout(ok, 800)).then(() => window.plainFetch(url, opts))
+            : window.plainFetch(url, opts);
+        }"""
+    )
     page.select_option("#console-kind", "belief")
     page.fill("#console-input", "visited(p9)")
     page.click("#console-send")
     page.select_option("#console-kind", "query")
     page.fill("#console-input", "visited(X)")
+    belief = page.locator("#console-log li.ok", has_text="belief visited(p9)")
+    expect(belief).to_be_visible(timeout=20_000)
+    page.wait_for_timeout(300)  # the post's own reply, after the stream's
+    expect(page.locator("#console-input")).to_have_value("visited(X)")
+    page.evaluate("() => { window.fetch = window.plainFetch; }")
     page.click("#console-send")
     reply = page.locator("#console-log li", has_text="query visited(X)").locator(".reply")
     expect(reply).to_contain_text("X=p9", timeout=20_000)

@@ -103,7 +103,12 @@ $("console-form").addEventListener("submit", (ev) => {
   const text = $("console-input").value;
   if (!text.trim()) return;
   history.lines.push(text); history.at = history.lines.length;
-  send($("console-kind").value, text).then((b) => { if (!b.error) $("console-input").value = ""; });
+  // clear the line only if it still holds what was sent: the reply to an earlier post
+  // may come after the next line was typed
+  send($("console-kind").value, text).then((b) => {
+    const input = $("console-input");
+    if (!b.error && input.value === text) input.value = "";
+  });
 });
 $("console-input").addEventListener("keydown", (ev) => {  // the lines sent before, as in a shell
   if (ev.key !== "ArrowUp" && ev.key !== "ArrowDown") return;
