@@ -116,3 +116,23 @@ def test_sweep_drops_unreferenced_subtrees_in_one_pass_and_keeps_held_terms() ->
     # what the sweep dropped is made again on demand, as a new interned term
     again = compound("*", (atom("sweep_z0"), atom("sweep_w0_0")))
     assert again is compound("*", (atom("sweep_z0"), atom("sweep_w0_0")))
+
+
+def test_a_term_whose_variable_form_is_itself_is_still_swept() -> None:
+    """The forms kept on a term must not hold the term itself, or the sweep, which
+    drops terms only the table holds, would keep it forever."""
+    from robocog.nars import terms
+    from robocog.nars.rules import variable_forms
+
+    def make() -> None:
+        t = compound("-->", (atom("swept_self_a"), atom("swept_self_b")))
+        assert variable_forms(t) == (t,)
+        assert variable_forms(t) == (t,)  # read back from the term
+
+    make()
+    key = ("-->", (atom("swept_self_a"), atom("swept_self_b")))
+    terms._sweep()
+    assert key not in terms._TABLE
+    # an implication keeps its forms with variables, which are other terms
+    imp = parse_term("<<s1 --> p> =/> <s2 --> p>>")
+    assert all(v is not imp for v in variable_forms(imp))

@@ -604,12 +604,22 @@ def variable_forms(t: Term) -> tuple[Term, ...]:
     ``<=>`` only with an independent variable; any other term itself.
 
     A function of the term alone, kept on it: the same premise pairs meet at nearly
-    every step, so the same conclusions come back.
+    every step, so the same conclusions come back. A term whose only form is itself
+    keeps a marker instead, since a term holding itself is never swept from the
+    interning table.
     """
     got = t.forms
     if got is None:
-        got = t.forms = _variable_forms(t)
+        got = _variable_forms(t)
+        t.forms = _ITSELF if len(got) == 1 and got[0] is t else got
+    elif got is _ITSELF:
+        return (t,)
     return got
+
+
+#: kept on a term whose only variable form is itself (see ``variable_forms``); a
+#: tuple no form list can be, as ``()`` is one object in CPython
+_ITSELF: tuple[object, ...] = (object(),)
 
 
 def _variable_forms(t: Term) -> tuple[Term, ...]:
