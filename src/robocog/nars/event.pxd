@@ -1,6 +1,8 @@
 # For the compiled engine: the C layout of events and implications defined in event.py.
 # event.py stays the only source of behaviour; see setup.py.
 
+cimport cython
+
 from robocog.nars.terms cimport Term
 from robocog.nars.truth cimport Truth, decay, projection, revision
 from robocog.nars.stamp cimport merge, overlap
@@ -35,6 +37,8 @@ cpdef Event event_of(
     Term term, str type, Truth truth, tuple stamp, long occurrence_time, long creation_time
 )
 cpdef tuple revised_or_chosen(Event old, Event new, long stamp_size, bint fresh=*)
+@cython.locals(later=long, new_c=double)
+cpdef bint outdone(Event old, Term term, long occurrence_time, double c)
 cpdef Implication implication_of(
     Term term, Truth truth, tuple stamp, double dt, long creation_time, Term source
 )

@@ -204,6 +204,26 @@ def revised_or_chosen(
     return revise_events(old.projected(later), new.projected(later), stamp_size), True
 
 
+def outdone(old: Event, term: Term, occurrence_time: Cycle, c: float) -> bool:
+    """True if ``revised_or_chosen(old, new)`` keeps ``old`` as it is for every
+    ``new`` of this term, occurrence time and confidence, whatever its stamp; False
+    if that takes ``new`` or its stamp. Anticipation asks this before it makes a
+    prediction: most of the thousands it makes per input lose to the event already
+    predicted, and so need no event, truth or merged stamp of their own."""
+    if (
+        old.term is term
+        and (old.occurrence_time == ETERNAL or old.occurrence_time == occurrence_time)
+        and not (term.op in ("&&", "&/") and term.has_dep_var)
+    ):
+        return False  # revised unless the stamps overlap
+    later = max(old.occurrence_time, occurrence_time)
+    # ``new.confidence_at(later)``, written out for an event not made
+    new_c = c
+    if occurrence_time != ETERNAL and occurrence_time != later:
+        new_c = c * decay(abs(later - occurrence_time))
+    return not new_c > old.confidence_at(later)
+
+
 class Implication(_Record):
     """A temporal or declarative implication stored in its predicate's table."""
 

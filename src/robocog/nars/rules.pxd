@@ -2,9 +2,32 @@
 # so that its annotated variables are read as structs and its calls made in C.
 # rules.py stays the only source of behaviour; see setup.py.
 
+cimport cython
+
 from robocog.nars.terms cimport Term, compound, substitute
 from robocog.nars.truth cimport Truth
 from robocog.nars cimport truth as tf
 
 cpdef tuple variable_forms(Term t)
+
+# variable introduction: run once for each new conclusion term, the most of them in the
+# cycles after a new object is seen
+@cython.locals(op=str, sim=bint, s=Term, p=Term, a=Term)
+cpdef void _count_statement_atoms(
+    Term t, dict counts, bint extensional, bint ignore_structure, bint spatial
+)
+@cython.locals(op=str, ext=bint)
+cpdef void _count_hol(Term t, dict counts, bint extensional)
+@cython.locals(got=list, i=Py_ssize_t, counts=dict)
+cpdef dict _hol_counts(Term t, bint extensional)
+@cython.locals(a=Term, v=long)
+cpdef bint _shared_or_twice(dict cl, dict cr)
+@cython.locals(cl=dict, cr=dict, dep=long, ind=long, mapping=dict, a=Term, vl=object, vr=object)
+cpdef object introduce_implication_variables(Term t, bint extensional)
+@cython.locals(counts=dict, dep=long, mapping=dict, a=Term, v=long)
+cpdef object introduce_conjunction_variables(Term t, bint extensional)
+@cython.locals(op=str, found=list, ext=bint)
+cpdef tuple _variable_forms(Term t)
+@cython.locals(comp=Term, c=Term, s=Term, p=Term)
+cpdef bint hol_component_invalid(Term t)
 cpdef Term make(str op, tuple args)

@@ -460,8 +460,12 @@ def _fits(r: Rule, key: tuple[object, ...]) -> bool:
 
 
 # ---------------------------------------------------------------- variable introduction
+#: how often each name occurs (an alias the compiled engine reads as a plain dict)
+Counts = dict[Term, int]
+
+
 def _count_statement_atoms(
-    t: Term, counts: dict[Term, int], extensional: bool, ignore_structure: bool, spatial: bool
+    t: Term, counts: Counts, extensional: bool, ignore_structure: bool, spatial: bool
 ) -> None:
     op = t.op
     if op in (INHERITANCE, SIMILARITY):
@@ -493,7 +497,7 @@ def _is_copula_atom(a: Term) -> bool:
     return False
 
 
-def _count_hol(t: Term, counts: dict[Term, int], extensional: bool) -> None:
+def _count_hol(t: Term, counts: Counts, extensional: bool) -> None:
     op = t.op
     if op == "!":
         _count_hol(t.args[0], counts, extensional)
@@ -506,7 +510,7 @@ def _count_hol(t: Term, counts: dict[Term, int], extensional: bool) -> None:
     _count_statement_atoms(t, counts, extensional, False, op == INT_SET)
 
 
-def _hol_counts(t: Term, extensional: bool) -> dict[Term, int]:
+def _hol_counts(t: Term, extensional: bool) -> Counts:
     """``_count_hol`` of one implication side, kept on the term (callers must not mutate)."""
     got = t.hol
     if got is None:
@@ -536,17 +540,10 @@ _DEP_VARS = (None, *(atom(f"#{i}") for i in range(1, 10)))
 
 def introduce_implication_variables(t: Term, extensional: bool) -> Term | None:
     """ONA's variable introduction for ``==>``/``<=>``/``=/>`` conclusions."""
-    left, right = t.args
-    cl = _hol_counts(left, extensional)
-    cr = _hol_counts(right, extensional)
-    # no name to abstract: none occurs twice on one side or once on each (C-level
-    # tests: half of all calls end here)
-    if (
-        cl.keys().isdisjoint(cr)
-        and max(cl.values(), default=0) < 2
-        and max(cr.values(), default=0) < 2
-    ):
-        return None
+    cl = _hol_counts(t.args[0], extensional)
+    cr = _hol_counts(t.args[1], extensional)
+    if not _shared_or_twice(cl, cr):
+        return None  # no name to abstract (half of all calls end here)
     dep = ind = 1
     if t.has_var:  # the first free numbers are 1 unless some variable is there already
         dep = _first_free(t, "#")
@@ -573,6 +570,19 @@ def introduce_implication_variables(t: Term, extensional: bool) -> Term | None:
     return substitute(t, mapping)
 
 
+def _shared_or_twice(cl: Counts, cr: Counts) -> bool:
+    """True if some name of the counts ``cl`` and ``cr`` occurs on both sides or twice
+    on one (loops over the dicts rather than calls to their methods: the compiled
+    engine runs them in C, once per new conclusion)."""
+    for a, v in cl.items():
+        if v >= 2 or a in cr:
+            return True
+    for v in cr.values():
+        if v >= 2:
+            return True
+    return False
+
+
 def introduce_conjunction_variables(t: Term, extensional: bool) -> Term | None:
     """ONA's dependent-variable introduction for ``&&`` conclusions."""
     if t.op == CONJUNCTION:  # the counts of ``&&`` are those of its sides, added
@@ -582,7 +592,7 @@ def introduce_conjunction_variables(t: Term, extensional: bool) -> Term | None:
     else:
         counts = {}
         _count_hol(t, counts, extensional)
-    if max(counts.values(), default=0) < 2:
+    if not _shared_or_twice(counts, {}):
         return None  # no name occurs twice (half of all calls end here)
     dep = _first_free(t, "#")
     mapping: dict[Term, Term] = {}

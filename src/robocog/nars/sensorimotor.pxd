@@ -9,7 +9,7 @@ from robocog.nars.terms cimport Term, compound
 from robocog.nars.truth cimport Truth, expectation
 from robocog.nars cimport truth as tf
 from robocog.nars.stamp cimport merge, overlap
-from robocog.nars.event cimport Event, Implication, event_of, revised_or_chosen
+from robocog.nars.event cimport Event, Implication, event_of, outdone, revised_or_chosen
 from robocog.nars.memory cimport Concept
 from robocog.nars.table cimport Table
 from robocog.nars.unify cimport apply, unify
@@ -24,6 +24,8 @@ cpdef bint _has_op(Term t)
 cpdef bint executable(Term op)
 cpdef long op_id(Reasoner s, Term op)
 cpdef void note_event(Reasoner s, Concept c)
+@cython.locals(i=Py_ssize_t, x=object)
+cpdef bint _drop(object idx, Concept c)
 cpdef _keys_of(Reasoner s, Term term)
 cpdef void _activate_sequence(Reasoner s, Event se)
 cpdef void _induce(Reasoner s, Event pre, Event op, Event post, double priority)
@@ -50,6 +52,10 @@ cdef class _Source:
 cpdef _Source _source(Event spike, dict bind, bint as_is, Truth op, double weak, long now)
 cpdef _Pattern _pattern(Reasoner s, Term source)
 cpdef Event _newest_instance(_Pattern pattern, dict groups, Event best)
+cpdef Event _prediction(
+    Term outcome, double f, double c, Event spike, Implication imp, long occ, long now,
+    long stamp_size
+)
 @cython.locals(n=long, r=double)
 cpdef long _offset(double dt)
 @cython.locals(past_c=double)

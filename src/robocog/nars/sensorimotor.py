@@ -16,16 +16,18 @@ from typing import TYPE_CHECKING
 
 from . import truth as tf
 from .declarative import predict_negated
-from .event import BELIEF, ETERNAL, Event, Implication, event_of, revised_or_chosen
+from .event import BELIEF, ETERNAL, Event, Implication, event_of, outdone, revised_or_chosen
 from .rules import variable_forms
 from .spikegroups import group_add, group_keys, group_remove
-from .stamp import fmt, merge, overlap
+from .stamp import Size, fmt, merge, overlap
 from .state import Reasoner, emit, remember, shows
 from .terms import NEGATION, SEQUENCE, TEMPORAL_IMPLICATION, Bindings, Term, compound
 from .truth import Cycle, Truth, expectation
 from .unify import apply, unify
 
 if TYPE_CHECKING:
+    from collections import deque
+
     from .memory import Concept
     from .table import Table
 
@@ -136,14 +138,9 @@ def add_implication(
 def forget_concept(s: Reasoner, c: Concept) -> None:
     """Drop an evicted concept from the implication, link and time indexes."""
     s.fresh_beliefs.pop(c, None)
-    if c.timed:
-        try:
-            s.time_index.remove(c)
-        except ValueError:
-            pass  # it fell off the end of the full index
-        else:
-            if s.groups is not None:
-                group_remove(s.groups, c, _keys_of(s, c.term))
+    # (if it is not there, it fell off the end of the full index)
+    if c.timed and _drop(s.time_index, c) and s.groups is not None:
+        group_remove(s.groups, c, _keys_of(s, c.term))
     tables = c.precondition_beliefs
     if tables is not None:
         for opi, table in enumerate(tables):
@@ -187,11 +184,7 @@ def note_event(s: Reasoner, c: Concept) -> None:
     groups = s.groups
     present = False
     if c.timed:  # it has been in the index (a search for any other is in vain)
-        try:
-            idx.remove(c)
-            present = True
-        except ValueError:
-            pass  # it fell off the end of the full index
+        present = _drop(idx, c)  # (if not, it fell off the end of the full index)
     if not present and groups is not None and len(idx) == idx.maxlen:
         gone = idx[-1]  # about to fall off the full index
         group_remove(groups, gone, _keys_of(s, gone.term))
@@ -199,6 +192,19 @@ def note_event(s: Reasoner, c: Concept) -> None:
     idx.appendleft(c)
     if groups is not None:
         group_add(groups, c, _keys_of(s, c.term))
+
+
+def _drop(idx: deque[Concept], c: Concept) -> bool:
+    """``idx.remove(c)``, found by identity: True if it was there. A deque compares
+    each entry it passes with ``==``, which for concepts is a rich comparison falling
+    back to identity, several times the cost of this loop over the 512 entries."""
+    i = 0
+    for x in idx:
+        if x is c:
+            del idx[i]
+            return True
+        i += 1
+    return False
 
 
 def _keys_of(s: Reasoner, term: Term) -> Sequence[object]:
@@ -492,16 +498,18 @@ def anticipate(s: Reasoner, e: Event) -> None:
                     groups = None
             oc.use(now, False, boost)
             occ = (spike.occurrence_time if as_is else now) + rdt
-            stamp = merge(spike.stamp, imp.stamp, stamp_size)
-            # (deduction; ``truth_of`` and ``event_of`` rather than the keyword-capable
-            # constructors: predictions are made thousands of times per input)
-            pred = event_of(outcome, BELIEF, tf.truth_of(pf, pc), stamp, occ, now)
             if as_is or imp.dt > 0.0:  # (0.9.3: every prediction is one)
                 old = oc.predicted_belief
+                negated = negations and outcome.op == NEGATION
+                # most predictions lose to the one already made (nothing changes,
+                # nothing is shown): those are not made
+                if old is not None and not negated and outdone(old, outcome, occ, pc):
+                    continue
+                pred = _prediction(outcome, pf, pc, spike, imp, occ, now, stamp_size)
                 oc.predicted_belief, _ = revised_or_chosen(old, pred, stamp_size, True)
                 if showing and shows_predictions:
                     _show_prediction(s, old, oc.predicted_belief)
-                if negations and outcome.op == NEGATION:
+                if negated:
                     predict_negated(s, pred, table, imp, failure, weight)
                     if mem.evictions != evictions:
                         evictions = mem.evictions
@@ -510,9 +518,11 @@ def anticipate(s: Reasoner, e: Event) -> None:
                         groups = None
             elif oc.belief_spike is None or occ > oc.belief_spike.occurrence_time:
                 old = oc.belief_spike
-                oc.belief_spike, _ = revised_or_chosen(old, pred, stamp_size, True)
-                if showing:
-                    _show_prediction(s, old, oc.belief_spike)
+                if old is None or not outdone(old, outcome, occ, pc):
+                    pred = _prediction(outcome, pf, pc, spike, imp, occ, now, stamp_size)
+                    oc.belief_spike, _ = revised_or_chosen(old, pred, stamp_size, True)
+                    if showing:
+                        _show_prediction(s, old, oc.belief_spike)
                 # only this term's entry changes, and the entries of preconditions
                 # with variables that the outcome instantiates (the others cannot
                 # have found their event in its concept)
@@ -525,6 +535,22 @@ def anticipate(s: Reasoner, e: Event) -> None:
                         else:
                             sources.pop(v, None)
                     var_sources[:] = kept
+
+
+def _prediction(
+    outcome: Term,
+    f: float,
+    c: float,
+    spike: Event,
+    imp: Implication,
+    occ: Cycle,
+    now: Cycle,
+    stamp_size: Size,
+) -> Event:
+    """The outcome predicted from ``spike`` through ``imp``, of truth (``f``, ``c``)."""
+    # (``truth_of`` and ``event_of`` rather than the keyword-capable constructors)
+    stamp = merge(spike.stamp, imp.stamp, stamp_size)
+    return event_of(outcome, BELIEF, tf.truth_of(f, c), stamp, occ, now)
 
 
 class _Source:
