@@ -64,6 +64,8 @@ def forward_links(s: Reasoner) -> None:
         if last is not None and last.creation_time >= oldest and not c.term.has_var:
             fresh.append(c)
     limit = cfg.top_k_declarative_implications * 4
+    # (mem.find, read from the dict: it runs for every link at every cycle)
+    concepts: dict[Term, Concept] = mem.concepts
     consequences = s.consequences
     found: object
     known: dict
@@ -76,7 +78,7 @@ def forward_links(s: Reasoner) -> None:
         if len(links) > limit:
             del links[limit:]
         for link in links:
-            lc = mem.find(link)
+            lc = concepts.get(link)
             if lc is None or lc.belief is None:
                 s.links_by_subject.get(term, {}).pop(link, None)
                 continue

@@ -5,6 +5,8 @@ from robocog.nars.terms cimport Term
 from robocog.nars.event cimport Event
 from robocog.nars.table cimport Table
 
+cimport cython
+
 # ``pow`` in memory.py is C's (the same function Python's float power calls)
 from libc.math cimport pow
 
@@ -41,3 +43,10 @@ cdef class EventQueue:
     cpdef bint contains(self, Event e)
     cpdef void _forget(self, Event e)
     cpdef bint push(self, Event e, double priority)
+
+# the second premises of every selected event: seventy-odd concepts a cycle
+@cython.locals(chosen=list, seen=set, c=Concept, cp=double, own=Concept, d=dict, a=Term)
+cpdef list related_above(
+    dict concepts, dict atom_index, Term term, long now, double durability,
+    double threshold, Py_ssize_t most
+)

@@ -415,32 +415,52 @@ class Memory:
         :meth:`related` and a test per concept, in one loop: resuming the generator
         cost more than the test, for the seventy-odd concepts of a cycle.
         """
-        chosen: list[tuple[Concept, float]] = []
-        seen: set[Concept] = set()
-        c: Concept
-        cp: float
-        own = self.concepts.get(term)
-        if own is not None:
-            seen.add(own)
-            cp = own.priority_at(now, durability)
-            if not cp < threshold:
-                chosen.append((own, cp))
+        return related_above(self.concepts, self.atom_index, term, now, durability, threshold, most)
+
+
+#: the memory's concepts by term, and its atom index (aliases the compiled engine
+#: reads as plain dicts)
+ConceptsByTerm = dict[Term, Concept]
+AtomIndex = dict[Term, dict[Concept, None]]
+
+
+def related_above(
+    concepts: ConceptsByTerm,
+    atom_index: AtomIndex,
+    term: Term,
+    now: Cycle,
+    durability: float,
+    threshold: float,
+    most: Size,
+) -> list[tuple[Concept, float]]:
+    """:meth:`Memory.related_above` over the memory's concepts and atom index (a
+    function, so that the compiled engine runs its loop with C types)."""
+    chosen: list[tuple[Concept, float]] = []
+    seen: set[Concept] = set()
+    c: Concept
+    cp: float
+    own = concepts.get(term)
+    if own is not None:
+        seen.add(own)
+        cp = own.priority_at(now, durability)
+        if not cp < threshold:
+            chosen.append((own, cp))
+            if len(chosen) >= most:
+                return chosen
+    for a in term.index_names():
+        d = atom_index.get(a)
+        if d:
+            for c in d:
+                if c in seen:
+                    continue
+                seen.add(c)
+                cp = c.priority_at(now, durability)
+                if cp < threshold:
+                    continue
+                chosen.append((c, cp))
                 if len(chosen) >= most:
                     return chosen
-        for a in term.index_names():
-            d = self.atom_index.get(a)
-            if d:
-                for c in d:
-                    if c in seen:
-                        continue
-                    seen.add(c)
-                    cp = c.priority_at(now, durability)
-                    if cp < threshold:
-                        continue
-                    chosen.append((c, cp))
-                    if len(chosen) >= most:
-                        return chosen
-        return chosen
+    return chosen
 
 
 def _ungroup(

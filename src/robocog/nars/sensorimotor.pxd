@@ -15,6 +15,7 @@ from robocog.nars.table cimport Table
 from robocog.nars.unify cimport apply, unify
 from robocog.nars.state cimport Reasoner, emit, remember, shows
 from robocog.nars.rules cimport variable_forms
+from robocog.nars.spikegroups cimport group_add, group_remove
 
 # the C signatures of the functions that the processing of every selected event calls
 # many times over (induction and what it stores)

@@ -4,3 +4,11 @@
 
 from robocog.nars.terms cimport Term
 from robocog.nars.memory cimport Concept
+
+cimport cython
+
+# run for every event a concept of the time index receives
+@cython.locals(d=dict)
+cpdef void group_add(dict groups, Concept c, object keys)
+@cython.locals(d=dict)
+cpdef void group_remove(dict groups, Concept c, object keys)

@@ -29,13 +29,16 @@ def group_keys(t: Term, ground_only: bool = False) -> list[object]:
     if t.op is None:
         return keys
     keys.append((t.op, len(t.args)))
-    stack: list[tuple[tuple[object, ...], Term]] = [((), t)]
+    # A component's path is one string, each step "connector NUL arity NUL index SOH"
+    # (no connector holds a NUL): a string keeps its hash, so a key of a path and a
+    # term hashes in two reads, where a tuple of the steps would hash every step each
+    # time a concept enters or leaves its groups.
+    stack: list[tuple[str, Term]] = [("", t)]
     while stack:
         path, x = stack.pop()
-        op = x.op
-        n = len(x.args)
+        step = f"{x.op}\0{len(x.args)}\0"
         for i, arg in enumerate(x.args):
-            sub = (*path, op, n, i)
+            sub = f"{path}{step}{i}\1"
             if not (ground_only and arg.has_var):
                 keys.append((sub, arg))
             if arg.op is not None:
@@ -43,9 +46,11 @@ def group_keys(t: Term, ground_only: bool = False) -> list[object]:
     return keys
 
 
-def group_add(
-    groups: dict[object, dict[Concept, None]], c: Concept, keys: Sequence[object]
-) -> None:
+#: group key -> its members, oldest first (an alias the compiled engine reads as a dict)
+Groups = dict[object, dict["Concept", None]]
+
+
+def group_add(groups: Groups, c: Concept, keys: Sequence[object]) -> None:
     """Make ``c`` (its term without variables) the newest member of its groups,
     entering it or moving it to the end."""
     for k in keys:
@@ -57,9 +62,7 @@ def group_add(
             d[c] = None
 
 
-def group_remove(
-    groups: dict[object, dict[Concept, None]], c: Concept, keys: Sequence[object]
-) -> None:
+def group_remove(groups: Groups, c: Concept, keys: Sequence[object]) -> None:
     """Take ``c`` (its term without variables) out of its groups, dropping groups left
     empty."""
     for k in keys:
