@@ -16,7 +16,7 @@ import math
 from . import truth as tf
 from .decision import add_goal
 from .declarative import note_fresh_belief
-from .event import BELIEF, ETERNAL, GOAL, Event, revised_or_chosen
+from .event import BELIEF, ETERNAL, GOAL, Event, event_of, revised_or_chosen
 from .memory import Concept, EventQueue
 from .rules import rejected
 from .sensorimotor import add_implication, note_event, note_link
@@ -86,7 +86,7 @@ def _queue(s: Reasoner, e: Event, priority: float) -> bool:
             return False  # the full queue would refuse it whatever the checks below say
         if q.contains(e):
             return False
-        c: Concept | None = s.memory.find(e.term)
+        c: Concept | None = s.memory.concepts.get(e.term)  # (its find, read from the dict)
         if c is not None and c.belief is not None:
             if c.belief.same(e):
                 return False
@@ -107,7 +107,7 @@ def _process_new_belief(
         add_implication(s, e.term, e.truth, e.stamp, e.dt, is_input, priority)
         return
     # most conclusions are about a concept that exists: found without the method call
-    c: Concept | None = s.memory.find(e.term)
+    c: Concept | None = s.memory.concepts.get(e.term)
     if c is None:
         c = s.memory.conceptualize(e.term, now)
     c.use(now, eternal_input, s.config.eternal_input_usage_boost)
@@ -189,7 +189,8 @@ def add_derived(
     priority *= _BY_COMPLEXITY[cx] if 0 < cx < _SCALED else 1.0 / math.log2(1.0 + cx)
     if t.c < cfg.min_confidence or priority <= 0.0:
         return
-    e = Event(term, BELIEF, t, stamp, occurrence, s.time)
+    # (``event_of``: the fields ``Event(...)`` sets, without the keyword-capable call)
+    e = event_of(term, BELIEF, t, stamp, occurrence, s.time)
     _store(s, e, priority, False, False, not composition or cfg.compositions_need_concept)
 
 

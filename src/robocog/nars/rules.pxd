@@ -31,3 +31,11 @@ cpdef tuple _variable_forms(Term t)
 @cython.locals(comp=Term, c=Term, s=Term, p=Term)
 cpdef bint hol_component_invalid(Term t)
 cpdef Term make(str op, tuple args)
+# every conclusion is filtered
+cpdef bint rejected(Term t)
+
+# the rules that can match a shape of premise pair, worked out at its first meeting
+cpdef bint is_pattern_variable(Term t)
+@cython.locals(comps=list, p=Term, k=Py_ssize_t, i=Py_ssize_t, j=Py_ssize_t, a=Term, b=Term,
+               eq=long, bit=Py_ssize_t)
+cpdef bint _fits(object r, tuple key)

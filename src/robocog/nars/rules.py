@@ -280,13 +280,21 @@ REMEMBERED_PAIRS = 1 << 15
 _SOME_TRUTH = Truth(1.0, 0.9)
 
 
-def _recorder(into: list[Conclusion], truth: TruthFn, swapped: bool) -> Emit:
-    """An ``emit`` that records a matcher's conclusions into ``into``."""
+def _record(rules: list[Rule], t1: Term, t2: Term, swapped: bool, into: list[Conclusion]) -> None:
+    """Run ``rules`` on the premises ``t1`` and ``t2`` and record their conclusions into
+    ``into``, each with its rule's truth function; one ``emit`` serves every rule (a
+    new pair of premises meets several rules, and an ``emit`` is a closure to make)."""
+    got: list[tuple[Term, bool]] = []
 
     def record(term: Term, _t: Truth, var_intro: bool) -> None:
-        into.append((term, truth, swapped, var_intro))
+        got.append((term, var_intro))
 
-    return record
+    for r in rules:
+        r.apply(t1, t2, _SOME_TRUTH, _SOME_TRUTH, record)  # type: ignore[misc]
+        if got:
+            for term, var_intro in got:
+                into.append((term, r.truth, swapped, var_intro))
+            got.clear()
 
 
 @dataclass(slots=True)
@@ -355,10 +363,8 @@ class RuleTable:
         got = self._pairs.get(key)
         if got is None:
             found: list[Conclusion] = []
-            for r in self.candidates(t1, t2):
-                r.apply(t1, t2, _SOME_TRUTH, _SOME_TRUTH, _recorder(found, r.truth, False))  # type: ignore[misc]
-            for r in self.candidates(t2, t1):
-                r.apply(t2, t1, _SOME_TRUTH, _SOME_TRUTH, _recorder(found, r.truth, True))  # type: ignore[misc]
+            _record(self.candidates(t1, t2), t1, t2, False, found)
+            _record(self.candidates(t2, t1), t2, t1, True, found)
             got = tuple(found)
             if len(self._pairs) >= REMEMBERED_PAIRS:
                 self._pairs.clear()
@@ -371,8 +377,7 @@ class RuleTable:
         got = self._singles.get(t)
         if got is None:
             found: list[Conclusion] = []
-            for r in self.single_rules(t.op):
-                r.apply(t, t, _SOME_TRUTH, _SOME_TRUTH, _recorder(found, r.truth, False))  # type: ignore[misc]
+            _record(self.single_rules(t.op), t, t, False, found)
             got = tuple(found)
             if len(self._singles) >= REMEMBERED_PAIRS:
                 self._singles.clear()
@@ -435,9 +440,12 @@ class RuleTable:
 
 
 _PAIRS = ((0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3))
+#: a premise pair's shape, as ``RuleTable.candidates`` keys it (an alias the compiled
+#: engine reads as a plain tuple)
+Shape = tuple[object, ...]
 
 
-def _fits(r: Rule, key: tuple[object, ...]) -> bool:
+def _fits(r: Rule, key: Shape) -> bool:
     """Could rule ``r`` match a premise pair of shape ``key`` (see ``candidates``)?"""
     comps: list[Term | None] = []
     for p, k in ((r.p1, 0), (r.p2, 1)):
