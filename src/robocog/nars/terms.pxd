@@ -1,6 +1,8 @@
 # For the compiled engine: the C layout of an interned term defined in terms.py.
 # terms.py stays the only source of behaviour; see setup.py.
 
+cimport cython
+
 cdef class Term:
     cdef public object op
     cdef public object name
@@ -22,6 +24,16 @@ cdef class Term:
     cdef public tuple forms
 
     cpdef tuple index_names(self)
+    @cython.locals(out=list, nxt=list, t=Term)
+    cpdef list level_order_atoms(self)
 
 cpdef Term compound(str op, tuple args)
 cpdef Term substitute(Term t, dict mapping)
+
+# a new term's properties, computed once when it is interned (a burst of new terms
+# follows every new object the robot sees)
+@cython.locals(t=Term, a=Term, b=Term, complexity=long, flags=long, n_imp=long,
+               n_temp=long, hv=bint, hq=bint, hi=bint, hd=bint, table=dict)
+cpdef Term _make_compound(tuple key, str op, tuple args)
+@cython.locals(a=Term, b=Term, na=tuple, nb=tuple, seen=set, stack=list, x=Term)
+cpdef bint names_repeat(Term t)

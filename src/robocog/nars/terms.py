@@ -207,6 +207,9 @@ _OP_KINDS: dict[str, int] = {
 #: can declare them plain tuples and dicts in ``terms.pxd``)
 Components = tuple[Term, ...]
 Bindings = dict[Term, Term]
+#: a term's key in the interning table: its connector (None for an atom) and its
+#: components, or its name
+Key = tuple[object, ...]
 
 _TABLE: dict[tuple[object, ...], Term] = {}
 #: the table is swept of terms nobody else holds when it grows past this size
@@ -296,7 +299,7 @@ def compound(op: str, args: Components) -> Term:
     return _make_compound(key, op, args)
 
 
-def _make_compound(key: tuple[object, ...], op: str, args: tuple[Term, ...]) -> Term:
+def _make_compound(key: Key, op: str, args: Components) -> Term:
     """Build and intern a new compound; every per-term property is computed once here."""
     t: Term = Term.__new__(Term)
     a: Term
@@ -330,13 +333,14 @@ def _make_compound(key: tuple[object, ...], op: str, args: tuple[Term, ...]) -> 
     else:
         # unary terms carry a terminator slot, sets of n elements chain n-1 element
         # nodes plus the terminator
-        complexity = 1 + sum(a.complexity for a in args) + (1 if len(args) == 1 else 0)
+        complexity = 1 + (1 if len(args) == 1 else 0)
         if op in SETS and len(args) > 1:
             complexity += len(args)
         flags = 0
         n_imp = n_temp = 0
         hv = hq = hi = hd = False
         for a in args:
+            complexity += a.complexity
             flags |= a.flags
             n_imp += a.n_imp
             n_temp += a.n_temp
