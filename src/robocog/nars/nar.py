@@ -18,6 +18,7 @@ from . import commands, cycle, memfile, memorize, questions, sensorimotor
 from . import truth as tf
 from .config import MAX_TIME, Config
 from .event import ETERNAL, GOAL, Event
+from .inference import rule_table
 from .memory import Concept
 from .narsese import MAX_LINE, NarseseError, Sentence, parse_sentence
 from .state import DEFAULT_OPERATIONS, Reasoner, clear, clear_caches, emit
@@ -36,6 +37,10 @@ class NAR(Reasoner):
         # ``ona``: whose behaviour to follow, ONA 0.9.2's (the papers') or 0.9.3's
         Reasoner.__init__(self, Config.for_ona(ona, **config_overrides), seed)
         self.memory.on_remove = partial(sensorimotor.forget_concept, self)
+        # the rule table, shared by the process's reasoners, is built here if it is not
+        # yet: building it takes tens of milliseconds, which would stall a robot's first
+        # reasoning cycle
+        rule_table(self.config.semantic_inference_nal_level)
 
     # ------------------------------------------------------------------ state
     def reset(self) -> None:
