@@ -37,7 +37,9 @@ cpdef Event event_of(
     Term term, str type, Truth truth, tuple stamp, long occurrence_time, long creation_time
 )
 cpdef tuple revised_or_chosen(Event old, Event new, long stamp_size, bint fresh=*)
-@cython.locals(later=long, new_c=double)
+cpdef double projected_confidence(double c, long occurrence_time, long target_time)
+cpdef bint revises(Event old, Term term, long occurrence_time)
+@cython.locals(later=long)
 cpdef bint outdone(Event old, Term term, long occurrence_time, double c)
 cpdef Implication implication_of(
     Term term, Truth truth, tuple stamp, double dt, long creation_time, Term source

@@ -104,10 +104,7 @@ class Event(_Record):
 
     def confidence_at(self, target_time: Cycle) -> float:
         """``self.projected(target_time).truth.c``, without making the projected event."""
-        if self.occurrence_time == ETERNAL or self.occurrence_time == target_time:
-            return self.truth.c
-        # (projection's product, without making the projected truth)
-        return self.truth.c * decay(abs(target_time - self.occurrence_time))
+        return projected_confidence(self.truth.c, self.occurrence_time, target_time)
 
     def projected(self, target_time: Cycle) -> Event:
         """This event seen from ``target_time`` (confidence decays with distance); the
@@ -137,6 +134,27 @@ class Event(_Record):
         """ONA's ``Input:``/``Derived:`` payload for this event."""
         dt = f"dt={self.dt:f} " if self.term.op == "=/>" else ""
         return f"{dt}{self.sentence()} Priority={priority:f} Stamp={fmt(self.stamp)} {self.truth}"
+
+
+def projected_confidence(c: float, occurrence_time: Cycle, target_time: Cycle) -> float:
+    """The confidence ``c`` of an event at ``occurrence_time`` projected to
+    ``target_time``: projection's product, without making the projected truth (or,
+    for :func:`outdone`, the event)."""
+    if occurrence_time == ETERNAL or occurrence_time == target_time:
+        return c
+    return c * decay(abs(target_time - occurrence_time))
+
+
+def revises(old: Event, term: Term, occurrence_time: Cycle) -> bool:
+    """True if an event of ``term`` at ``occurrence_time`` is revised with ``old``
+    rather than chosen between, unless their stamps overlap: the same term, at the
+    same time or ``old`` eternal, and not a conjunction or sequence with dependent
+    variables. (Pure reads, cheapest first; the stamps are compared by the caller.)"""
+    return (
+        old.term is term
+        and (old.occurrence_time == ETERNAL or old.occurrence_time == occurrence_time)
+        and not (term.op in ("&&", "&/") and term.has_dep_var)
+    )
 
 
 def event_of(
@@ -188,14 +206,8 @@ def revised_or_chosen(
     if old is None:
         return (new if fresh else new.copy()), False
     later = max(old.occurrence_time, new.occurrence_time)
-    # (the tests are pure reads, so their order is free: the cheap ones first, the
-    # comparison of the stamps' ids last)
-    if (
-        old.term is not new.term
-        or (old.occurrence_time != ETERNAL and old.occurrence_time != new.occurrence_time)
-        or (new.term.op in ("&&", "&/") and new.term.has_dep_var)
-        or overlap(new.stamp, old.stamp)
-    ):
+    # (the comparison of the stamps' ids last: the other tests are cheaper)
+    if not revises(old, new.term, new.occurrence_time) or overlap(new.stamp, old.stamp):
         # a choice needs only the projected confidences (anticipation makes thousands
         # of these per input), not the projected events
         if new.confidence_at(later) > old.confidence_at(later):
@@ -210,18 +222,11 @@ def outdone(old: Event, term: Term, occurrence_time: Cycle, c: float) -> bool:
     if that takes ``new`` or its stamp. Anticipation asks this before it makes a
     prediction: most of the thousands it makes per input lose to the event already
     predicted, and so need no event, truth or merged stamp of their own."""
-    if (
-        old.term is term
-        and (old.occurrence_time == ETERNAL or old.occurrence_time == occurrence_time)
-        and not (term.op in ("&&", "&/") and term.has_dep_var)
-    ):
+    if revises(old, term, occurrence_time):
         return False  # revised unless the stamps overlap
     later = max(old.occurrence_time, occurrence_time)
-    # ``new.confidence_at(later)``, written out for an event not made
-    new_c = c
-    if occurrence_time != ETERNAL and occurrence_time != later:
-        new_c = c * decay(abs(later - occurrence_time))
-    return not new_c > old.confidence_at(later)
+    # (``new.confidence_at(later)`` for the event not made)
+    return not projected_confidence(c, occurrence_time, later) > old.confidence_at(later)
 
 
 class Implication(_Record):

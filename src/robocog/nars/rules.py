@@ -585,7 +585,12 @@ def _shared_or_twice(cl: Counts, cr: Counts) -> bool:
     for a, v in cl.items():
         if v >= 2 or a in cr:
             return True
-    for v in cr.values():
+    return _twice(cr)
+
+
+def _twice(counts: Counts) -> bool:
+    """True if some name of ``counts`` occurs twice (a loop, as ``_shared_or_twice``)."""
+    for v in counts.values():
         if v >= 2:
             return True
     return False
@@ -600,7 +605,7 @@ def introduce_conjunction_variables(t: Term, extensional: bool) -> Term | None:
     else:
         counts = {}
         _count_hol(t, counts, extensional)
-    if not _shared_or_twice(counts, {}):
+    if not _twice(counts):
         return None  # no name occurs twice (half of all calls end here)
     dep = _first_free(t, "#")
     mapping: dict[Term, Term] = {}
