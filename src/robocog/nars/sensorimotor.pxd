@@ -64,3 +64,7 @@ cpdef double _failure_confidence(Truth pre, long rdt, double confidence)
 @cython.locals(rdt=long, occ=long, k=Py_ssize_t)
 cpdef anticipate(Reasoner s, Event e)
 cpdef Event source_spike(Reasoner s, Term source, dict groups=*)
+# the times of the index scans as C integers: every input event's processing compares
+# them against hundreds of index entries
+@cython.locals(now=long, occ=long, window=long, tdiff=long, e_is_op=bint, concurrent=bint)
+cpdef void process_belief_event(Reasoner s, Event e, double priority)
