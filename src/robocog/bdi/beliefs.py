@@ -218,6 +218,23 @@ class BeliefBase:
         self._size = 0
 
     # ---- reading
+    def _narrowed(self, key: tuple, bucket: dict, args: tuple, s: dict) -> dict | None:
+        """The facts of predicate ``key`` (``bucket``, all of them) that a pattern with
+        arguments ``args`` can match, as far as its first argument tells: when that is
+        ground once its bindings in ``s`` are followed, only the facts filed under it
+        (``None`` if there are none), so that ``at(r1, X)`` does not scan every ``at``
+        fact; else the whole bucket."""
+        if args:
+            a0 = args[0]
+            while a0.__class__ is Var:
+                v = s.get(a0)
+                if v is None:
+                    break
+                a0 = v
+            if a0.__class__ is not Var and is_ground(a0):
+                return self._first[key].get(a0) or None
+        return bucket
+
     def candidates(self, key: tuple) -> tuple:
         """Facts and rules of one predicate, newest first (a snapshot)."""
         bucket = self._index.get(key)
@@ -239,24 +256,14 @@ class BeliefBase:
         if not bucket:
             return
         if pattern.args and not self._mixed.get(key):
-            a0 = pattern.args[0]
-            while a0.__class__ is Var:
-                v = s.get(a0)
-                if v is None:
-                    break
-                a0 = v
-            if a0.__class__ is not Var and is_ground(a0):
-                sub = self._first[key].get(a0)
-                if not sub:
-                    return
-                if pattern.ground and not pattern.annots:
-                    got = sub.get(pattern.args)
-                    if got is not None:
-                        yield None
-                    return
-                cands = tuple(sub.values())[::-1]
-            else:
-                cands = tuple(bucket.values())[::-1]
+            sub = self._narrowed(key, bucket, pattern.args, s)
+            if sub is None:
+                return
+            if pattern.ground and not pattern.annots:  # (narrowed by its first argument)
+                if sub.get(pattern.args) is not None:
+                    yield None
+                return
+            cands = tuple(sub.values())[::-1]
         else:
             cands = tuple(bucket.values())[::-1]
         mark = len(trail)
@@ -310,18 +317,9 @@ class BeliefBase:
         if self._mixed.get(key) or pattern.annots:
             return None
         args = pattern.args
-        vals = bucket
-        if args:
-            a0 = args[0]
-            while a0.__class__ is Var:
-                v = s.get(a0)
-                if v is None:
-                    break
-                a0 = v
-            if a0.__class__ is not Var and is_ground(a0):
-                vals = self._first[key].get(a0)
-                if not vals:
-                    return []
+        vals = self._narrowed(key, bucket, args, s)
+        if vals is None:
+            return []
         cands = tuple(vals.values())[::-1]
         while template.__class__ is Var:
             v = s.get(template)
@@ -369,19 +367,10 @@ class BeliefBase:
                 sub = sub.get(pattern.args[0]) if sub else None
                 return bool(sub) and pattern.args in sub
             return pattern.args in bucket
-        vals = bucket.values()
-        if pattern.args:
-            a0 = pattern.args[0]
-            while a0.__class__ is Var:
-                v = s.get(a0)
-                if v is None:
-                    break
-                a0 = v
-            if a0.__class__ is not Var and is_ground(a0):
-                sub = self._first[key].get(a0)
-                if not sub:
-                    return False
-                vals = sub.values()
+        sub = self._narrowed(key, bucket, pattern.args, s)
+        if sub is None:
+            return False
+        vals = sub.values()
         mark = len(trail)
         annots = pattern.annots
         for b in reversed(vals):
@@ -418,18 +407,9 @@ class BeliefBase:
                 sub = self._first[key].get(args[0])
                 return bool(sub) and args in sub
             return args in bucket
-        vals = bucket
-        if args:
-            a0 = args[0]
-            while a0.__class__ is Var:
-                v = s.get(a0)
-                if v is None:
-                    break
-                a0 = v
-            if a0.__class__ is not Var and is_ground(a0):
-                vals = self._first[key].get(a0)
-                if not vals:
-                    return False
+        vals = self._narrowed(key, bucket, args, s)
+        if vals is None:
+            return False
         if len(vals) != 1:
             return None
         for b in vals.values():
