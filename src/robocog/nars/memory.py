@@ -12,7 +12,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator
 from operator import itemgetter
 
-from .event import ETERNAL, Event
+from .event import Event
 from .stamp import Size
 from .table import Table
 from .terms import Term
@@ -471,7 +471,3 @@ def _ungroup(
     if not g:
         del groups[key]
 
-
-def is_eternal(e: Event | None) -> bool:
-    """True for an eternal event."""
-    return e is not None and e.occurrence_time == ETERNAL

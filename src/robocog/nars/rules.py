@@ -666,10 +666,6 @@ def _variable_forms(t: Term) -> tuple[Term, ...]:
 
 
 # ---------------------------------------------------------------- conclusion filters
-def _simple_atoms(t: Term) -> list[Term]:
-    return [a for a in t.atoms() if not a.is_var]
-
-
 def atom_appears_twice(t: Term) -> bool:
     """Filter: an -->/<-> statement naming an atom twice, or ==>/<=> with equal sides."""
     if t.op in (INHERITANCE, SIMILARITY):
