@@ -470,4 +470,3 @@ def _ungroup(
     del g[c]
     if not g:
         del groups[key]
-
