@@ -80,7 +80,7 @@ def unavailable_reason(command: Sequence[str] | None = None) -> str | None:
         return None if ona_command() else f"ONA is not installed ({INSTALL_HINT})"
     if not command or shutil.which(command[0]) is None:
         shown = command[0] if command else "(empty)"
-        return f"the command {shown} of ONA is not installed ({INSTALL_HINT})"
+        return f"no command {shown} is found ({INSTALL_HINT})"
     return None
 
 
@@ -141,6 +141,9 @@ class OnaProcess:
         self.command = [*base, *args]
         #: how the command is named in errors
         self.name = " ".join(self.command)
+        why = unavailable_reason(base)  # checked here: under stdbuf, Popen would not fail
+        if why:
+            raise OnaUnavailable(f"cannot start `{self.name}`: {why}")
         self.timeout = timeout
         self._tail: deque[str] = deque(maxlen=tail)
         self._lines: queue.Queue[str | None] = queue.Queue()
