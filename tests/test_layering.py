@@ -60,6 +60,15 @@ def test_every_package_keeps_to_its_imports() -> None:
     assert violations == []
 
 
+#: modules of no package that every package may use, because they import no robocog module
+SHARED_MODULES = ("atomic.py", "ona_process.py")
+
+
+def test_the_modules_every_package_may_use_import_nothing_of_robocog() -> None:
+    imports = {name: _imported_modules(SRC / name) for name in SHARED_MODULES}
+    assert imports == {name: set() for name in SHARED_MODULES}
+
+
 def test_the_mind_registry_loads_no_engine_until_a_mind_is_made() -> None:
     """What lets the bridges import the registry: importing it imports no engine and no
     mind's module (each factory imports its own when called)."""

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import sys
+
 import pytest
 
 from robocog.minds.nars_mind import background
@@ -13,6 +15,7 @@ from robocog.minds.ona_shell import (
     unavailable,
 )
 from robocog.nars import parse_sentence, parse_term
+from robocog.ona_process import OnaError, OnaUnavailable
 
 needs_ona = pytest.mark.skipif(unavailable() is not None, reason=str(unavailable()))
 
@@ -60,3 +63,16 @@ def test_sentences_go_in_and_arguments_and_answers_come_back_as_terms() -> None:
         assert shell.answer(parse_term("<nothing --> ?1>")) is None
     finally:
         shell.close()
+
+
+def test_a_missing_or_dying_ona_is_an_error_that_names_the_command() -> None:
+    assert "no-such-nar" in str(unavailable("no-such-nar"))
+    with pytest.raises(OnaUnavailable, match="`no-such-nar shell`"):
+        OnaShell("no-such-nar")
+    shell = OnaShell(sys.executable, timeout=10)  # `python shell`: no such script, it exits
+    try:
+        with pytest.raises(OnaError, match=f"`{sys.executable} shell` (exited|closed its input)"):
+            shell.cycles(1)
+    finally:
+        shell.close()
+    assert shell.proc.returncode is not None  # reaped, no zombie left

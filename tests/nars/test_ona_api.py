@@ -2,14 +2,10 @@
 
 from __future__ import annotations
 
-import shutil
-import subprocess
-
 import pytest
 
 from robocog.nars import ona_api
-
-ONA = shutil.which("NAR")
+from robocog.ona_process import OnaProcess, unavailable_reason
 
 
 def test_an_input_line_gives_onas_fields() -> None:
@@ -97,34 +93,9 @@ def test_the_default_reasoner_can_be_replaced() -> None:
         ona_api.setNAR(first)
 
 
-class _OnaShell:
-    """ONA's binary driven line by line, as ONA's wrapper drives it: the line, then
-    ``0`` cycles, reading until ``done with 0 additional inference steps.``."""
-
-    def __init__(self) -> None:
-        self.proc = subprocess.Popen(
-            [ONA, "shell"],  # type: ignore[list-item]
-            stdin=subprocess.PIPE,
-            stdout=subprocess.PIPE,
-            text=True,
-        )
-        self.send("*volume=100")
-
-    def send(self, line: str) -> list[str]:
-        assert self.proc.stdin is not None and self.proc.stdout is not None
-        self.proc.stdin.write(line + "\n0\n")
-        self.proc.stdin.flush()
-        out: list[str] = []
-        while True:
-            got = self.proc.stdout.readline()
-            if not got or got.strip() == "done with 0 additional inference steps.":
-                break
-            out.append(got.strip())
-        return out[:-1]  # the last is "performing 0 inference steps:"
-
-    def close(self) -> None:
-        self.proc.kill()
-        self.proc.wait()
+def _ona_output(ona: OnaProcess, line: str) -> list[str]:
+    """ONA's output lines for one input line, stripped as ONA's wrapper strips them."""
+    return [got.strip() for got in ona.exchange([line])]
 
 
 SCRIPT = [
@@ -147,16 +118,17 @@ SCRIPT = [
 ]
 
 
-@pytest.mark.skipif(ONA is None, reason="ONA (pip install ona==0.9.2) not found")
+@pytest.mark.skipif(unavailable_reason() is not None, reason=str(unavailable_reason()))
 def test_the_same_dicts_as_ona_for_the_same_inputs() -> None:
     """ONA's own output lines read the same way give the same inputs, answers,
     executions and reasons (derivations in idle cycles differ with the engines, so
     they are compared only where no cycle runs on its own)."""
-    ona = _OnaShell()
+    ona = OnaProcess(timeout=30)
+    ona.send("*volume=100")
     ours = ona_api.spawnNAR()
     try:
         for line in SCRIPT:
-            theirs = ona_api.GetOutput(ona.send(line))
+            theirs = ona_api.GetOutput(_ona_output(ona, line))
             mine = ona_api.AddInput(line, Print=False, usedNAR=ours)
             for key in ("input", "answers", "executions", "reason"):
                 assert mine[key] == theirs[key], (line, key)

@@ -15,14 +15,13 @@ same text.
 
 from __future__ import annotations
 
-import shutil
-import subprocess
 from collections.abc import Callable
 from dataclasses import dataclass
 
 from robocog.minds.nars_mind import BRACKETED_GOTO_RULE, PRINTED_GOTO_RULE, background
 from robocog.nars import NarseseError, Term, parse_term
 from robocog.nars.narsese import Sentence
+from robocog.ona_process import OnaProcess, unavailable_reason
 
 #: the first rule bracketed as ONA's reader needs it
 ONA_GOTO_RULE = BRACKETED_GOTO_RULE
@@ -61,32 +60,27 @@ def ona_knowledge() -> list[str]:
     return [ONA_GOTO_RULE if line == PRINTED_GOTO_RULE else line for line in background()]
 
 
-def unavailable(command: str = "NAR") -> str | None:
-    """Why ONA cannot run here, or None."""
-    if shutil.which(command) is None:
-        return f"the {command} command of ONA is not installed (pip install ona==0.9.2)"
-    return None
+def unavailable(command: str | None = None) -> str | None:
+    """Why ONA cannot run here (``command``, or ONA's binary found as
+    :func:`robocog.ona_process.ona_command` finds it), or None."""
+    return unavailable_reason(None if command is None else [command])
 
 
 class OnaShell:
     """A running ``NAR shell`` with the calls NarsMind makes on a reasoner.
 
-    Input lines are written as they come; ``cycles`` and ``ask`` write a marker comment
-    and read ONA's output up to its echo, calling the registered operation for every
-    execution line on the way.
+    Input lines are written as they come; ``cycles`` and ``ask`` exchange them with ONA
+    (:meth:`robocog.ona_process.OnaProcess.exchange`: a marker comment, ONA's output read
+    up to its echo, each read waiting at most ``timeout`` seconds), calling the registered
+    operation for every execution line on the way. A missing binary, a child that exits
+    or one that stops answering raise :class:`~robocog.ona_process.OnaError` naming the
+    command, with ONA's last output.
     """
 
-    def __init__(self, command: str = "NAR") -> None:
-        self.proc = subprocess.Popen(
-            [command, "shell"],
-            stdin=subprocess.PIPE,
-            stdout=subprocess.PIPE,
-            stderr=subprocess.DEVNULL,
-            text=True,
-            bufsize=1,
-        )
+    def __init__(self, command: str | None = None, timeout: float = 60.0) -> None:
+        self.process = OnaProcess(None if command is None else [command], timeout=timeout)
+        self.proc = self.process.proc
         self.ops: dict[str, Callable[[Term | None], object]] = {}
-        self._marker = 0
         self.output: Callable[[str], None] | None = None
         self.add_input("*volume=0")
 
@@ -97,33 +91,23 @@ class OnaShell:
 
     def add_input(self, line: str) -> None:
         """Send one line (Narsese, a number of cycles, or a ``*`` command)."""
-        assert self.proc.stdin is not None
-        self.proc.stdin.write(line.strip() + "\n")
+        self.process.send(line)
 
     def add_sentence(self, sentence: Sentence) -> None:
         """Send a sentence built by the mind, in ONA's notation."""
         self.add_input(str(sentence))
 
+    def _on_line(self, line: str) -> None:
+        if self.output is not None:
+            self.output(line)
+        if " executed with args" in line:
+            op, _, args = line.partition(" executed with args")
+            fn = self.ops.get(op.strip())
+            if fn is not None:
+                fn(_term(args.strip()))
+
     def _sync(self) -> list[str]:
-        assert self.proc.stdin is not None and self.proc.stdout is not None
-        self._marker += 1
-        marker = f"sync{self._marker}"
-        self.proc.stdin.write(f"//{marker}\n")
-        self.proc.stdin.flush()
-        lines: list[str] = []
-        for raw in self.proc.stdout:
-            line = raw.rstrip("\n")
-            if line == f"Comment: {marker}":
-                return lines
-            lines.append(line)
-            if self.output is not None:
-                self.output(line)
-            if " executed with args" in line:
-                op, _, args = line.partition(" executed with args")
-                fn = self.ops.get(op.strip())
-                if fn is not None:
-                    fn(_term(args.strip()))
-        raise RuntimeError("ONA's process ended")
+        return self.process.exchange(on_line=self._on_line)
 
     def cycles(self, n: int) -> None:
         """Run ``n`` inference cycles and handle what they executed."""
@@ -150,16 +134,5 @@ class OnaShell:
         return None if term is None else Answer(term, found.truth)
 
     def close(self) -> None:
-        """End the process."""
-        if self.proc.poll() is None:
-            try:
-                if self.proc.stdin:
-                    self.proc.stdin.close()
-                self.proc.wait(timeout=10)
-            except (OSError, subprocess.TimeoutExpired):
-                self.proc.kill()
-                self.proc.wait()
-
-    def __del__(self) -> None:
-        if getattr(self, "proc", None) is not None and self.proc.poll() is None:
-            self.proc.kill()
+        """End the process (see :meth:`robocog.ona_process.OnaProcess.close`)."""
+        self.process.close()

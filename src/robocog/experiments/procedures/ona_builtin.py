@@ -8,13 +8,14 @@ environments report.
 from __future__ import annotations
 
 import re
-import shutil
 import subprocess
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
 
-from .reasoners import ReasonerUnavailable, ona_executable
+from robocog.ona_process import INSTALL_HINT, kill_group, line_buffered, ona_command, start_group
+
+from .reasoners import ReasonerUnavailable
 
 _NUMBER = r"(-?[0-9.]+|nan|-nan|inf)"
 #: Status line of each test: the figures it carries, in the order they appear.
@@ -80,20 +81,17 @@ def run_builtin(
     timeout: float = 3600.0,
 ) -> BuiltinResult:
     """Run ``NAR <env> <steps>`` and return the figures of its last status line."""
-    command = ona_executable()
+    command = ona_command()
     if command is None:
-        raise ReasonerUnavailable("ONA is not installed (pip install ona==0.9.2 provides `NAR`)")
+        raise ReasonerUnavailable(f"ONA is not installed ({INSTALL_HINT})")
     if not has_builtin(env):
         raise ReasonerUnavailable(f"ONA has no built-in test named {env!r} that prints a figure")
-    if shutil.which("stdbuf"):
-        command = ["stdbuf", "-oL", *command]
     started = time.perf_counter()
     last: dict[str, float] | None = None
-    with subprocess.Popen(
-        [*command, env, str(steps)],
+    with start_group(
+        line_buffered([*command, env, str(steps)]),
         stdout=subprocess.PIPE,
         stderr=subprocess.DEVNULL,
-        text=True,
         errors="replace",
     ) as proc:
         assert proc.stdout is not None
@@ -108,10 +106,10 @@ def run_builtin(
                 if on_step is not None:
                     on_step(min(steps, int(figures["time"])))
                 if time.perf_counter() - started > timeout:
-                    proc.kill()
+                    kill_group(proc)
                     break
         except BaseException:
-            proc.kill()  # interrupted: do not wait for the whole test to finish
+            kill_group(proc)  # interrupted: do not wait for the whole test to finish
             raise
         proc.wait()
     wall = time.perf_counter() - started

@@ -20,15 +20,17 @@ returns the operations it executed while digesting them, in order:
 from __future__ import annotations
 
 import os
-import queue
 import re
-import shutil
-import subprocess
-import threading
-from collections import deque
 from collections.abc import Callable, Sequence
 from typing import Any
 
+from robocog.ona_process import (
+    OnaError,
+    OnaProcess,
+    OnaUnavailable,
+    ona_command,
+    unavailable_reason,
+)
 from robocog.worlds.procedures.base import Feed, ProcedureEnv
 from robocog.worlds.procedures.runner import Reasoner
 
@@ -54,32 +56,19 @@ def setup_commands(env: ProcedureEnv) -> list[str]:
     return commands + list(env.shell_setup)
 
 
-def ona_executable() -> list[str] | None:
-    """The command that starts ONA's binary, or None when ONA is not installed.
-
-    The ``ona`` wheel's ``NAR`` script is a Python wrapper around a binary; the binary
-    is started directly when it can be found, which saves a Python start-up per run.
-    """
-    try:
-        from ona.NAR import NARPKG_PATH  # type: ignore[import-not-found]
-
-        binary = os.path.join(NARPKG_PATH, "NARexe")
-        if os.access(binary, os.X_OK):
-            return [binary]
-    except Exception:  # noqa: BLE001 - any failure to import means "look on PATH"
-        pass
-    found = shutil.which("NAR")
-    return [found] if found else None
+#: the command that starts ONA's binary, or None when ONA is not installed
+ona_executable = ona_command
 
 
 class OnaShell:
     """ONA's ``NAR shell`` driven through pipes, one child process per run.
 
-    ONA's stdout is a pipe here, so the child is started under ``stdbuf -oL`` to make it
-    line-buffered. Each feed is written in one go followed by a ``//sync N`` comment; the
-    reply is read (by a reader thread, with a timeout) up to ``Comment: sync N``, and the
-    ``^op executed with args`` lines in it are the executed operations. ``*volume=0``
-    keeps ONA from printing derivations, which would only cost time.
+    The process is a :class:`robocog.ona_process.OnaProcess`: each feed is written in one
+    go followed by a sync comment, and the reply is read (with a timeout) up to the
+    comment's echo; the ``^op executed with args`` lines in it are the executed
+    operations. ``*volume=0`` keeps ONA from printing derivations, which would only cost
+    time. Any failure of the process (it died, timed out, rejected an input) is a
+    :class:`ReasonerError` quoting ONA's last output.
     """
 
     name = "ona-shell"
@@ -87,19 +76,12 @@ class OnaShell:
     def __init__(self, timeout: float = 60.0, command: Sequence[str] | None = None) -> None:
         self.timeout = timeout
         self.command = list(command) if command else None
-        self._proc: subprocess.Popen[str] | None = None
-        self._lines: queue.Queue[str | None] = queue.Queue()
-        self._tail: deque[str] = deque(maxlen=20)
-        self._sync = 0
-        self._broken = False
-        self._reader: threading.Thread | None = None
+        self._process: OnaProcess | None = None
 
     @staticmethod
     def unavailable_reason() -> str | None:
         """None when ONA's binary is installed, else why the shell cannot run."""
-        if ona_executable() is None:
-            return "ONA is not installed (pip install ona==0.9.2 provides `NAR`)"
-        return None
+        return unavailable_reason()
 
     def start(self, env: ProcedureEnv, seed: int) -> None:
         """Start ``NAR shell`` and configure it as ONA's test configures the reasoner.
@@ -108,25 +90,10 @@ class OnaShell:
         affects the environment.
         """
         self.close()
-        command = self.command or ona_executable()
-        if command is None:
-            raise ReasonerUnavailable(self.unavailable_reason() or "ONA not found")
-        if shutil.which("stdbuf"):
-            command = ["stdbuf", "-oL", *command]
-        self._proc = subprocess.Popen(
-            [*command, "shell"],
-            stdin=subprocess.PIPE,
-            stdout=subprocess.PIPE,
-            stderr=subprocess.STDOUT,
-            text=True,
-        )
-        self._lines = queue.Queue()
-        self._tail.clear()
-        self._broken = False
-        self._reader = threading.Thread(
-            target=self._read, args=(self._proc, self._lines), daemon=True
-        )
-        self._reader.start()
+        try:
+            self._process = OnaProcess(self.command, timeout=self.timeout)
+        except OnaUnavailable as exc:
+            raise ReasonerUnavailable(str(exc)) from exc
         self._exchange(["*volume=0", *setup_commands(env)])
 
     def feed(self, feed: Feed) -> list[str]:
@@ -142,71 +109,19 @@ class OnaShell:
 
     def close(self) -> None:
         """End the child process: politely with ``quit``, by force if it misbehaved."""
-        proc, self._proc = self._proc, None
-        if proc is None:
-            return
-        try:
-            if self._broken:
-                proc.kill()
-            elif proc.stdin and not proc.stdin.closed:
-                proc.stdin.write("quit\n")
-                proc.stdin.close()
-            proc.wait(timeout=5)
-        except (OSError, subprocess.TimeoutExpired):
-            proc.kill()
-            proc.wait()
-        if self._reader is not None:
-            self._reader.join(timeout=5)  # it ends at the child's end of output
-        if proc.stdout and (self._reader is None or not self._reader.is_alive()):
-            proc.stdout.close()
-
-    @staticmethod
-    def _read(proc: subprocess.Popen[str], sink: queue.Queue[str | None]) -> None:
-        """Copy the child's output lines into a queue; None marks its end."""
-        assert proc.stdout is not None
-        try:
-            for line in proc.stdout:
-                sink.put(line.rstrip("\n"))
-        except (OSError, ValueError):
-            pass  # the pipe was closed under us; the end marker follows
-        sink.put(None)
+        process, self._process = self._process, None
+        if process is not None:
+            process.close()
 
     def _exchange(self, lines: list[str]) -> list[str]:
-        """Write lines plus a sync marker, read the reply up to the marker."""
-        proc = self._proc
-        if proc is None or proc.stdin is None:
+        """Write lines, read the reply; the operations executed in it."""
+        if self._process is None:
             raise ReasonerError("ONA's shell is not running")
-        self._sync += 1
-        marker = f"sync {self._sync}"
         try:
-            proc.stdin.write("\n".join([*lines, "//" + marker]) + "\n")
-            proc.stdin.flush()
-        except OSError as exc:
-            raise ReasonerError(self._failure(f"ONA's shell closed its input ({exc})")) from exc
-        executed: list[str] = []
-        while True:
-            try:
-                line = self._lines.get(timeout=self.timeout)
-            except queue.Empty:
-                raise ReasonerError(self._failure(f"no reply within {self.timeout} s")) from None
-            if line is None:
-                raise ReasonerError(self._failure("ONA's shell exited"))
-            self._tail.append(line)
-            if line == "Comment: " + marker:
-                return executed
-            found = _EXECUTED.match(line)
-            if found:
-                executed.append(found.group(1))
-            elif line.startswith("Test failed"):
-                raise ReasonerError(self._failure("ONA rejected an input"))
-
-    def _failure(self, what: str) -> str:
-        """An error message with the last lines ONA printed, to see what went wrong.
-
-        A shell that failed once is not trusted again: it is killed on close.
-        """
-        self._broken = True
-        return what + "; last output:\n  " + "\n  ".join(self._tail)
+            reply = self._process.exchange(lines)
+        except OnaError as exc:
+            raise ReasonerError(str(exc)) from exc
+        return [found.group(1) for line in reply if (found := _EXECUTED.match(line))]
 
 
 def _set_first(obj: Any, names: Sequence[str], value: Any) -> bool:
