@@ -136,3 +136,25 @@ def test_a_term_whose_variable_form_is_itself_is_still_swept() -> None:
     # an implication keeps its forms with variables, which are other terms
     imp = parse_term("<<s1 --> p> =/> <s2 --> p>>")
     assert all(v is not imp for v in variable_forms(imp))
+
+
+def test_a_dead_terms_variable_forms_go_in_the_same_sweep() -> None:
+    """A term's variable forms are interned after it, so the sweep's newest-first pass
+    meets them while the term still holds them; they, and the components only they
+    hold, must still go in that sweep, not one later (the table would otherwise reach
+    twice its size before they go)."""
+    from robocog.nars import terms
+    from robocog.nars.rules import variable_forms
+
+    def make() -> list[str]:
+        imp = parse_term("<<swept_form_s1 --> swept_form_p> =/> <swept_form_s2 --> swept_form_p>>")
+        forms = variable_forms(imp)
+        assert forms and all(v is not imp for v in forms)
+        # the forms and their new components: <swept_form_s1 --> $1> and the other side
+        return [str(x) for v in forms for x in (v, *v.args)]
+
+    made = make()
+    assert any("$1" in x for x in made)
+    terms._sweep()
+    left = {str(t) for t in terms._TABLE.values()}
+    assert not left & set(made)

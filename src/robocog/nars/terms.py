@@ -223,16 +223,23 @@ def _sweep() -> None:
     them first; visiting the newest first drops a dead term (and its key) before its
     components are looked at, so a whole dead subtree goes in the same pass.
 
+    A term's variable forms (``forms``, see ``rules.variable_forms``) are interned after
+    it, so the pass meets them while it still holds them: the forms of the terms it
+    dropped, and the components only those forms held, are looked at again after it,
+    so they too go in the same sweep rather than at the next one.
+
     How many references "held by the table alone" amounts to depends on how this code
     runs (interpreted, the call's argument is one more; compiled, it is not), so it is
-    measured on a probe entry that only the table holds, visited first.
+    measured on a probe entry that only the table holds, visited first, and again on
+    one for the second look.
     """
     table: dict = _TABLE
-    table[_PROBE_KEY] = Term.__new__(Term)  # newest: the first one visited
+    table[_PROBE_KEY] = _probe()  # newest: the first one visited
     keys: list = list(table)
     # the terms beside their keys, read without hashing a key per term
     terms: list = list(table.values())
     refs = sys.getrefcount
+    later: list = []  # the forms of the dropped terms
     t = None
     alone = -1
     while keys:
@@ -243,12 +250,45 @@ def _sweep() -> None:
             alone = n  # the probe's count
         if n <= alone:
             del table[k]
+            forms = t.forms
+            if forms:
+                later.extend(f for f in forms if type(f) is Term)
+    forms = None
+    if later:
+        # held by the table and this list alone, as the probe (looked at first) is
+        table[_PROBE_KEY] = _probe()
+        later.append(table[_PROBE_KEY])
+        alone = -1
+        while later:
+            t = later.pop()  # the previous one, if dropped, is released here
+            n = refs(t)
+            if alone < 0:
+                alone = n
+                del table[_PROBE_KEY]
+                continue
+            if n <= alone:
+                k = (t.op, t.args) if t.op is not None else (None, t.name)
+                if table.get(k) is t:
+                    del table[k]
+                    later.extend(t.args)  # looked at once this one is released
+                k = None  # (it holds the components' tuple, which they are counted by)
+    k = None
     t = None
     _SWEEP_AT[0] = max(200_000, 2 * len(table))
 
 
 #: the probe's key in the table during a sweep (no term has this key)
 _PROBE_KEY = ("sweep probe", ())
+
+
+def _probe() -> Term:
+    """A term for the sweep's probe entry: no connector, no components, no forms."""
+    t: Term = Term.__new__(Term)
+    t.op = None
+    t.name = "sweep probe"
+    t.args = ()
+    t.forms = None
+    return t
 
 
 def interned_count() -> int:
