@@ -161,6 +161,30 @@ def test_text_reaches_a_mind_that_hears_and_outcomes_come_back() -> None:
     assert all(o == Outcome.success() for _c, o in mind.outcomes)
 
 
+def test_the_minds_upkeep_runs_after_each_cycle_and_its_failure_stops_nothing() -> None:
+    class Tidy(ReflexMind):
+        def __init__(self) -> None:
+            super().__init__()
+            self.tidied = 0
+
+        def tidy(self) -> None:
+            self.tidied += 1
+            if self.tidied == 2:
+                raise RuntimeError("upkeep failed")
+
+    mind = Tidy()
+    link = FakeLink()
+    body = RobotBody(link, CONFIG).start()
+    feeder = Feeder(body)
+    try:
+        code = BridgeRunner(body, mind).run(max_cycles=4)
+    finally:
+        feeder.close()
+    assert code == 0
+    assert mind.tidied == 4
+    assert len(mind.outcomes) == 4
+
+
 def test_text_input_is_found_by_name() -> None:
     class Deaf:
         def perceive(self, percepts: Sequence[Percept]) -> None: ...

@@ -225,3 +225,20 @@ def test_the_place_can_be_told_on_arrival_only() -> None:
         ["<({SELF} * {p1}) --> at>. :|:"],
         [],
     ]
+
+
+def test_the_nars_minds_upkeep_sweeps_the_term_table_when_due(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    from robocog.nars import terms
+    from robocog.nars.terms import atom
+
+    mind = NarsMind()
+    monkeypatch.setattr(terms, "_SWEPT_TO", [0])
+    terms._sweep()
+    base = terms.interned_count()
+    monkeypatch.setattr(terms, "_SWEEP_AT", [base + 100])
+    for i in range(80):
+        atom(f"mind_sweep_{i}")
+    mind.tidy()
+    assert terms.interned_count() <= base

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from collections import Counter
 
+import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
@@ -158,3 +159,28 @@ def test_a_dead_terms_variable_forms_go_in_the_same_sweep() -> None:
     terms._sweep()
     left = {str(t) for t in terms._TABLE.values()}
     assert not left & set(made)
+
+
+def test_an_early_sweep_waits_for_half_the_room_then_sweeps(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """``sweep_early`` (a robot's between-cycles sweep) sweeps once the table has grown
+    half-way from its size after the last sweep to the size at which interning would
+    sweep it, and not before: a table of live terms is not swept at every call."""
+    from robocog.nars import terms
+
+    monkeypatch.setattr(terms, "_SWEPT_TO", [0])
+    terms._sweep()
+    base = terms.interned_count()
+    assert terms._SWEPT_TO[0] == base
+    monkeypatch.setattr(terms, "_SWEEP_AT", [base + 100])
+    for i in range(40):
+        atom(f"early_sweep_{i}")  # held by nothing: dead at once
+    assert terms.sweep_early() == 0
+    assert terms.interned_count() == base + 40
+    for i in range(40, 60):
+        atom(f"early_sweep_{i}")
+    assert terms.sweep_early() >= 60
+    assert terms.interned_count() <= base
+    # right after it, nothing is due, however full the table is of live terms
+    assert terms.sweep_early() == 0

@@ -121,3 +121,24 @@ def test_cycle_collector_is_paused_during_decisions_and_restored_after() -> None
     with pytest.raises(RuntimeError):
         Loop(Corridor(), Failing()).run(3)
     assert gc.isenabled()
+
+
+def test_the_minds_upkeep_runs_between_cycles_outside_their_timing() -> None:
+    """A mind's optional ``tidy()`` runs once after each cycle, never inside one."""
+    events: list[str] = []
+
+    class Tidy(Cautious):
+        def decide(self) -> list[Command]:
+            events.append("decide")
+            return super().decide()
+
+        def tidy(self) -> None:
+            events.append("tidy")
+
+    loop = Loop(Corridor(), Tidy())
+    steps: list[object] = []
+    loop.run(3, on_step=steps.append)
+    assert events == ["decide", "tidy"] * 3
+    assert len(steps) == 3
+    # a mind without one runs as before
+    assert Loop(Corridor(), Cautious()).run(2) == 2

@@ -18,7 +18,7 @@ from collections.abc import Callable
 
 from robocog.bridges.body import RobotBody
 from robocog.robot.commands import Command, Outcome
-from robocog.robot.loop import CycleStats, Step
+from robocog.robot.loop import CycleStats, Step, tidy
 from robocog.robot.protocols import Mind
 
 log = logging.getLogger("robocog.bridges")
@@ -103,6 +103,8 @@ class BridgeRunner:
                     frames = self.body.scans
                     self.body.frame_done(stamp)
                 if ok:
+                    self._tidy()  # (the robot has its commands: nothing waits on this)
+                if ok:
                     failures = 0
                 else:
                     failures += 1
@@ -160,6 +162,14 @@ class BridgeRunner:
             except Exception as exc:  # noqa: BLE001 - an observer never stops the robot
                 log.error("the cycle's observer failed: %s: %s", type(exc).__name__, exc)
         return True
+
+    def _tidy(self) -> None:
+        """The mind's between-cycles upkeep (:func:`robocog.robot.loop.tidy`); a failure
+        of it is logged and never stops the robot."""
+        try:
+            tidy(self.mind)
+        except Exception as exc:  # noqa: BLE001
+            log.error("the mind's upkeep failed: %s: %s", type(exc).__name__, exc)
 
     def _mind_failed(self, exc: BaseException) -> None:
         log.error("the mind failed: %s: %s", type(exc).__name__, exc, exc_info=exc)

@@ -60,6 +60,7 @@ from robocog.minds.nars_encoding import (
     seen_kind,
 )
 from robocog.robot.commands import Command, Drop, GoTo, Outcome, Pick
+from robocog.robot.loop import tidy as upkeep
 from robocog.robot.percepts import Detection, Gripper, Obstacle, Percept, Pose
 
 if TYPE_CHECKING:
@@ -266,6 +267,11 @@ class NarsMind:
             self._holding = False
             for event in gripper_events(False):
                 self._tell(event)
+
+    def tidy(self) -> None:
+        """Between cycles: the reasoner's upkeep (robocog's sweeps the process's term
+        table when due, see ``NAR.tidy``; ONA in another process has none)."""
+        upkeep(self.nar)
 
     # ---- the operator's route and the user's questions --------------------------
 

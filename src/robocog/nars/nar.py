@@ -23,7 +23,7 @@ from .memory import Concept
 from .narsese import MAX_LINE, NarseseError, Sentence, parse_sentence
 from .state import DEFAULT_OPERATIONS, Reasoner, clear, clear_caches, emit
 from .state import rand as _rand
-from .terms import Term, atom
+from .terms import Term, atom, sweep_early
 
 #: the most cycles one input line may ask for (a bare number): ONA's examples ask for
 #: a thousand at most; a hundred million is hours of work, so more is a typo
@@ -216,6 +216,13 @@ class NAR(Reasoner):
     def cycles(self, n: int) -> None:
         """Run ``n`` inference cycles."""
         cycle.cycles(self, n)
+
+    def tidy(self) -> int:
+        """Do between a robot's cycles the upkeep that would otherwise pause one: sweep
+        the process's term table of terms nobody holds once it is half-way to the size
+        at which making a term would sweep it (:func:`terms.sweep_early`). Reasoning is
+        unchanged by it. Returns how many terms went."""
+        return sweep_early()
 
     # -------------------------------------------------------------- questions
     def answer(self, question: Term, tense: str | None = None) -> Event | None:

@@ -214,6 +214,8 @@ Key = tuple[object, ...]
 _TABLE: dict[tuple[object, ...], Term] = {}
 #: the table is swept of terms nobody else holds when it grows past this size
 _SWEEP_AT = [200_000]
+#: its size after the last sweep (see ``sweep_early``)
+_SWEPT_TO = [0]
 
 
 def _sweep() -> None:
@@ -274,6 +276,7 @@ def _sweep() -> None:
                 k = None  # (it holds the components' tuple, which they are counted by)
     k = None
     t = None
+    _SWEPT_TO[0] = len(table)
     _SWEEP_AT[0] = max(200_000, 2 * len(table))
 
 
@@ -289,6 +292,26 @@ def _probe() -> Term:
     t.args = ()
     t.forms = None
     return t
+
+
+def sweep_early(share: float = 0.5) -> int:
+    """Sweep the table now if it has grown ``share`` of the way from its size after the
+    last sweep to the size at which interning would sweep it; returns how many terms
+    went.
+
+    Interning sweeps the table when a new term would pass the limit, which is in the
+    middle of a reasoning step: a sweep of a few hundred thousand terms takes a tenth of
+    a second, a decision's worth of time. A robot's loop calls this between its cycles
+    (``NAR.tidy``), so the sweeps happen there and interning rarely needs one. (Measured
+    from the last sweep's result, not from zero: a table mostly of live terms would
+    otherwise be swept again at every call.)
+    """
+    before = len(_TABLE)
+    last = _SWEPT_TO[0]
+    if before < last + share * (_SWEEP_AT[0] - last):
+        return 0
+    _sweep()
+    return before - len(_TABLE)
 
 
 def interned_count() -> int:

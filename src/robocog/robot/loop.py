@@ -93,6 +93,16 @@ class Step:
     cycle_seconds: float
 
 
+def tidy(mind: object) -> None:
+    """Run ``mind``'s upkeep between two cycles, if it has any: an optional ``tidy()``
+    method (see :class:`~robocog.robot.protocols.Mind`) for work that would otherwise
+    pause a decision, such as a reasoner's sweep of its term table. (Any object: a mind
+    calls it on its reasoner too.)"""
+    upkeep = getattr(mind, "tidy", None)
+    if callable(upkeep):
+        upkeep()
+
+
 class Loop:
     """Runs a mind on a body, one perception-reason-action cycle at a time."""
 
@@ -133,7 +143,8 @@ class Loop:
         longer than a decision. While the loop runs it is paused and the garbage is
         collected between cycles instead: the youngest generation after every cycle,
         the middle one every ``GC_MIDDLE_EVERY`` cycles, the whole heap every
-        ``GC_FULL_EVERY``. Returns the number of cycles run.
+        ``GC_FULL_EVERY``. A mind's own upkeep, if it has any (:func:`tidy`), runs
+        there too. Returns the number of cycles run.
         """
         ran = 0
         automatic = gc.isenabled()
@@ -148,6 +159,7 @@ class Loop:
                     gc.collect(1)
                 else:
                     gc.collect(0)
+                tidy(self.mind)
                 if on_step:
                     on_step(step)
         finally:

@@ -32,7 +32,12 @@ class Body(Protocol):
 
 @runtime_checkable
 class Mind(Protocol):
-    """A reasoning engine behind the contract."""
+    """A reasoning engine behind the contract.
+
+    A mind may also have a ``tidy()`` method, not part of the protocol: upkeep that the
+    robot's loop runs between cycles, outside their timing, so that it never pauses a
+    decision (see :func:`robocog.robot.loop.tidy`).
+    """
 
     def perceive(self, percepts: Sequence[Percept]) -> None:
         """Take in what the body senses this cycle."""
