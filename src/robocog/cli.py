@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import signal
 import sys
 from collections.abc import Sequence
 
@@ -65,12 +66,17 @@ def build_parser(argv: Sequence[str]) -> argparse.ArgumentParser:
 def main(argv: Sequence[str] | None = None) -> int:
     """Entry point of the ``robocog`` console script."""
     argv = list(sys.argv[1:] if argv is None else argv)
-    parser = build_parser(argv)
-    args = parser.parse_args(argv)
-    if args.command is None:
-        parser.print_help()
-        return 2
-    return int(_load(args.command).run(args) or 0)
+    try:
+        parser = build_parser(argv)
+        args = parser.parse_args(argv)
+        if args.command is None:
+            parser.print_help()
+            return 2
+        return int(_load(args.command).run(args) or 0)
+    except KeyboardInterrupt as stop:
+        # Ctrl-C (or a SIGTERM a command turned into the same) ends a command without a
+        # traceback, with the shell's code for it: 128 + the signal's number
+        return 128 + int(getattr(stop, "signum", signal.SIGINT))
 
 
 if __name__ == "__main__":

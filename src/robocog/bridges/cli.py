@@ -125,7 +125,7 @@ def run(args: argparse.Namespace) -> int:
         with inspector_cli.session(args, f"robocog bridge {args.middleware}") as inspecting:
             if inspecting is not None:
                 label = f"{args.middleware} bridge, mind {args.mind}"
-                runner.on_cycle = inspecting.inspector.watch(body, mind, runner, label)
+                runner.on_cycle = inspecting.watch(body, mind, runner, label)
             body.start()
             log.info("bridge %s up, mind %s", args.middleware, args.mind)
             code = runner.run(duration=args.duration)

@@ -6,18 +6,103 @@ run is over and the terminal is interactive, the page stays up with the last wor
 mind until Ctrl-C, so they can still be questioned (``--inspect-exit`` ends at once).
 ``--inspect-record FILE`` writes the snapshots to a JSON-lines log that
 ``robocog inspect FILE`` shows again, with its timeline, without a robot.
+
+Ctrl-C (SIGINT) and SIGTERM end both at any moment, while starting, running or
+serving: the first one interrupts the main thread, the server and the log are then
+closed (in a bounded time) and any further signal waits for that to finish, so that
+neither a second Ctrl-C nor one arriving during the cleanup leaves a traceback, a
+half-written log or a server thread behind.
 """
 
 from __future__ import annotations
 
 import argparse
+import signal
 import sys
+import threading
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from pathlib import Path
+from types import FrameType
 from typing import Any
 
 DEFAULT_PORT = 8765
+
+
+class Stopped(KeyboardInterrupt):
+    """SIGINT or SIGTERM, raised in the main thread so that every ``finally`` runs.
+
+    A KeyboardInterrupt, so that code which ends on Ctrl-C ends the same way on SIGTERM.
+    """
+
+    def __init__(self, signum: int) -> None:
+        super().__init__(signal.Signals(signum).name)
+        self.signum = signum
+
+
+class StopSignals:
+    """While entered, SIGINT (and SIGTERM, unless something else handles it) raise
+    :class:`Stopped` once; a later signal only marks the stop, so that the cleanup the
+    first one started is not itself cut short. ``cleaning()`` holds signals off in the
+    same way around a cleanup that no signal started (the run ended by itself).
+
+    A raise can be lost: a signal that lands while the interpreter runs a ``__del__``,
+    a weakref callback (the import system's module locks have some) or the garbage
+    collector is only printed as "Exception ignored", and the work goes on as if nothing
+    had happened. So the stop is also remembered, and :meth:`check` raises it again at
+    the points where the work can stop: each cycle of a watched loop, the lingering page,
+    the steps of starting.
+
+    Python delivers signals to the main thread only: entered from another thread this
+    does nothing, and the default handling stays.
+    """
+
+    def __init__(self) -> None:
+        self.stopping = False
+        self.signum: int | None = None
+        self._before: dict[int, Any] = {}
+
+    def _handle(self, signum: int, _frame: FrameType | None) -> None:
+        if self.stopping:
+            return
+        self.stopping = True
+        self.signum = signum
+        raise Stopped(signum)
+
+    @property
+    def asked(self) -> bool:
+        """True once a signal asked to stop."""
+        return self.signum is not None
+
+    def check(self) -> None:
+        """Raise :class:`Stopped` if a signal asked to stop (its own raise may have been
+        lost)."""
+        if self.signum is not None:
+            raise Stopped(self.signum)
+
+    def __enter__(self) -> StopSignals:
+        if threading.current_thread() is not threading.main_thread():
+            return self
+        self._before[signal.SIGINT] = signal.signal(signal.SIGINT, self._handle)
+        if signal.getsignal(signal.SIGTERM) == signal.SIG_DFL:
+            self._before[signal.SIGTERM] = signal.signal(signal.SIGTERM, self._handle)
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        for signum, handler in self._before.items():
+            signal.signal(signum, handler)
+        self._before.clear()
+
+    @contextmanager
+    def cleaning(self) -> Iterator[None]:
+        """Signals during the block are taken as the stop already under way."""
+        self.stopping = True
+        yield
+
+
+def exit_code(stop: KeyboardInterrupt) -> int:
+    """The shell's convention for a process ended by a signal: 128 + its number."""
+    return 128 + int(getattr(stop, "signum", signal.SIGINT))
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -58,10 +143,29 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 class Session:
     """A running inspector with its server (and log): what ``--inspect`` gives a run."""
 
-    def __init__(self, inspector: Any, server: Any, writer: Any = None) -> None:
+    def __init__(
+        self,
+        inspector: Any,
+        server: Any,
+        writer: Any = None,
+        signals: StopSignals | None = None,
+    ) -> None:
         self.inspector = inspector
         self.server = server
         self.writer = writer
+        self.signals = signals or StopSignals()
+
+    def watch(self, world: Any, mind: Any, loop: Any, label: str = "") -> Callable[[Any], None]:
+        """:meth:`Inspector.watch`, whose ``on_step`` also ends the run on a signal whose
+        own raise was lost."""
+        on_step = self.inspector.watch(world, mind, loop, label)
+        check = self.signals.check
+
+        def step(done: Any) -> None:
+            check()
+            on_step(done)
+
+        return step
 
     def watcher(self) -> Callable[..., Any]:
         """The hook for the experiment's loops, labelling each run by mind and seed."""
@@ -71,64 +175,82 @@ class Session:
             seed = getattr(world, "seed", None)
             return f"{name}" + (f", seed {seed}" if seed is not None else "")
 
-        return self.inspector.watcher(label)
+        def hook(world: Any, mind: Any, loop: Any) -> Callable[[Any], None]:
+            return self.watch(world, mind, loop, label(world, mind))
+
+        return hook
 
 
 @contextmanager
 def session(args: argparse.Namespace, source: str = "") -> Iterator[Session | None]:
-    """The inspector for a run when ``--inspect`` was given, else None."""
+    """The inspector for a run when ``--inspect`` was given, else None.
+
+    A signal during the run (or while the page lingers after it) reaches the run as a
+    KeyboardInterrupt after the server and the log are closed."""
     port = getattr(args, "inspect", None)
     if port is None:
         yield None
         return
-    try:
-        from robocog.inspector.server import InspectorServer
-    except ModuleNotFoundError as exc:  # pragma: no cover - depends on the install
-        raise SystemExit(
-            f"--inspect needs the inspect extra: pip install 'robocog[inspect]' ({exc})"
-        ) from exc
-    from robocog.inspector.hub import Inspector
-    from robocog.inspector.snapshot import LogWriter
-
-    inspector = Inspector()
-    server = InspectorServer(inspector, host=args.host, port=port)
-    try:
-        url = server.start()
-    except OSError as exc:
-        raise SystemExit(f"the inspector cannot listen on {args.host}:{port}: {exc}") from exc
-    print(f"inspector: {url}", flush=True)
-    if server.token:
-        print(
-            "inspector: bound beyond loopback; the token above is required on every request",
-            flush=True,
-        )
-    writer = None
-    if args.inspect_record is not None:
+    with StopSignals() as signals:
         try:
-            writer = LogWriter(
-                inspector.history,
-                args.inspect_record,
-                source=source,
-                max_bytes=max(1, args.inspect_record_limit) << 20,
-            )
-        except OSError as exc:
-            server.stop()
-            raise SystemExit(f"the inspector cannot write {args.inspect_record}: {exc}") from exc
-    live = Session(inspector, server, writer)
-    try:
-        yield live
-        if not args.inspect_exit and sys.stdin.isatty():
-            print(f"inspector: the run is over; the page stays at {url} until Ctrl-C", flush=True)
+            from robocog.inspector.server import InspectorServer
+        except ModuleNotFoundError as exc:  # pragma: no cover - depends on the install
+            raise SystemExit(
+                f"--inspect needs the inspect extra: pip install 'robocog[inspect]' ({exc})"
+            ) from exc
+        from robocog.inspector.hub import Inspector
+        from robocog.inspector.snapshot import LogWriter
+
+        inspector = Inspector()
+        server = InspectorServer(inspector, host=args.host, port=port)
+        writer = None
+        try:
             try:
-                inspector.linger()
-            except KeyboardInterrupt:
-                pass
-    finally:
-        inspector.close()
-        if writer is not None:
-            writer.close()
-            print(f"inspector: {writer.written} snapshots in {args.inspect_record}", flush=True)
-        server.stop()
+                url = server.start(check=signals.check)
+            except OSError as exc:
+                raise SystemExit(
+                    f"the inspector cannot listen on {args.host}:{port}: {exc}"
+                ) from exc
+            print(f"inspector: {url}", flush=True)
+            if server.token:
+                print(
+                    "inspector: bound beyond loopback; the token above is required on every request",
+                    flush=True,
+                )
+            if args.inspect_record is not None:
+                try:
+                    writer = LogWriter(
+                        inspector.history,
+                        args.inspect_record,
+                        source=source,
+                        max_bytes=max(1, args.inspect_record_limit) << 20,
+                    )
+                except OSError as exc:
+                    raise SystemExit(
+                        f"the inspector cannot write {args.inspect_record}: {exc}"
+                    ) from exc
+            signals.check()
+            yield Session(inspector, server, writer, signals)
+            signals.check()
+            if not args.inspect_exit and sys.stdin.isatty():
+                print(
+                    f"inspector: the run is over; the page stays at {url} until Ctrl-C",
+                    flush=True,
+                )
+                try:
+                    inspector.linger(stop=lambda: signals.asked)
+                except KeyboardInterrupt:
+                    pass
+        finally:
+            with signals.cleaning():
+                inspector.close()
+                if writer is not None:
+                    writer.close()
+                    print(
+                        f"inspector: {writer.written} snapshots in {args.inspect_record}",
+                        flush=True,
+                    )
+                server.stop()
 
 
 # ---- robocog inspect FILE --------------------------------------------------------------
@@ -149,44 +271,58 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    """Serve a recorded run's page until Ctrl-C (or only check the file)."""
-    from robocog.inspector.snapshot import LogError, read_log
+    """Serve a recorded run's page until Ctrl-C or SIGTERM (or only check the file).
 
-    try:
-        head, history = read_log(args.file)
-    except (OSError, LogError) as exc:
-        print(f"robocog inspect: {exc}", file=sys.stderr)
-        return 2
-    first, last = history.bounds()
-    ended = f", ended early: {head['end']}" if "end" in head else ""
-    print(
-        f"{args.file}: {len(history)} snapshots (seq {first}..{last}), recorded {head.get('created', '?')}"
-        f" from {head.get('source') or 'a run'}{ended}"
-    )
-    if args.check:
-        return 0
-    try:
-        from robocog.inspector.server import InspectorServer
-    except ModuleNotFoundError as exc:  # pragma: no cover - depends on the install
-        print(f"robocog inspect: needs the inspect extra ({exc})", file=sys.stderr)
-        return 2
-    from robocog.inspector.hub import Inspector
+    Stopped while serving, as it is meant to end, it answers 0; stopped while it still
+    reads the log or starts the server, 128 + the signal's number."""
+    with StopSignals() as signals:
+        server = None
+        serving = False
+        try:
+            from robocog.inspector.snapshot import LogError, read_log
 
-    inspector = Inspector()
-    inspector.history = history
-    inspector.live = False
-    inspector.run_label = f"recorded: {args.file.name}"
-    server = InspectorServer(inspector, host=args.host, port=args.port)
-    try:
-        url = server.start()
-    except OSError as exc:
-        print(f"robocog inspect: cannot listen on {args.host}:{args.port}: {exc}", file=sys.stderr)
-        return 2
-    print(f"inspector: {url} (Ctrl-C to stop)", flush=True)
-    try:
-        inspector.linger()
-    except KeyboardInterrupt:
-        pass
-    finally:
-        server.stop()
-    return 0
+            try:
+                head, history = read_log(args.file)
+            except (OSError, LogError) as exc:
+                print(f"robocog inspect: {exc}", file=sys.stderr)
+                return 2
+            first, last = history.bounds()
+            ended = f", ended early: {head['end']}" if "end" in head else ""
+            print(
+                f"{args.file}: {len(history)} snapshots (seq {first}..{last}), recorded {head.get('created', '?')}"
+                f" from {head.get('source') or 'a run'}{ended}"
+            )
+            if args.check:
+                return 0
+            try:
+                from robocog.inspector.server import InspectorServer
+            except ModuleNotFoundError as exc:  # pragma: no cover - depends on the install
+                print(f"robocog inspect: needs the inspect extra ({exc})", file=sys.stderr)
+                return 2
+            from robocog.inspector.hub import Inspector
+
+            inspector = Inspector()
+            inspector.history = history
+            inspector.live = False
+            inspector.run_label = f"recorded: {args.file.name}"
+            server = InspectorServer(inspector, host=args.host, port=args.port)
+            signals.check()
+            try:
+                url = server.start(check=signals.check)
+            except OSError as exc:
+                print(
+                    f"robocog inspect: cannot listen on {args.host}:{args.port}: {exc}",
+                    file=sys.stderr,
+                )
+                return 2
+            signals.check()
+            serving = True
+            print(f"inspector: {url} (Ctrl-C to stop)", flush=True)
+            inspector.linger(stop=lambda: signals.asked)
+            return 0
+        except KeyboardInterrupt as stop:
+            return 0 if serving else exit_code(stop)
+        finally:
+            if server is not None:
+                with signals.cleaning():
+                    server.stop()

@@ -23,6 +23,7 @@ import json
 import secrets
 import threading
 from collections import OrderedDict
+from collections.abc import Callable
 from typing import Any
 
 from robocog.inspector.hub import MAX_INPUT, Inspector
@@ -385,8 +386,11 @@ class InspectorServer:
         base = f"http://{shown}:{self.port}/"
         return base + (f"?token={self.token}" if self.token else "")
 
-    def start(self, timeout: float = 10.0) -> str:
-        """Start serving; returns the address once the socket listens."""
+    def start(self, timeout: float = 10.0, check: Callable[[], None] | None = None) -> str:
+        """Start serving; returns the address once the socket listens.
+
+        ``check`` is called while waiting for that and may raise to give up (a stop
+        asked for meanwhile); the server is then stopped before the exception goes on."""
         import uvicorn
 
         config = uvicorn.Config(
@@ -402,20 +406,30 @@ class InspectorServer:
         self._thread = threading.Thread(target=self._server.run, name="inspector-web", daemon=True)
         self._thread.start()
         waited = 0.0
-        while not self._server.started:
-            if not self._thread.is_alive():
-                raise OSError(f"the inspector could not listen on {self.host}:{self.port}")
-            threading.Event().wait(0.02)
-            waited += 0.02
-            if waited > timeout:
-                raise TimeoutError("the inspector's server did not start")
+        try:
+            while not self._server.started:
+                if not self._thread.is_alive():
+                    raise OSError(f"the inspector could not listen on {self.host}:{self.port}")
+                threading.Event().wait(0.02)
+                if check is not None:
+                    check()
+                waited += 0.02
+                if waited > timeout:
+                    raise TimeoutError("the inspector's server did not start")
+        except BaseException:
+            # (Ctrl-C while it starts included: the thread would go on to listen)
+            self.stop()
+            raise
         sockets = [s for srv in self._server.servers for s in srv.sockets]
         if sockets:
             self.port = sockets[0].getsockname()[1]
         return self.url
 
     def stop(self) -> None:
-        """Stop serving (open streams are cut)."""
+        """Stop serving (open streams are cut), in at most about three seconds.
+
+        The server's thread is a daemon: should it still not have ended by then, it
+        does not keep the process alive."""
         self.stopping.set()
         if self._server is not None:
             self._server.should_exit = True
@@ -423,4 +437,4 @@ class InspectorServer:
             self._thread.join(timeout=1.5)
             if self._thread.is_alive() and self._server is not None:
                 self._server.force_exit = True  # a stream whose client never reads
-                self._thread.join(timeout=5)
+                self._thread.join(timeout=1.5)
