@@ -5,8 +5,10 @@ from __future__ import annotations
 import json
 import os
 import signal
+import socket
 import subprocess
 import sys
+import time
 import urllib.error
 import urllib.request
 from collections.abc import Iterator
@@ -97,3 +99,112 @@ def test_the_page_scrubs_through_a_recording(served: str, page, screenshot) -> N
     assert page.locator("#robot").get_attribute("data-x") == "1.5"
     expect(page.locator("#intentions")).to_be_visible()
     screenshot(page)
+
+
+# ---- Ctrl-C and SIGTERM end it, whenever they come ---------------------------------------
+
+#: how long a signalled inspector may take to end (it takes a fraction of a second; the
+#: bound leaves room for a loaded machine)
+ENDS_WITHIN = 8.0
+
+
+def _address(proc: subprocess.Popen) -> str:
+    """The page's address the command prints, once its port answers."""
+    assert proc.stdout is not None
+    url = ""
+    for line in proc.stdout:
+        if line.startswith("inspector: http"):
+            url = line.split()[1]
+            break
+    assert url, "the command printed no address"
+    assert url.startswith("http://127.0.0.1:")
+    deadline = time.monotonic() + 30
+    while True:
+        try:
+            with urllib.request.urlopen(url + "api/state", timeout=5) as r:
+                assert r.status == 200
+                return url
+        except OSError:
+            assert time.monotonic() < deadline, "the page never answered"
+            time.sleep(0.05)
+
+
+def _ends(proc: subprocess.Popen, sig: int) -> tuple[int, str, float]:
+    """Send ``sig``; the exit code, what the process wrote, and how long it took."""
+    started = time.monotonic()
+    proc.send_signal(sig)
+    try:
+        out, _ = proc.communicate(timeout=ENDS_WITHIN)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        out, _ = proc.communicate()
+        pytest.fail(f"still running {ENDS_WITHIN} s after {signal.Signals(sig).name}:\n{out}")
+    return proc.returncode, out, time.monotonic() - started
+
+
+def _stream(url: str) -> socket.socket:
+    """A page's stream, open: the server has a response in progress."""
+    port = int(url.rsplit(":", 1)[1].strip("/"))
+    s = socket.create_connection(("127.0.0.1", port), timeout=10)
+    s.sendall(b"GET /api/stream HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n")
+    assert b"text/event-stream" in s.recv(4096)
+    return s
+
+
+@pytest.mark.parametrize("sig", [signal.SIGINT, signal.SIGTERM])
+def test_a_signal_ends_the_served_recording_at_once_and_quietly(recording: Path, sig: int) -> None:
+    for streaming in (False, True, True):
+        proc = robocog("inspect", str(recording), "--port", "0")
+        url = _address(proc)
+        page = _stream(url) if streaming else None
+        try:
+            code, out, _ = _ends(proc, sig)
+        finally:
+            if page is not None:
+                page.close()
+        assert code == 0, out
+        assert "Traceback" not in out and "Exception ignored" not in out, out
+
+
+def test_ctrl_c_while_starting_ends_it_without_a_traceback(recording: Path) -> None:
+    # from the moment the command has read the log (its first line) to serving
+    for delay in (0.0, 0.02, 0.05, 0.1, 0.2, 0.4):
+        proc = robocog("inspect", str(recording), "--port", "0")
+        assert proc.stdout is not None
+        assert "snapshots" in proc.stdout.readline()
+        time.sleep(delay)
+        code, out, _ = _ends(proc, signal.SIGINT)
+        # 0 once it serves (how it is meant to end), 130 if it did not serve yet
+        assert code in (0, 130), out
+        assert "Traceback" not in out and "Exception ignored" not in out, out
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("sig", [signal.SIGINT, signal.SIGTERM])
+def test_a_signal_ends_a_running_mind_and_closes_its_recording(tmp_path: Path, sig: int) -> None:
+    from robocog.inspector.snapshot import read_log
+
+    log = tmp_path / "run.jsonl"
+    proc = robocog(
+        "experiment", "garbage", "--runs", "5", "--minds", "nars", "--rounds", "12",
+        "--no-report", "--inspect", "0", "--inspect-record", str(log), cwd=tmp_path,
+    )  # fmt: skip
+    url = _address(proc)
+    page = _stream(url)
+    try:
+        deadline = time.monotonic() + 60
+        while True:  # the mind has been running for a while
+            with urllib.request.urlopen(url + "api/state", timeout=5) as r:
+                if json.load(r)["state"]["last"] >= 20:
+                    break
+            assert time.monotonic() < deadline, "the run made no snapshots"
+            time.sleep(0.1)
+        code, out, _ = _ends(proc, sig)
+    finally:
+        page.close()
+    # ended by the signal, as the shell counts it, with the recording closed
+    assert code == 128 + sig, out
+    assert "Traceback" not in out and "Exception ignored" not in out, out
+    assert f"snapshots in {log}" in out
+    _, history = read_log(log)
+    assert len(history) >= 20
