@@ -22,11 +22,11 @@ import math
 import os
 from collections.abc import Iterator
 from dataclasses import dataclass
-from typing import Any
 
 import mujoco
 import numpy as np
 
+from robocog.worlds.physics.detector import shared_detector
 from robocog.worlds.physics.scene import CUBE, TAG_SIZE, Layout
 
 CAMERAS = ("overhead", "front")
@@ -56,20 +56,6 @@ class CubeView:
     yaw: float
     upright: bool
     seen_from: str
-
-
-_DETECTOR: Any = None
-
-
-def shared_detector() -> Any:
-    """One tag36h11 detector for the process (its setup is the costly part; it keeps no
-    state between images)."""
-    global _DETECTOR
-    if _DETECTOR is None:
-        from pupil_apriltags import Detector
-
-        _DETECTOR = Detector(families="tag36h11", nthreads=1, quad_decimate=1.0)
-    return _DETECTOR
 
 
 @contextlib.contextmanager
