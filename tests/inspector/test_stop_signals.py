@@ -92,3 +92,35 @@ def test_sigterm_is_left_to_a_command_that_handles_it(main_thread: None) -> None
                 signal.raise_signal(signal.SIGINT)
     finally:
         signal.signal(signal.SIGTERM, previous)
+
+
+def test_a_stop_lost_while_the_page_holds_the_loop_paused_ends_the_pause(
+    unraisable: list[Any],
+) -> None:
+    world = GarbageField(GarbageConfig(), seed=4)
+    mind = BdiMind()
+    loop = Loop(world, mind)
+    inspector = Inspector()
+    applied = inspector.apply_commands
+
+    def apply_commands() -> bool:  # the signal lands in a __del__ while paused
+        if inspector.paused:
+            _SignalledWhileDropped(signal.SIGINT)
+        return applied()
+
+    inspector.apply_commands = apply_commands  # type: ignore[method-assign]
+    # (should the pause never end, the test closes the inspector rather than hang)
+    guard = threading.Timer(20, inspector.close)
+    guard.start()
+    try:
+        with StopSignals() as signals:
+            inspector.interrupted = lambda: signals.asked
+            on_step = Session(inspector, server=None, signals=signals).watch(world, mind, loop)
+            inspector.submit("pause")
+            with pytest.raises(Stopped):
+                loop.run(100, on_step=on_step)
+    finally:
+        guard.cancel()
+    assert unraisable == [Stopped]
+    assert not inspector.closed, "the pause only ended when the test closed it"
+    assert loop.cycles == 2  # paused after the first, stopped before the third

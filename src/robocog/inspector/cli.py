@@ -50,7 +50,7 @@ class StopSignals:
     a weakref callback (the import system's module locks have some) or the garbage
     collector is only printed as "Exception ignored", and the work goes on as if nothing
     had happened. So the stop is also remembered, and :meth:`check` raises it again at
-    the points where the work can stop: each cycle of a watched loop, the lingering page,
+    the points where the work can stop: each cycle of a watched loop, a pause, the lingering page,
     the steps of starting.
 
     Python delivers signals to the main thread only: entered from another thread this
@@ -202,6 +202,7 @@ def session(args: argparse.Namespace, source: str = "") -> Iterator[Session | No
         from robocog.inspector.snapshot import LogWriter
 
         inspector = Inspector()
+        inspector.interrupted = lambda: signals.asked
         server = InspectorServer(inspector, host=args.host, port=port)
         writer = None
         try:
@@ -238,7 +239,7 @@ def session(args: argparse.Namespace, source: str = "") -> Iterator[Session | No
                     flush=True,
                 )
                 try:
-                    inspector.linger(stop=lambda: signals.asked)
+                    inspector.linger()
                 except KeyboardInterrupt:
                     pass
         finally:
@@ -302,6 +303,7 @@ def run(args: argparse.Namespace) -> int:
             from robocog.inspector.hub import Inspector
 
             inspector = Inspector()
+            inspector.interrupted = lambda: signals.asked
             inspector.history = history
             inspector.live = False
             inspector.run_label = f"recorded: {args.file.name}"
@@ -318,7 +320,7 @@ def run(args: argparse.Namespace) -> int:
             signals.check()
             serving = True
             print(f"inspector: {url} (Ctrl-C to stop)", flush=True)
-            inspector.linger(stop=lambda: signals.asked)
+            inspector.linger()
             return 0
         except KeyboardInterrupt as stop:
             return 0 if serving else exit_code(stop)

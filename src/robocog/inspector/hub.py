@@ -97,6 +97,9 @@ class Inspector:
         self.paused = False
         self._steps = 0
         self.closed = False
+        #: asked between waits: true ends a pause and the lingering as closing does
+        #: (the command's Ctrl-C, whose own raise can be lost in a __del__)
+        self.interrupted: Callable[[], bool] | None = None
         self.run_label = ""
         self.runs = 0
         self.world: Any = None
@@ -167,8 +170,9 @@ class Inspector:
             self.hold()
 
     def hold(self) -> None:
-        """While paused, serve commands until resumed or asked for one step."""
-        while not self.closed:
+        """While paused, serve commands until resumed or asked for one step (or
+        closed, or interrupted)."""
+        while not self.closed and not (self.interrupted and self.interrupted()):
             with self._lock:
                 if not self.paused:
                     return
@@ -310,7 +314,8 @@ class Inspector:
         page asks for steps. Returns when ``stop()`` is true or the inspector is closed."""
         ran = 0
         self.finish()
-        while not self.closed and not (stop and stop()):
+        interrupted = self.interrupted
+        while not self.closed and not (stop and stop()) and not (interrupted and interrupted()):
             with self._lock:
                 if not self._queue and not self._steps and not self._busy():
                     self._wake.wait(0.1)
