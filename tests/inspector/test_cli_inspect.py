@@ -168,6 +168,7 @@ def test_a_signal_ends_the_served_recording_at_once_and_quietly(recording: Path,
 
 def test_ctrl_c_while_starting_ends_it_without_a_traceback(recording: Path) -> None:
     # from the moment the command has read the log (its first line) to serving
+    codes: set[int] = set()
     for delay in (0.0, 0.02, 0.05, 0.1, 0.2, 0.4):
         proc = robocog("inspect", str(recording), "--port", "0")
         assert proc.stdout is not None
@@ -177,6 +178,8 @@ def test_ctrl_c_while_starting_ends_it_without_a_traceback(recording: Path) -> N
         # 0 once it serves (how it is meant to end), 130 if it did not serve yet
         assert code in (0, 130), out
         assert "Traceback" not in out and "Exception ignored" not in out, out
+        codes.add(code)
+    assert 130 in codes, "no signal came before it served: the test tried nothing"
 
 
 @pytest.mark.slow

@@ -291,7 +291,8 @@ def run(args: argparse.Namespace) -> int:
             ended = f", ended early: {head['end']}" if "end" in head else ""
             print(
                 f"{args.file}: {len(history)} snapshots (seq {first}..{last}), recorded {head.get('created', '?')}"
-                f" from {head.get('source') or 'a run'}{ended}"
+                f" from {head.get('source') or 'a run'}{ended}",
+                flush=True,
             )
             if args.check:
                 return 0
