@@ -124,3 +124,14 @@ def test_a_stop_lost_while_the_page_holds_the_loop_paused_ends_the_pause(
     assert unraisable == [Stopped]
     assert not inspector.closed, "the pause only ended when the test closed it"
     assert loop.cycles == 2  # paused after the first, stopped before the third
+
+
+def test_an_ignored_sigint_stays_ignored(main_thread: None) -> None:
+    previous = signal.signal(signal.SIGINT, signal.SIG_IGN)
+    try:
+        with StopSignals() as signals:
+            signal.raise_signal(signal.SIGINT)  # a job in the background: nothing happens
+            assert not signals.asked
+            assert signal.getsignal(signal.SIGINT) == signal.SIG_IGN
+    finally:
+        signal.signal(signal.SIGINT, previous)

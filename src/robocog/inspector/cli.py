@@ -41,7 +41,7 @@ class Stopped(KeyboardInterrupt):
 
 
 class StopSignals:
-    """While entered, SIGINT (and SIGTERM, unless something else handles it) raise
+    """While entered, SIGINT and SIGTERM (each unless something else handles it) raise
     :class:`Stopped` once; a later signal only marks the stop, so that the cleanup the
     first one started is not itself cut short. ``cleaning()`` holds signals off in the
     same way around a cleanup that no signal started (the run ended by itself).
@@ -83,9 +83,14 @@ class StopSignals:
     def __enter__(self) -> StopSignals:
         if threading.current_thread() is not threading.main_thread():
             return self
-        self._before[signal.SIGINT] = signal.signal(signal.SIGINT, self._handle)
-        if signal.getsignal(signal.SIGTERM) == signal.SIG_DFL:
-            self._before[signal.SIGTERM] = signal.signal(signal.SIGTERM, self._handle)
+        # only where Python's default is in place: a SIGINT ignored (a job started in the
+        # background) stays ignored, a SIGTERM the command handles (a bridge) its own
+        for signum, default in (
+            (signal.SIGINT, signal.default_int_handler),
+            (signal.SIGTERM, signal.SIG_DFL),
+        ):
+            if signal.getsignal(signum) == default:
+                self._before[signum] = signal.signal(signum, self._handle)
         return self
 
     def __exit__(self, *exc: object) -> None:
