@@ -45,10 +45,10 @@ def release_detector(detector: Any) -> None:
     detector.tag_detector_ptr = None
     families = dict(detector.tag_families)
     detector.tag_families = {}
-    for family, pointer in families.items():
+    for family, family_pointer in families.items():
         destroy = getattr(library, f"{family}_destroy")
         destroy.restype = None
-        destroy(pointer)
+        destroy(family_pointer)
 
 
 def _release_shared() -> None:
