@@ -87,6 +87,34 @@ def test_the_writer_stops_at_its_size_limit_and_says_so(tmp_path: Path) -> None:
     assert writer.full
 
 
+def test_writes_from_two_threads_do_not_interleave_or_repeat(tmp_path: Path) -> None:
+    """``close`` writes the rest from the caller's thread, which may come while the
+    writer's thread is still writing: each snapshot must still be written once."""
+    import threading
+
+    class Slow(History):
+        def since(self, seq: int, limit: int = 10_000) -> list[Snapshot]:
+            got = super().since(seq, limit)
+            time.sleep(0.05)  # a wide window between reading what is new and writing it
+            return got
+
+    h = Slow(100)
+    writer = LogWriter(h, tmp_path / "two.jsonl", period=100.0)
+    for i in range(20):
+        h.add(snap(i))
+    threads = [threading.Thread(target=writer.flush) for _ in range(2)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    writer.close()
+    writer.flush()  # after close: nothing, and no error
+    seqs = [
+        json.loads(line)["seq"] for line in (tmp_path / "two.jsonl").read_text().splitlines()[1:]
+    ]
+    assert seqs == list(range(20))
+
+
 @pytest.mark.parametrize(
     ("lines", "message"),
     [

@@ -167,7 +167,9 @@ class LogWriter:
     The robot's thread never writes: this thread wakes every ``period`` seconds and
     writes what the history gained. If it falls behind by more than the history holds,
     the snapshots it missed are lost (the ``seq`` numbers show the gap). It stops at
-    ``max_bytes``, with a last line saying so.
+    ``max_bytes``, with a last line saying so. Writes are serialised by a lock: ``close``
+    writes the rest from the caller's thread, which may come while the writer's own
+    thread is still in a write (its join has a time limit).
     """
 
     def __init__(
@@ -188,6 +190,7 @@ class LogWriter:
         self._last = -1
         self._mind_written = -1
         self._stop = threading.Event()
+        self._lock = threading.Lock()
         self._file: IO[str] = self.path.open("w", encoding="utf-8")
         self._line(header(source))
         self._thread = threading.Thread(target=self._run, name="inspector-log", daemon=True)
@@ -200,7 +203,11 @@ class LogWriter:
 
     def flush(self) -> None:
         """Write whatever the history gained since the last flush."""
-        if self.full:
+        with self._lock:
+            self._flush()
+
+    def _flush(self) -> None:
+        if self.full or self._file.closed:
             return
         for snap in self.history.since(self._last):
             obj = snap.to_json(with_mind=snap.mind_seq > self._mind_written)
@@ -226,8 +233,9 @@ class LogWriter:
         """Write the rest and close the file."""
         self._stop.set()
         self._thread.join(timeout=5)
-        self.flush()
-        self._file.close()
+        with self._lock:
+            self._flush()
+            self._file.close()
 
 
 def _expect(cond: bool, lineno: int, what: str) -> None:
