@@ -10,15 +10,15 @@ match limit, queue eviction) where robocog's bookkeeping differs from ONA's arra
 from __future__ import annotations
 
 import random
-import shutil
 import subprocess
 
 import pytest
 
 from robocog.nars import NAR
+from robocog.ona_process import ona_command
 from tests.nars.test_nar import run_lines
 
-ONA = shutil.which("NAR")
+ONA = ona_command()  # the binary, as every ONA run of the project finds it
 pytestmark = pytest.mark.skipif(ONA is None, reason="ONA (pip install ona==0.9.2) not found")
 
 
@@ -45,7 +45,7 @@ def _stream(seed: int) -> tuple[list[str], list[str]]:
 
 def _ona(lines: list[str]) -> list[str]:
     r = subprocess.run(
-        [ONA, "shell"], input="\n".join(lines) + "\n", capture_output=True, text=True, timeout=60
+        [*ONA, "shell"], input="\n".join(lines) + "\n", capture_output=True, text=True, timeout=60
     )  # type: ignore[list-item]
     return r.stdout.splitlines()
 

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import random
-import shutil
 import subprocess
 
 import pytest
@@ -11,6 +10,7 @@ import pytest
 from robocog.nars import NAR, Term
 from robocog.nars import truth as tf
 from robocog.nars.narsese import parse_term
+from robocog.ona_process import ona_command
 
 
 def quiet(**cfg: object) -> tuple[NAR, list[str]]:
@@ -189,13 +189,13 @@ def _decisions(text: str) -> list[str]:
     ]
 
 
-@pytest.mark.skipif(shutil.which("NAR") is None, reason="ONA (pip install ona==0.9.2) not found")
+@pytest.mark.skipif(ona_command() is None, reason="ONA (pip install ona==0.9.2) not found")
 @pytest.mark.parametrize("seed", [3, 11])
 def test_decisions_and_executions_equal_onas(seed: int) -> None:
     # same seed (666), same inputs: every decision line and execution equals ONA 0.9.2's
     text = _procedure_stream(seed)
     ona = subprocess.run(
-        [shutil.which("NAR") or "NAR", "shell"], input=text, capture_output=True, text=True
+        [*(ona_command() or ["NAR"]), "shell"], input=text, capture_output=True, text=True
     ).stdout
     nar = NAR()
     out: list[str] = []
