@@ -220,3 +220,20 @@ def test_anticipation_counts_a_failure_with_the_precondition_projected_over_dt()
     w_neg = 0.9 * 0.01 / (1 + 0.9 * 0.01)
     w1 = 0.9 / 0.1
     assert after.truth.f == pytest.approx(w1 / (w1 + w_neg))
+
+
+def test_anticipation_leaves_no_record_on_any_term() -> None:
+    """Anticipation keeps what it learns of each precondition on the precondition's term
+    while it runs; afterwards no term may hold it, or terms would keep events alive and
+    the interning sweep could never drop them."""
+    from robocog.nars import terms
+
+    nar = NAR()
+    nar.output = lambda line: None
+    for line in _procedure_stream(5).splitlines():
+        nar.add_input(line)
+    # anticipation ran: it counted failures, which lower links' frequencies below 1
+    links = [m for c in nar.memory for t in c.precondition_beliefs or () for m in t.items]
+    assert any(m.truth.f < 1.0 for m in links)
+    held = [t for t in list(terms._TABLE.values()) if t.anticipated is not None]
+    assert held == []

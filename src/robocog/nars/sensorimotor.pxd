@@ -48,6 +48,7 @@ cdef class _Source:
     cdef public double c
     cdef public bint weak
     cdef public dict bind
+    cdef public long serial
 
 @cython.locals(t=Truth, c=double)
 cpdef _Source _source(Event spike, dict bind, bint as_is, Truth op, double weak, long now)
@@ -61,8 +62,9 @@ cpdef Event _prediction(
 cpdef long _offset(double dt)
 @cython.locals(past_c=double)
 cpdef double _failure_confidence(Truth pre, long rdt, double confidence)
-@cython.locals(rdt=long, occ=long, k=Py_ssize_t)
 cpdef anticipate(Reasoner s, Event e)
+@cython.locals(rdt=long, occ=long, k=Py_ssize_t, serial=long)
+cpdef _anticipate(Reasoner s, Event e, list touched)
 cpdef Event source_spike(Reasoner s, Term source, dict groups=*)
 # the times of the index scans as C integers: every input event's processing compares
 # them against hundreds of index entries

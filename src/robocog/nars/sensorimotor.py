@@ -361,6 +361,28 @@ def _induce(s: Reasoner, pre: Event, op: Event | None, post: Event, priority: fl
 
 # ------------------------------------------------------------ anticipation
 def anticipate(s: Reasoner, e: Event) -> None:
+    """Assumption of failure (ONA 0.9.2's Decision_Anticipate): see ``_anticipate``.
+
+    What it learns of each precondition is kept on the precondition's term for the
+    call (``Term.anticipated``) and taken off the terms when it ends, however it ends:
+    left there, it would keep the events it names alive.
+    """
+    touched: Touched = []
+    try:
+        _anticipate(s, e, touched)
+    finally:
+        for t in touched:
+            t.anticipated = None
+
+
+#: the last number given to an anticipation (see ``_anticipate``): a counter of the
+#: process, since the terms the records hang on are the process's
+_SERIAL = [0]
+#: the terms given a record (an alias the compiled engine reads as a plain list)
+Touched = list[Term]
+
+
+def _anticipate(s: Reasoner, e: Event, touched: Touched) -> None:
     """Assumption of failure (ONA 0.9.2's Decision_Anticipate).
 
     For every implication in the table of the event's operation (table 0 for a plain
@@ -387,10 +409,13 @@ def anticipate(s: Reasoner, e: Event) -> None:
     # only an exactly-zero predicted frequency still counts; this skips the many
     # implications whose precondition happened long ago without computing them.
     weak = min(0.05, 1.98 * (threshold - 0.5)) if threshold > 0.5 + 1e-9 else 0.0
-    # precondition term -> what anticipation knows of it (see _Source): the same
-    # precondition serves many implications. Dropped when an event or the concept
-    # store changes below.
-    sources: dict[Term, _Source] = {}
+    # What anticipation knows of a precondition (see _Source) is kept on its term, as
+    # ``anticipated``: the same precondition serves many implications, and a field
+    # read is cheaper than a dict look-up at each of the hundreds of links visited. A
+    # record counts only if it carries this call's number (``serial``); a new number
+    # drops them all when the concept store changes below, and ``anticipated = None``
+    # one when an event changes. Each term given one goes into ``touched``.
+    serial = _SERIAL[0] = _SERIAL[0] + 1
     groups: dict[object, dict[Concept, None]] | None = None
     var_sources: list[Term] = []
     confidence: float = cfg.anticipation_confidence
@@ -433,8 +458,8 @@ def anticipate(s: Reasoner, e: Event) -> None:
             source = imp.source
             if source is None:
                 continue
-            src = sources.get(source)
-            if src is None:
+            src = source.anticipated
+            if src is None or src.serial != serial:
                 if source.has_var:
                     var_sources.append(source)
                     if groups is None:
@@ -449,7 +474,10 @@ def anticipate(s: Reasoner, e: Event) -> None:
                     sc = concepts.get(source)
                     found = sc.belief_spike if sc is not None else None
                     bind = None if found is None or found.term is not source else {}
-                src = sources[source] = _source(found, bind, as_is, op_truth, weak, now)
+                src = _source(found, bind, as_is, op_truth, weak, now)
+                src.serial = serial
+                source.anticipated = src
+                touched.append(source)
             spike = src.spike
             if spike is None:
                 continue
@@ -494,7 +522,7 @@ def anticipate(s: Reasoner, e: Event) -> None:
                 oc = mem.conceptualize(outcome, now)
                 if mem.evictions != evictions:
                     evictions = mem.evictions
-                    sources.clear()
+                    serial = _SERIAL[0] = _SERIAL[0] + 1
                     var_sources.clear()
                     groups = None
             oc.use(now, False, boost)
@@ -514,7 +542,7 @@ def anticipate(s: Reasoner, e: Event) -> None:
                     predict_negated(s, pred, table, imp, failure, weight)
                     if mem.evictions != evictions:
                         evictions = mem.evictions
-                        sources.clear()
+                        serial = _SERIAL[0] = _SERIAL[0] + 1
                         var_sources.clear()
                         groups = None
             elif oc.belief_spike is None or occ > oc.belief_spike.occurrence_time:
@@ -527,14 +555,14 @@ def anticipate(s: Reasoner, e: Event) -> None:
                 # only this term's entry changes, and the entries of preconditions
                 # with variables that the outcome instantiates (the others cannot
                 # have found their event in its concept)
-                sources.pop(outcome, None)
+                outcome.anticipated = None
                 if var_sources:
                     kept = []
                     for v in var_sources:
                         if (v.op is not None and v.op != outcome.op) or unify(v, outcome) is None:
                             kept.append(v)
                         else:
-                            sources.pop(v, None)
+                            v.anticipated = None
                     var_sources[:] = kept
 
 
@@ -561,7 +589,7 @@ class _Source:
     that is too weak to lift a prediction (see ``anticipate``); ``bind``, the bindings
     making the precondition that event's term (None: it is not)."""
 
-    __slots__ = ("spike", "f", "c", "weak", "bind")
+    __slots__ = ("spike", "f", "c", "weak", "bind", "serial")
 
 
 def _source(

@@ -22,6 +22,7 @@ cdef class Term:
     cdef public object _names
     cdef public object hol
     cdef public tuple forms
+    cdef public object anticipated
 
     cpdef tuple index_names(self)
     @cython.locals(out=list, nxt=list, t=Term)

@@ -62,6 +62,7 @@ class Term:
         "_names",
         "hol",
         "forms",
+        "anticipated",
     )
 
     op: str | None
@@ -291,6 +292,7 @@ def _probe() -> Term:
     t.name = "sweep probe"
     t.args = ()
     t.forms = None
+    t.anticipated = None
     return t
 
 
@@ -346,6 +348,7 @@ def atom(name: str) -> Term:
     t._names = None
     t.hol = None
     t.forms = None
+    t.anticipated = None
     if len(table) >= _SWEEP_AT[0]:
         _sweep()
     table[key] = t
@@ -436,6 +439,7 @@ def _make_compound(key: Key, op: str, args: Components) -> Term:
     t._names = None
     t.hol = None
     t.forms = None  # what a variable-introducing rule derives from it (rules.variable_forms)
+    t.anticipated = None  # anticipation's record of it as a precondition, during a call
     table: dict = _TABLE
     if len(table) >= _SWEEP_AT[0]:
         _sweep()
