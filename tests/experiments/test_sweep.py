@@ -73,8 +73,11 @@ def test_a_local_ray_cluster_gives_the_same_table(tmp_path: Path) -> None:
     pytest.importorskip("ray")
     spec = _spec(("bdi",), runs=2)
     here = run_sweep(spec, tmp_path / "a.jsonl", in_process)
+    before = signal.getsignal(signal.SIGTERM)
     on_ray = run_sweep(spec, tmp_path / "b.jsonl", ray_cluster(None, cpus=2))
     assert here == on_ray
+    # Ray's own SIGTERM handler, set by its start, does not outlive the sweep
+    assert signal.getsignal(signal.SIGTERM) == before
 
 
 def test_a_killed_sweep_resumes_to_the_table_of_an_uninterrupted_one(tmp_path: Path) -> None:

@@ -10,6 +10,7 @@ from __future__ import annotations
 import signal
 import sys
 import threading
+from collections.abc import Iterator
 from typing import Any
 
 import pytest
@@ -32,10 +33,21 @@ class _SignalledWhileDropped:
 
 
 @pytest.fixture
-def main_thread() -> None:
-    """Python handles signals in its main thread only."""
+def main_thread() -> Iterator[None]:
+    """Python handles signals in its main thread only. The tests start from Python's own
+    handling of SIGINT and SIGTERM, whatever an earlier test of the same process (or a
+    library it started) left in place, and leave it as they found it."""
     if threading.current_thread() is not threading.main_thread():
         pytest.skip("signal handlers are set from the main thread only")
+    before = {sig: signal.getsignal(sig) for sig in (signal.SIGINT, signal.SIGTERM)}
+    signal.signal(signal.SIGINT, signal.default_int_handler)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    try:
+        yield
+    finally:
+        for sig, handler in before.items():
+            if handler is not None:  # (None: set outside Python, which cannot set it back)
+                signal.signal(sig, handler)
 
 
 @pytest.fixture

@@ -22,6 +22,8 @@ import itertools
 import json
 import math
 import os
+import signal
+import threading
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -471,6 +473,9 @@ def ray_cluster(address: str | None, cpus: int | None = None) -> Executor:
         except ImportError as exc:
             raise SweepError("--ray needs Ray: pip install 'robocog[cluster]'") from exc
         started = not ray.is_initialized()
+        # Ray's start sets a SIGTERM handler of its own (it ends the process) and leaves
+        # it after its shutdown: the process's own are put back then
+        handlers = {sig: signal.getsignal(sig) for sig in (signal.SIGINT, signal.SIGTERM)}
         if started:
             if address:
                 ray.init(address=address, log_to_driver=False)
@@ -485,6 +490,10 @@ def ray_cluster(address: str | None, cpus: int | None = None) -> Executor:
         finally:
             if started:
                 ray.shutdown()
+                if threading.current_thread() is threading.main_thread():
+                    for sig, handler in handlers.items():
+                        if handler is not None:  # (None: set outside Python)
+                            signal.signal(sig, handler)
 
     return execute
 
