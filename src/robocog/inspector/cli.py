@@ -53,6 +53,11 @@ class StopSignals:
     the points where the work can stop: each cycle of a watched loop, a pause, the lingering page,
     the steps of starting.
 
+    Such a lost raise is not printed (the interpreter would show it as an "Exception
+    ignored" with a traceback, on a Ctrl-C that ends the command cleanly anyway): while
+    entered, ``sys.unraisablehook`` drops a :class:`Stopped` and counts it in ``lost``,
+    and hands anything else to the hook that was there.
+
     Python delivers signals to the main thread only: entered from another thread this
     does nothing, and the default handling stays.
     """
@@ -60,7 +65,17 @@ class StopSignals:
     def __init__(self) -> None:
         self.stopping = False
         self.signum: int | None = None
+        #: how many raises were lost (and not printed); :meth:`check` raises them again
+        self.lost = 0
         self._before: dict[int, Any] = {}
+        self._hook: Callable[[Any], object] | None = None
+
+    def _unraisable(self, unraisable: Any) -> None:
+        if isinstance(unraisable.exc_value, Stopped):
+            self.lost += 1
+            return
+        hook = self._hook or sys.__unraisablehook__
+        hook(unraisable)
 
     def _handle(self, signum: int, _frame: FrameType | None) -> None:
         if self.stopping:
@@ -91,11 +106,17 @@ class StopSignals:
         ):
             if signal.getsignal(signum) == default:
                 self._before[signum] = signal.signal(signum, self._handle)
+        if self._before:
+            self._hook = sys.unraisablehook
+            sys.unraisablehook = self._unraisable
         return self
 
     def __exit__(self, *exc: object) -> None:
         for signum, handler in self._before.items():
             signal.signal(signum, handler)
+        if self._before and self._hook is not None:
+            sys.unraisablehook = self._hook
+            self._hook = None
         self._before.clear()
 
     @contextmanager
