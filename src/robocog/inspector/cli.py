@@ -126,11 +126,6 @@ class StopSignals:
         yield
 
 
-def exit_code(stop: KeyboardInterrupt) -> int:
-    """The shell's convention for a process ended by a signal: 128 + its number."""
-    return 128 + int(getattr(stop, "signum", signal.SIGINT))
-
-
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     """The ``--inspect`` options, for any command that runs a robot loop."""
     group = parser.add_argument_group("inspector")
@@ -349,8 +344,10 @@ def run(args: argparse.Namespace) -> int:
             print(f"inspector: {url} (Ctrl-C to stop)", flush=True)
             inspector.linger()
             return 0
-        except KeyboardInterrupt as stop:
-            return 0 if serving else exit_code(stop)
+        except KeyboardInterrupt:
+            if serving:
+                return 0  # how a served page is meant to end
+            raise  # robocog's command answers 128 + the signal's number (robocog.cli)
         finally:
             if server is not None:
                 with signals.cleaning():
