@@ -145,16 +145,22 @@ def test_a_stalled_mind_trips_the_watchdog() -> None:
     assert link.of("cancel")
 
 
-def test_text_reaches_a_mind_that_hears_and_outcomes_come_back() -> None:
-    mind = ReflexMind()
-    link = FakeLink()
-    body = RobotBody(link, CONFIG).start()
-    body.on_text("<obstacle --> [left]>. :|:\n<a --> b>.")
+def run_cycles(mind: object, cycles: int, text: str | None = None) -> int:
+    """Run ``mind`` for ``cycles`` cycles on a body fed scans (and ``text`` from the
+    robot first); the run's exit code."""
+    body = RobotBody(FakeLink(), CONFIG).start()
+    if text is not None:
+        body.on_text(text)
     feeder = Feeder(body)
     try:
-        code = BridgeRunner(body, mind).run(max_cycles=3)
+        return BridgeRunner(body, mind).run(max_cycles=cycles)  # type: ignore[arg-type]
     finally:
         feeder.close()
+
+
+def test_text_reaches_a_mind_that_hears_and_outcomes_come_back() -> None:
+    mind = ReflexMind()
+    code = run_cycles(mind, 3, text="<obstacle --> [left]>. :|:\n<a --> b>.")
     assert code == 0
     assert mind.heard == ["<obstacle --> [left]>. :|:", "<a --> b>."]
     assert [c for c, _o in mind.outcomes] == [Turn(-0.3)] * 3
@@ -173,14 +179,7 @@ def test_the_minds_upkeep_runs_after_each_cycle_and_its_failure_stops_nothing() 
                 raise RuntimeError("upkeep failed")
 
     mind = Tidy()
-    link = FakeLink()
-    body = RobotBody(link, CONFIG).start()
-    feeder = Feeder(body)
-    try:
-        code = BridgeRunner(body, mind).run(max_cycles=4)
-    finally:
-        feeder.close()
-    assert code == 0
+    assert run_cycles(mind, 4) == 0
     assert mind.tidied == 4
     assert len(mind.outcomes) == 4
 
