@@ -7,10 +7,7 @@ from robocog.nars.terms cimport Term
 from robocog.nars.truth cimport Truth, decay, projection, revision
 from robocog.nars.stamp cimport merge, overlap
 
-cdef class _Record:
-    pass
-
-cdef class Event(_Record):
+cdef class Event:
     cdef public Term term
     cdef public object type
     cdef public Truth truth
@@ -25,7 +22,7 @@ cdef class Event(_Record):
     cpdef double confidence_at(self, long target_time)
     cpdef Event projected(self, long target_time)
 
-cdef class Implication(_Record):
+cdef class Implication:
     cdef public Term term
     cdef public Truth truth
     cdef public tuple stamp

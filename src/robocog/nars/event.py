@@ -2,6 +2,12 @@
 
 from __future__ import annotations
 
+try:
+    import cython
+except ImportError:  # the pure engine runs without Cython
+    from . import cy as cython
+
+
 from .stamp import Size, Stamp, fmt, merge, overlap
 from .terms import Term
 from .truth import Cycle, Truth, decay, projection, revision
@@ -11,33 +17,33 @@ BELIEF = "."
 GOAL = "!"
 
 
-class _Record:
-    """Equality, pickling and printing by the fields named in ``__slots__``, for
-    :class:`Event` and :class:`Implication` (written out rather than dataclasses so
-    that, compiled, they are extension types: see ``event.pxd``)."""
-
-    __slots__ = ()
-
-    def _fields(self) -> tuple[object, ...]:
-        return tuple([getattr(self, name) for name in type(self).__slots__])
-
-    def __eq__(self, other: object) -> bool:
-        if other.__class__ is not self.__class__ or not isinstance(other, _Record):
-            return NotImplemented
-        return self._fields() == other._fields()
-
-    __hash__ = None  # type: ignore[assignment]  # mutable, like the dataclasses they were
-
-    def __reduce__(self) -> tuple[type, tuple[object, ...]]:
-        # by the fields, so that the compiled and the pure engine read each other's saves
-        return (type(self), self._fields())
-
-    def __repr__(self) -> str:
-        pairs = zip(type(self).__slots__, self._fields(), strict=True)
-        return f"{type(self).__name__}(" + ", ".join(f"{n}={v!r}" for n, v in pairs) + ")"
+def _fields(r: Event | Implication) -> tuple[object, ...]:
+    return tuple([getattr(r, name) for name in type(r).__slots__])
 
 
-class Event(_Record):
+# Equality, pickling and printing by the fields named in ``__slots__``, for Event and
+# Implication (written out rather than dataclasses so that, compiled, they are
+# extension types with their own free lists: see ``event.pxd``; an extension type's
+# free list serves no subtype, so the two share these functions, not a base class)
+def _equal(r: Event | Implication, other: object) -> bool:
+    if other.__class__ is not r.__class__:
+        return NotImplemented  # type: ignore[return-value]
+    return _fields(r) == _fields(other)  # type: ignore[arg-type]
+
+
+def _reduce(r: Event | Implication) -> tuple[type, tuple[object, ...]]:
+    # by the fields, so that the compiled and the pure engine read each other's saves
+    return (type(r), _fields(r))
+
+
+def _repr(r: Event | Implication) -> str:
+    pairs = zip(type(r).__slots__, _fields(r), strict=True)
+    return f"{type(r).__name__}(" + ", ".join(f"{n}={v!r}" for n, v in pairs) + ")"
+
+
+@cython.freelist(64)
+@cython.cclass
+class Event:
     """A belief or goal with its truth, evidence and time.
 
     ``occurrence_time`` is -1 for eternal sentences; ``dt`` is the time offset of a
@@ -55,6 +61,17 @@ class Event(_Record):
         "processed",
         "is_input",
     )
+
+    def __eq__(self, other: object) -> bool:
+        return _equal(self, other)
+
+    __hash__ = None  # type: ignore[assignment]  # mutable, like the dataclasses they were
+
+    def __reduce__(self) -> tuple[type, tuple[object, ...]]:
+        return _reduce(self)
+
+    def __repr__(self) -> str:
+        return _repr(self)
 
     def __init__(
         self,
@@ -229,10 +246,23 @@ def outdone(old: Event, term: Term, occurrence_time: Cycle, c: float) -> bool:
     return not projected_confidence(c, occurrence_time, later) > old.confidence_at(later)
 
 
-class Implication(_Record):
+@cython.freelist(64)
+@cython.cclass
+class Implication:
     """A temporal or declarative implication stored in its predicate's table."""
 
     __slots__ = ("term", "truth", "stamp", "dt", "creation_time", "source")
+
+    def __eq__(self, other: object) -> bool:
+        return _equal(self, other)
+
+    __hash__ = None  # type: ignore[assignment]  # mutable, like the dataclasses they were
+
+    def __reduce__(self) -> tuple[type, tuple[object, ...]]:
+        return _reduce(self)
+
+    def __repr__(self) -> str:
+        return _repr(self)
 
     def __init__(
         self,

@@ -7,6 +7,11 @@ unification, which is how ``<<$1 --> penguin> ==> ...>`` meets ``<pingu --> peng
 
 from __future__ import annotations
 
+try:
+    import cython
+except ImportError:  # the pure engine runs without Cython
+    from . import cy as cython
+
 from . import truth as tf
 from .matchers import MATCHERS
 from .memorize import add_derived
@@ -28,6 +33,8 @@ def rule_table(level: int) -> RuleTable:
     return t
 
 
+@cython.freelist(64)
+@cython.cclass
 class Derivation:
     """Where the conclusions of one premise pair go (the reasoner whose memory takes
     them, :func:`~robocog.nars.memorize.add_derived`), with their shared context."""

@@ -62,8 +62,9 @@ cpdef Event _prediction(
 cpdef long _offset(double dt)
 @cython.locals(past_c=double)
 cpdef double _failure_confidence(Truth pre, long rdt, double confidence)
+@cython.locals(t=Term)
 cpdef anticipate(Reasoner s, Event e)
-@cython.locals(rdt=long, occ=long, k=Py_ssize_t, serial=long)
+@cython.locals(rdt=long, occ=long, k=Py_ssize_t, serial=long, v=Term)
 cpdef _anticipate(Reasoner s, Event e, list touched)
 cpdef Event source_spike(Reasoner s, Term source, dict groups=*)
 # the times of the index scans as C integers: every input event's processing compares

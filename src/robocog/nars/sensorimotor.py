@@ -11,6 +11,11 @@ anticipation scans the whole memory.
 
 from __future__ import annotations
 
+try:
+    import cython
+except ImportError:  # the pure engine runs without Cython
+    from . import cy as cython
+
 from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
@@ -582,6 +587,8 @@ def _prediction(
     return event_of(outcome, BELIEF, tf.truth_of(f, c), stamp, occ, now)
 
 
+@cython.freelist(64)
+@cython.cclass
 class _Source:
     """What anticipation knows of one precondition term during one input: ``spike``,
     its concept's belief event (or the newest instance's), None if there is none; ``f``

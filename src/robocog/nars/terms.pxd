@@ -29,6 +29,7 @@ cdef class Term:
     cpdef list level_order_atoms(self)
 
 cpdef Term compound(str op, tuple args)
+@cython.locals(r=Term, a=Term, b=Term, na=Term, nb=Term)
 cpdef Term substitute(Term t, dict mapping)
 
 # a new term's properties, computed once when it is interned (a burst of new terms

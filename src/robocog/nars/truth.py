@@ -7,6 +7,12 @@ for the rule of the same name, so derived values agree with ONA to the printed d
 
 from __future__ import annotations
 
+try:
+    import cython
+except ImportError:  # the pure engine runs without Cython
+    from . import cy as cython
+
+
 from collections.abc import Iterator
 
 HORIZON = 1.0
@@ -22,6 +28,8 @@ _DECAY = PROJECTION_DECAY
 Cycle = int
 
 
+@cython.freelist(64)
+@cython.cclass
 class Truth:
     """Frequency ``f`` and confidence ``c``, both in [0, 1]; never changed once made.
 
