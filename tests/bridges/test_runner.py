@@ -184,6 +184,38 @@ def test_the_minds_upkeep_runs_after_each_cycle_and_its_failure_stops_nothing() 
     assert len(mind.outcomes) == 4
 
 
+def test_the_cycle_collector_runs_between_cycles_never_during_a_decision() -> None:
+    """As in ``Loop.run``: paused while the mind decides, yet the garbage in cycles that
+    one decision leaves is gone before the next, and the collector is back after."""
+    import gc
+    import weakref
+
+    class Node:
+        def __init__(self) -> None:
+            self.me = self  # garbage only the cycle collector frees
+
+    class Watching(ReflexMind):
+        def __init__(self) -> None:
+            super().__init__()
+            self.enabled: list[bool] = []
+            self.previous_freed: list[bool] = []
+            self.last: weakref.ref[Node] | None = None
+
+        def decide(self) -> list[Command]:
+            self.enabled.append(gc.isenabled())
+            if self.last is not None:
+                self.previous_freed.append(self.last() is None)
+            self.last = weakref.ref(Node())
+            return super().decide()
+
+    assert gc.isenabled()
+    mind = Watching()
+    assert run_cycles(mind, 4) == 0
+    assert mind.enabled == [False] * 4
+    assert mind.previous_freed == [True] * 3
+    assert gc.isenabled()
+
+
 def test_text_input_is_found_by_name() -> None:
     class Deaf:
         def perceive(self, percepts: Sequence[Percept]) -> None: ...

@@ -123,6 +123,35 @@ def test_cycle_collector_is_paused_during_decisions_and_restored_after() -> None
     assert gc.isenabled()
 
 
+def test_between_cycles_collects_the_generations_due_and_leaves_the_collector_as_found(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """The youngest generation after each cycle, the middle one every tenth, the whole
+    heap every two hundredth; a collector paused before stays paused."""
+    import gc
+
+    from robocog.robot.loop import GC_FULL_EVERY, GC_MIDDLE_EVERY, BetweenCycles
+
+    collected: list[int] = []
+    monkeypatch.setattr(gc, "collect", lambda generation=2: collected.append(generation))
+    with BetweenCycles() as collector:
+        assert not gc.isenabled()
+        for _ in range(2 * GC_FULL_EVERY):
+            collector.collect()
+    assert gc.isenabled()
+    assert collected.count(2) == 2
+    assert collected.count(1) == 2 * (GC_FULL_EVERY // GC_MIDDLE_EVERY - 1)
+    assert collected[GC_MIDDLE_EVERY - 1] == 1 and collected[GC_FULL_EVERY - 1] == 2
+    assert collected.count(0) == 2 * GC_FULL_EVERY - collected.count(1) - 2
+    gc.disable()
+    try:
+        with BetweenCycles() as collector:
+            collector.collect()
+        assert not gc.isenabled()
+    finally:
+        gc.enable()
+
+
 def test_the_minds_upkeep_runs_between_cycles_outside_their_timing() -> None:
     """A mind's optional ``tidy()`` runs once after each cycle, never inside one."""
     events: list[str] = []

@@ -18,7 +18,7 @@ from collections.abc import Callable
 
 from robocog.bridges.body import RobotBody
 from robocog.robot.commands import Command, Outcome
-from robocog.robot.loop import CycleStats, Step, tidy
+from robocog.robot.loop import BetweenCycles, CycleStats, Step, tidy
 from robocog.robot.protocols import Mind
 
 log = logging.getLogger("robocog.bridges")
@@ -69,7 +69,10 @@ class BridgeRunner:
         """Run until ``stop()``, ``duration`` seconds or ``max_cycles``; returns an exit code.
 
         The exit code is 0 for a normal end and 1 when the mind failed too often.
-        The robot is always left stopped.
+        The robot is always left stopped. As in ``Loop.run``, Python's cycle collector
+        runs between cycles, never during a decision (:class:`BetweenCycles`); it also
+        runs while no cycle can (no readings yet, or stale ones), so the garbage of the
+        middleware's threads is collected while the mind waits.
         """
         deadline = None if duration is None else time.monotonic() + duration
         watchdog = threading.Thread(target=self._watch, name="bridge-watchdog", daemon=True)
@@ -78,40 +81,42 @@ class BridgeRunner:
         code = 0
         frames, decided = 0, -1.0
         try:
-            while not self._stop.is_set():
-                if deadline is not None and time.monotonic() >= deadline:
-                    break
-                if max_cycles is not None and self.cycles >= max_cycles:
-                    break
-                if self.config.lockstep:
-                    frames, stamp = self.body.wait_for_frame(frames, self.config.cycle_period)
-                    if stamp <= decided:  # no new frame, or a frame sent again: acknowledge
-                        if decided >= 0 and stamp == decided:
-                            self.body.frame_done(stamp)
-                        continue
-                else:
-                    self.body.wait_for_readings(self.config.cycle_period)
-                if self._trip == "percepts":
-                    continue
-                if self.body.stale() is not None:
-                    continue  # nothing (fresh) to decide on yet; the watchdog will act
-                ok = self._cycle()
-                if self.config.lockstep:
-                    decided = stamp
-                    # the next decision is on a scan taken after this cycle's commands
-                    # ended, never on one sent while the robot was still carrying them out
-                    frames = self.body.scans
-                    self.body.frame_done(stamp)
-                if ok:
-                    self._tidy()  # (the robot has its commands: nothing waits on this)
-                if ok:
-                    failures = 0
-                else:
-                    failures += 1
-                    if failures >= self.config.max_mind_failures:
-                        self._event(f"the mind failed {failures} times in a row; giving up")
-                        code = 1
+            with BetweenCycles() as collector:
+                while not self._stop.is_set():
+                    # (after the last cycle or wait: the robot is busy with its commands)
+                    collector.collect()
+                    if deadline is not None and time.monotonic() >= deadline:
                         break
+                    if max_cycles is not None and self.cycles >= max_cycles:
+                        break
+                    if self.config.lockstep:
+                        frames, stamp = self.body.wait_for_frame(frames, self.config.cycle_period)
+                        if stamp <= decided:  # no new frame, or one sent again: acknowledge
+                            if decided >= 0 and stamp == decided:
+                                self.body.frame_done(stamp)
+                            continue
+                    else:
+                        self.body.wait_for_readings(self.config.cycle_period)
+                    if self._trip == "percepts":
+                        continue
+                    if self.body.stale() is not None:
+                        continue  # nothing (fresh) to decide on yet; the watchdog will act
+                    ok = self._cycle()
+                    if self.config.lockstep:
+                        decided = stamp
+                        # the next decision is on a scan taken after this cycle's commands
+                        # ended, never on one sent while the robot was still carrying them
+                        frames = self.body.scans
+                        self.body.frame_done(stamp)
+                    if ok:
+                        self._tidy()  # (the robot has its commands: nothing waits on this)
+                        failures = 0
+                    else:
+                        failures += 1
+                        if failures >= self.config.max_mind_failures:
+                            self._event(f"the mind failed {failures} times in a row; giving up")
+                            code = 1
+                            break
         finally:
             self._stop.set()
             watchdog.join(timeout=1.0)

@@ -35,9 +35,45 @@ def percentile(values: list[float], q: float) -> float:
 STATS_WINDOW = 100_000
 
 
-#: between-cycle collections of ``Loop.run`` (see there)
+#: between-cycle collections (see :class:`BetweenCycles`)
 GC_MIDDLE_EVERY = 10
 GC_FULL_EVERY = 200
+
+
+class BetweenCycles:
+    """Python's cycle collector, paused while a loop runs and run between its cycles.
+
+    The collector starts whenever allocation counts say so, which is in the middle of a
+    decision, and a full collection over a reasoner's memory takes longer than a
+    decision. Inside ``with BetweenCycles() as gc_:`` it is paused (for the whole
+    process, as it only can be), and ``gc_.collect()``, called after each cycle,
+    collects the youngest generation, the middle one every ``GC_MIDDLE_EVERY`` calls
+    and the whole heap every ``GC_FULL_EVERY``. On leaving, the collector is left as it
+    was found.
+    """
+
+    def __init__(self) -> None:
+        self.calls = 0
+        self._automatic = False
+
+    def __enter__(self) -> BetweenCycles:
+        self._automatic = gc.isenabled()
+        gc.disable()
+        return self
+
+    def __exit__(self, *_: object) -> None:
+        if self._automatic:
+            gc.enable()
+
+    def collect(self) -> None:
+        """One between-cycles collection, of the generations due."""
+        self.calls += 1
+        if self.calls % GC_FULL_EVERY == 0:
+            gc.collect()
+        elif self.calls % GC_MIDDLE_EVERY == 0:
+            gc.collect(1)
+        else:
+            gc.collect(0)
 
 
 @dataclass
@@ -138,31 +174,17 @@ class Loop:
     ) -> int:
         """Run at most ``max_cycles`` cycles, stopping early when ``until()`` is true.
 
-        Python's cycle collector starts whenever allocation counts say so, which is in
-        the middle of a decision, and a full collection over a reasoner's memory takes
-        longer than a decision. While the loop runs it is paused and the garbage is
-        collected between cycles instead: the youngest generation after every cycle,
-        the middle one every ``GC_MIDDLE_EVERY`` cycles, the whole heap every
-        ``GC_FULL_EVERY``. A mind's own upkeep, if it has any (:func:`tidy`), runs
-        there too. Returns the number of cycles run.
+        Garbage is collected between cycles, never during one (:class:`BetweenCycles`),
+        and a mind's own upkeep, if it has any (:func:`tidy`), runs there too. Returns
+        the number of cycles run.
         """
         ran = 0
-        automatic = gc.isenabled()
-        gc.disable()
-        try:
+        with BetweenCycles() as collector:
             while ran < max_cycles and not (until and until()):
                 step = self.step()
                 ran += 1
-                if ran % GC_FULL_EVERY == 0:
-                    gc.collect()
-                elif ran % GC_MIDDLE_EVERY == 0:
-                    gc.collect(1)
-                else:
-                    gc.collect(0)
+                collector.collect()
                 tidy(self.mind)
                 if on_step:
                     on_step(step)
-        finally:
-            if automatic:
-                gc.enable()
         return ran
