@@ -166,3 +166,25 @@ def test_the_concept_capacity_follows_the_memory_budget() -> None:
 def test_a_memory_budget_that_is_no_size_or_too_small_is_refused(size: str) -> None:
     r = _nar(["--memory", size], b"")
     assert r.returncode == 2 and b"--memory" in r.stderr and b"Traceback" not in r.stderr
+
+
+def test_a_session_run_in_process_leaves_the_collector_as_it_found_it(
+    monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """The shell raises the cycle collector's threshold for its session only."""
+    import argparse
+    import gc
+    import io
+
+    from robocog.nars import shell
+
+    parser = argparse.ArgumentParser()
+    shell.configure(parser)
+    args = parser.parse_args(["--quiet"])
+    args.exit_when_done = False  # as a caller running it in its own process would
+    before = gc.get_threshold()
+    lines = io.TextIOWrapper(io.BytesIO(b"<a --> b>.\n<a --> b>?\n"))
+    monkeypatch.setattr(sys, "stdin", lines)
+    assert shell.run(args) == 0
+    assert "Answer: <a --> b>." in capsys.readouterr().out
+    assert gc.get_threshold() == before

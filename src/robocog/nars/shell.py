@@ -218,7 +218,18 @@ def run(args: argparse.Namespace) -> int:
     # collection of the youngest generation walks into the long-lived concepts and cost
     # ~15-20 ms, a fifth of the run in all; so the cycle collector runs only after a
     # million objects have been added net, which bounds whatever cycles there are.
+    # (for the session only: a caller running the shell in its own process gets its
+    # collector's thresholds back)
+    before = gc.get_threshold()
     gc.set_threshold(1_000_000, 20, 100)
+    try:
+        return _session(nar, args)
+    finally:
+        gc.set_threshold(*before)
+
+
+def _session(nar: NAR, args: argparse.Namespace) -> int:
+    """The session proper: lines in, output out, the memory saved at the end."""
     out = sys.stdout
     if hasattr(out, "reconfigure"):
         # whatever the locale, output is UTF-8 (as input is), never an encoding error
