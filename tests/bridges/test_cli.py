@@ -148,3 +148,30 @@ def test_the_ros1_node_keeps_ros_paths_but_not_robocogs_python(
     assert "PYTHONHOME" not in env
     monkeypatch.setenv("PYTHONPATH", str(src))
     assert "PYTHONPATH" not in _node_env()
+
+
+def test_the_command_run_in_process_puts_the_sigterm_handler_back(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """While it runs, SIGTERM stops the bridge; once it returns, whatever handled
+    SIGTERM before does again."""
+    import signal
+
+    from robocog.bridges.runner import BridgeRunner
+    from tests.bridges.fakes import FakeLink
+
+    stopped: list[bool] = []
+
+    def run(runner: BridgeRunner, duration: float | None = None, **_: object) -> int:
+        handler = signal.getsignal(signal.SIGTERM)
+        assert callable(handler)
+        handler(signal.SIGTERM, None)  # as the signal would call it
+        return 0
+
+    monkeypatch.setattr(cli, "_make_link", lambda args, config: FakeLink())
+    monkeypatch.setattr(BridgeRunner, "run", run)
+    monkeypatch.setattr(BridgeRunner, "stop", lambda runner: stopped.append(True))
+    before = signal.getsignal(signal.SIGTERM)
+    assert cli.run(parse("ros2", "--mind", "tests.bridges.reflex:make")) == 0
+    assert stopped == [True]
+    assert signal.getsignal(signal.SIGTERM) is before

@@ -21,6 +21,7 @@ from typing import Any
 from robocog.bridges.config import BridgeConfig, Topics
 from robocog.minds.registry import MindConfig, MindUnavailable, make, names
 from robocog.robot.protocols import Mind
+from robocog.signals import handling
 
 log = logging.getLogger("robocog.bridges")
 
@@ -118,11 +119,13 @@ def run(args: argparse.Namespace) -> int:
     def _terminate(_signum: int, _frame: object) -> None:
         runner.stop()
 
-    signal.signal(signal.SIGTERM, _terminate)
     inspector_cli = importlib.import_module("robocog.inspector.cli")
     args.inspect_exit = True  # the page closes with the bridge: its robot is stopped then
     try:
-        with inspector_cli.session(args, f"robocog bridge {args.middleware}") as inspecting:
+        with (
+            handling(signal.SIGTERM, _terminate),
+            inspector_cli.session(args, f"robocog bridge {args.middleware}") as inspecting,
+        ):
             if inspecting is not None:
                 label = f"{args.middleware} bridge, mind {args.mind}"
                 runner.on_cycle = inspecting.watch(body, mind, runner, label)

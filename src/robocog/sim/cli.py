@@ -19,6 +19,8 @@ import sys
 from pathlib import Path
 from typing import Any
 
+from robocog.signals import handling
+
 WORLDS = ("garbage", "tabletop")
 
 
@@ -130,7 +132,6 @@ def run(args: argparse.Namespace) -> int:
     def _terminate(_signum: int, _frame: object) -> None:
         robot.stop()
 
-    signal.signal(signal.SIGTERM, _terminate)
     print(
         f"robocog sim: garbage field (seed {args.seed}, {args.light}) on ROS 2 domain {domain}"
         f"{' (loopback)' if args.loopback else ''}; {len(world.objects())} objects",
@@ -138,7 +139,8 @@ def run(args: argparse.Namespace) -> int:
         flush=True,
     )
     try:
-        robot.run()
+        with handling(signal.SIGTERM, _terminate):
+            robot.run()
     except KeyboardInterrupt:
         pass
     finally:
@@ -194,9 +196,9 @@ def run_ros1(args: argparse.Namespace) -> int:
             str(args.rate),
         ]
         node = subprocess.Popen(argv, env=_ros1_env(path))
-        signal.signal(signal.SIGTERM, lambda _signum, _frame: node.terminate())
         try:
-            return node.wait()
+            with handling(signal.SIGTERM, lambda _signum, _frame: node.terminate()):
+                return node.wait()
         except KeyboardInterrupt:
             node.send_signal(signal.SIGINT)
             return node.wait()
