@@ -70,15 +70,20 @@ class Live:
     """An inspector served on loopback, its robot loop running in a thread."""
 
     def __init__(
-        self, run: Callable[[Any], None], paused: bool = False, mind_interval: float = 0.5
+        self, run: Callable[[Any], None], paused: bool = False, mind_interval: float | None = None
     ) -> None:
         from robocog.inspector.hub import Inspector
         from robocog.inspector.server import InspectorServer
 
-        # (the mind is viewed at most every ``mind_interval`` seconds: a test that reads
-        # the mind's history at points of a run sets it short, so that how fast the
-        # engine runs does not decide how many views there are)
-        self.inspector = Inspector(min_mind_interval=mind_interval)
+        # A test that reads the mind's history at points of a run asks for a view every
+        # ``mind_interval`` seconds. Its views may then take any share of the time: by
+        # default they take at most 1%, so a view that costs more on a loaded machine
+        # would leave a short run with one or two, and how busy the machine is would
+        # decide what the test sees.
+        if mind_interval is None:
+            self.inspector = Inspector()
+        else:
+            self.inspector = Inspector(min_mind_interval=mind_interval, mind_budget=1.0)
         self.server = InspectorServer(self.inspector, port=0)
         self.url = self.server.start()
         if paused:
@@ -103,11 +108,13 @@ class Live:
 
 @pytest.fixture
 def live() -> Iterator[Callable[..., Live]]:
-    """``live(run, paused=False, mind_interval=0.5)`` starts one; all are closed after
+    """``live(run, paused=False, mind_interval=None)`` starts one; all are closed after
     the test."""
     made: list[Live] = []
 
-    def make(run: Callable[[Any], None], paused: bool = False, mind_interval: float = 0.5) -> Live:
+    def make(
+        run: Callable[[Any], None], paused: bool = False, mind_interval: float | None = None
+    ) -> Live:
         lv = Live(run, paused, mind_interval)
         made.append(lv)
         return lv
