@@ -213,14 +213,15 @@ def _drop(idx: deque[Concept], c: Concept) -> bool:
 
 
 def _keys_of(s: Reasoner, term: Term) -> Sequence[object]:
-    """The groups a concept of ``term`` belongs in: ``group_keys(term)``,
-    remembered (the same concepts come and go), and none for a term with variables,
-    which stays out of the groups."""
+    """The groups a concept of ``term`` belongs in: ``group_keys(term)``, kept on the
+    term (a function of the term alone, and the same concepts come and go, in every
+    reasoner of the process), and none for a term with variables, which stays out of
+    the groups."""
     if term.has_var:
         return ()
-    keys = s.term_keys.get(term)
+    keys = term.keys
     if keys is None:
-        keys = remember(s.term_keys, term, group_keys(term))
+        keys = term.keys = group_keys(term)
     return keys
 
 

@@ -34,7 +34,6 @@ cdef class Reasoner:
     cdef public object groups
     cdef public dict outcomes
     cdef public dict patterns
-    cdef public dict term_keys
 
 cpdef emit(Reasoner s, str line)
 cpdef bint shows(Reasoner s, double priority)

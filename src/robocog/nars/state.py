@@ -80,7 +80,6 @@ class Reasoner:
         "groups",
         "outcomes",
         "patterns",
-        "term_keys",
     )
 
     def __init__(self, config: Config, seed: int) -> None:
@@ -143,8 +142,6 @@ class Reasoner:
         self.outcomes: dict[tuple[Term, Term], Term]
         #: precondition with variables -> where its instances are found
         self.patterns: dict[Term, _Pattern]
-        #: concept term -> its groups' keys (``group_keys``)
-        self.term_keys: dict[Term, list[object]]
         clear(self)
 
 
@@ -181,7 +178,6 @@ def clear_caches(s: Reasoner) -> None:
     s.groups = None
     s.outcomes = {}
     s.patterns = {}
-    s.term_keys = {}
     s.fresh_beliefs = {}
 
 

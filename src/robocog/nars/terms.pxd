@@ -23,6 +23,7 @@ cdef class Term:
     cdef public object hol
     cdef public tuple forms
     cdef public object anticipated
+    cdef public list keys
 
     cpdef tuple index_names(self)
     @cython.locals(out=list, nxt=list, t=Term)

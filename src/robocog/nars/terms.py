@@ -63,6 +63,7 @@ class Term:
         "hol",
         "forms",
         "anticipated",
+        "keys",
     )
 
     op: str | None
@@ -293,6 +294,7 @@ def _probe() -> Term:
     t.args = ()
     t.forms = None
     t.anticipated = None
+    t.keys = None
     return t
 
 
@@ -349,6 +351,7 @@ def atom(name: str) -> Term:
     t.hol = None
     t.forms = None
     t.anticipated = None
+    t.keys = None
     if len(table) >= _SWEEP_AT[0]:
         _sweep()
     table[key] = t
@@ -440,6 +443,7 @@ def _make_compound(key: Key, op: str, args: Components) -> Term:
     t.hol = None
     t.forms = None  # what a variable-introducing rule derives from it (rules.variable_forms)
     t.anticipated = None  # anticipation's record of it as a precondition, during a call
+    t.keys = None  # the spike groups its concept is in (sensorimotor._keys_of)
     table: dict = _TABLE
     if len(table) >= _SWEEP_AT[0]:
         _sweep()
