@@ -145,6 +145,33 @@ def test_a_stalled_mind_trips_the_watchdog() -> None:
     assert link.of("cancel")
 
 
+def test_a_stop_cuts_short_a_navigation_goal_that_gets_no_answer() -> None:
+    """Stopped (SIGTERM) while the robot waits for a goal whose navigator has gone, the
+    run ends at once with the robot stopped, not after ``goto_timeout``."""
+    from robocog.robot import GoTo
+
+    class Going(ReflexMind):
+        def decide(self) -> list[Command]:
+            return [GoTo("bin")]
+
+    config = BridgeConfig(
+        watchdog_seconds=5.0, cycle_period=0.02, goto_timeout=120.0, places={"bin": (1.0, 0, 0)}
+    )
+    link, body, feeder, runner, thread, result = start(Going(), config, duration=60.0)
+    try:
+        assert wait_until(lambda: link.of("goal"), 5)  # no result will come for it
+        asked = time.monotonic()
+        runner.stop()
+        thread.join(5)
+        assert not thread.is_alive(), "the run waited for the goal's result"
+        assert time.monotonic() - asked < 2.0
+        assert result == [0]
+        assert link.of("cancel")
+        assert any("asked to stop" in text for _t, text in runner.events)
+    finally:
+        feeder.close()
+
+
 def run_cycles(mind: object, cycles: int, text: str | None = None) -> int:
     """Run ``mind`` for ``cycles`` cycles on a body fed scans (and ``text`` from the
     robot first); the run's exit code."""

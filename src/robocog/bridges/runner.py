@@ -53,7 +53,8 @@ class BridgeRunner:
         #: the latest watchdog and failure events (bounded: a bridge may run for days)
         self.events: deque[tuple[float, str]] = deque(maxlen=1000)
         self._stop = threading.Event()
-        self._trip: str | None = None  # "percepts" | "mind" | None
+        self._done = threading.Event()  # the loop has ended: the watchdog ends too
+        self._trip: str | None = None  # "percepts" | "mind" | "stop" | None
         self._mind_since: float | None = None
         self._trip_lock = threading.Lock()
         self._hear = text_input_of(mind)
@@ -62,7 +63,10 @@ class BridgeRunner:
     # -- control -----------------------------------------------------------------
 
     def stop(self) -> None:
-        """Ask the run to end after the current cycle."""
+        """Ask the run to end. A command under way is cut short: the watchdog halts the
+        robot (so a navigation goal whose navigator has gone does not hold the run for
+        ``goto_timeout``), and the loop ends after the current cycle. Safe to call from a
+        signal handler: it only sets a flag."""
         self._stop.set()
 
     def run(self, duration: float | None = None, max_cycles: int | None = None) -> int:
@@ -118,6 +122,7 @@ class BridgeRunner:
                             code = 1
                             break
         finally:
+            self._done.set()
             self._stop.set()
             watchdog.join(timeout=1.0)
             self.body.stop()
@@ -184,7 +189,11 @@ class BridgeRunner:
 
     def _watch(self) -> None:
         period = min(0.05, self.config.watchdog_seconds / 4)
-        while not self._stop.wait(period):
+        while not self._done.wait(period):
+            if self._stop.is_set():
+                if self._trip != "stop":  # (halted here, not in a signal handler)
+                    self._halt("stop", "the run was asked to stop")
+                continue
             since = self._mind_since
             if since is not None and time.monotonic() - since > self.config.mind_timeout:
                 if self._trip is None:
