@@ -112,6 +112,30 @@ def test_compiled_and_python_engines_print_the_same() -> None:
 
 
 @pytest.mark.slow
+def test_the_python_engine_runs_without_cython_and_prints_the_same() -> None:
+    """Without Cython installed the engine's class decorators come from
+    ``robocog.nars.cy`` (no-ops): the same output as with Cython's own module."""
+    text = _workload()
+    env = dict(os.environ, ROBOCOG_PURE_PYTHON="1")
+    without = subprocess.run(
+        [
+            sys.executable,
+            "-c",
+            "import runpy, sys; sys.modules['cython'] = None; sys.argv = ['robocog', 'nar'];"
+            " runpy.run_module('robocog', run_name='__main__')",
+        ],
+        input=text,
+        capture_output=True,
+        text=True,
+        env=env,
+        timeout=300,
+    )
+    assert without.returncode == 0, without.stderr
+    assert "Answer:" in without.stdout
+    assert without.stdout == _shell(text, pure=True)
+
+
+@pytest.mark.slow
 @pytest.mark.skipif(nars.ENGINE != "compiled", reason=f"engine in use: {nars.ENGINE}")
 def test_each_engine_continues_from_the_others_save(tmp_path: Path) -> None:
     lines = _workload().splitlines()
