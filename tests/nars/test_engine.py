@@ -83,14 +83,25 @@ def _workload() -> str:
     return "\n".join(lines) + "\n"
 
 
-def _shell(text: str, pure: bool, memory_dir: Path | None = None) -> str:
-    """What ``robocog nar`` prints for ``text`` with the compiled or the pure engine."""
+#: ``python -m robocog`` as if Cython were not installed
+WITHOUT_CYTHON = (
+    "import runpy, sys; sys.modules['cython'] = None; sys.argv[0] = 'robocog';"
+    " runpy.run_module('robocog', run_name='__main__')"
+)
+
+
+def _shell(
+    text: str, pure: bool, memory_dir: Path | None = None, without_cython: bool = False
+) -> str:
+    """What ``robocog nar`` prints for ``text`` with the compiled or the pure engine
+    (``without_cython``: the pure one with Cython's import refused)."""
     env = dict(os.environ)
     env.pop("ROBOCOG_PURE_PYTHON", None)
     if pure:
         env["ROBOCOG_PURE_PYTHON"] = "1"
     run = subprocess.run(
-        [sys.executable, "-m", "robocog", "nar"]
+        [sys.executable, *(["-c", WITHOUT_CYTHON] if without_cython else ["-m", "robocog"])]
+        + ["nar"]
         + ([] if memory_dir is None else ["--memory-dir", str(memory_dir)]),
         input=text,
         capture_output=True,
@@ -116,23 +127,9 @@ def test_the_python_engine_runs_without_cython_and_prints_the_same() -> None:
     """Without Cython installed the engine's class decorators come from
     ``robocog.nars.cy`` (no-ops): the same output as with Cython's own module."""
     text = _workload()
-    env = dict(os.environ, ROBOCOG_PURE_PYTHON="1")
-    without = subprocess.run(
-        [
-            sys.executable,
-            "-c",
-            "import runpy, sys; sys.modules['cython'] = None; sys.argv = ['robocog', 'nar'];"
-            " runpy.run_module('robocog', run_name='__main__')",
-        ],
-        input=text,
-        capture_output=True,
-        text=True,
-        env=env,
-        timeout=300,
-    )
-    assert without.returncode == 0, without.stderr
-    assert "Answer:" in without.stdout
-    assert without.stdout == _shell(text, pure=True)
+    without = _shell(text, pure=True, without_cython=True)
+    assert "Answer:" in without
+    assert without == _shell(text, pure=True)
 
 
 @pytest.mark.slow
