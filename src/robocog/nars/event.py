@@ -41,7 +41,11 @@ def _repr(r: Event | Implication) -> str:
     return f"{type(r).__name__}(" + ", ".join(f"{n}={v!r}" for n, v in pairs) + ")"
 
 
+# Compiled, events stay out of Python's cycle collector: an event refers to its term, its
+# truth and a stamp of numbers, none of which can lead back to it, and a full memory holds
+# tens of thousands of them.
 @cython.freelist(64)
+@cython.no_gc
 @cython.cclass
 class Event:
     """A belief or goal with its truth, evidence and time.
@@ -247,6 +251,7 @@ def outdone(old: Event, term: Term, occurrence_time: Cycle, c: float) -> bool:
 
 
 @cython.freelist(64)
+@cython.no_gc  # as an event: a term, a truth and a stamp of numbers
 @cython.cclass
 class Implication:
     """A temporal or declarative implication stored in its predicate's table."""

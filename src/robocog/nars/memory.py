@@ -9,8 +9,9 @@ names (ONA stops at 255 atoms), and is cleaned when a concept leaves.
 
 from __future__ import annotations
 
+from bisect import bisect_left, insort
 from collections.abc import Callable, Iterator
-from operator import itemgetter
+from heapq import heapify, heappop, heapreplace
 
 from .event import Event
 from .stamp import Size
@@ -228,6 +229,10 @@ class Memory:
         # eviction ranks a few hundred groups instead of every concept. Concepts made
         # or used since the last eviction wait in ``_unfiled``.
         self._groups: dict[tuple[int, int], dict[Concept, None]] = {}
+        # the groups' last_used values by use_count, ascending: for one use_count a
+        # group is the less useful the older it is, so an eviction ranks only the
+        # oldest group of each use_count (a score of them) instead of all ten thousand
+        self._lasts: dict[int, list[int]] = {}
         self._unfiled: list[Concept] = []
         #: called with each concept that leaves, so owners of other indexes can clean up
         self.on_remove: Callable[[Concept], None] | None = None
@@ -239,6 +244,7 @@ class Memory:
         state["on_remove"] = None  # re-attached by the owner after loading
         state.pop("find", None)
         state["_groups"] = {}  # rebuilt from the concepts on loading
+        state["_lasts"] = {}
         state["_unfiled"] = []
         return state
 
@@ -246,6 +252,7 @@ class Memory:
         self.__dict__.update(state)
         self.find = self.concepts.get  # type: ignore[method-assign]
         self._groups = {}
+        self._lasts = {}
         self._unfiled = list(self.concepts.values())
 
     def restore(self, concepts: list[Concept], next_concept_id: int, evictions: int) -> None:
@@ -254,6 +261,7 @@ class Memory:
         self.concepts.clear()
         self.atom_index.clear()
         self._groups.clear()
+        self._lasts.clear()
         self._unfiled = list(concepts)
         for c in concepts:
             c.filed = None
@@ -304,6 +312,7 @@ class Memory:
         """Put the concepts made or used since the last call into the group of their
         (use_count, last_used)."""
         groups: dict = self._groups
+        lasts: dict = self._lasts
         concepts: dict = self.concepts
         unfiled: list = self._unfiled
         c: Concept
@@ -315,10 +324,17 @@ class Memory:
             if old is None or old[0] != c.use_count or old[1] != c.last_used:
                 key = (c.use_count, c.last_used)
                 if old is not None:
-                    _ungroup(groups, old, c)
+                    _ungroup(groups, lasts, old, c)
                 g = groups.get(key)
                 if g is None:
                     groups[key] = {c: None}
+                    ls = lasts.get(c.use_count)
+                    if ls is None:
+                        lasts[c.use_count] = [c.last_used]
+                    elif ls[-1] < c.last_used:
+                        ls.append(c.last_used)  # the usual case: used now
+                    else:
+                        insort(ls, c.last_used)
                 else:
                     g[c] = None
                 c.filed = key
@@ -330,24 +346,33 @@ class Memory:
         fall to the older concept."""
         self._refile()
         batch = max(1, self.capacity // 16)
-        # usefulness u/(u+1), u = uses per cycle since the last use, of every group
+        groups: dict = self._groups
+        # usefulness u/(u+1), u = uses per cycle since the last use. The groups are
+        # taken least useful first until the batch is full, with every group as useful
+        # as the last one taken, so the oldest of those can be picked. For one use
+        # count the older group is the less useful, so the next group to take is the
+        # least useful of the oldest untaken group of each use count: ``heads`` holds
+        # those, with where each use count's list of ages has got to.
         now1 = now + 1
-        u: float
-        ranked: list = []
-        for key, g in self._groups.items():
-            n, last = key
-            u = n / (now1 - last)
-            ranked.append((u / (u + 1.0), g))
-        ranked.sort(key=itemgetter(0))
-        # the least useful groups until the batch is full, with every group as useful
-        # as the last one taken, so the oldest of those can be picked
+        heads: list = []
+        for n, ls in self._lasts.items():
+            heads.append((_usefulness(n, ls[0], now1), n, 0))
+        heapify(heads)
         chosen: list[tuple[float, int, Concept]] = []
-        last_key = None
-        for key, g in ranked:
+        last_key = -1.0
+        while heads:
+            key, n, i = heads[0]
             if len(chosen) >= batch and key != last_key:
                 break
+            ls = self._lasts[n]
+            g = groups[(n, ls[i])]
             chosen += [(key, c.id, c) for c in g]
             last_key = key
+            i += 1
+            if i < len(ls):
+                heapreplace(heads, (_usefulness(n, ls[i], now1), n, i))
+            else:
+                heappop(heads)
         # ids grow with the order concepts were made in, which is the dict's order
         chosen.sort()
         victims = [c for _, _, c in chosen[:batch]]
@@ -366,6 +391,7 @@ class Memory:
         concepts: dict = self.concepts
         index: dict = self.atom_index
         groups: dict = self._groups
+        lasts: dict = self._lasts
         on_remove = self.on_remove
         c: Concept
         gone: Concept
@@ -374,7 +400,7 @@ class Memory:
             gone = concepts.pop(c.term, None)
             if gone is not None:
                 if gone.filed is not None:
-                    _ungroup(groups, gone.filed, gone)
+                    _ungroup(groups, lasts, gone.filed, gone)
                     gone.filed = None
                 gone.book = None
             if on_remove is not None:
@@ -463,10 +489,25 @@ def related_above(
     return chosen
 
 
+def _usefulness(n: Count, last: Cycle, now1: Cycle) -> float:
+    """u/(u+1) of a group: u = ``n`` uses per cycle since ``last``, ``now1`` one after now."""
+    u: float = n / (now1 - last)
+    return u / (u + 1.0)
+
+
 def _ungroup(
-    groups: dict[tuple[int, int], dict[Concept, None]], key: tuple[int, int], c: Concept
+    groups: dict[tuple[int, int], dict[Concept, None]],
+    lasts: dict[int, list[int]],
+    key: tuple[int, int],
+    c: Concept,
 ) -> None:
     g = groups[key]
     del g[c]
     if not g:
         del groups[key]
+        n, last = key
+        ls = lasts[n]
+        if len(ls) == 1:
+            del lasts[n]
+        else:
+            del ls[bisect_left(ls, last)]

@@ -15,6 +15,11 @@ from __future__ import annotations
 import sys
 from collections.abc import Callable, Iterator
 
+try:
+    import cython
+except ImportError:  # the pure engine without Cython installed
+    from . import cy as cython
+
 #: statement copulas, printed ``<S cop P>``
 STATEMENT_COPULAS = frozenset({"-->", "<->", "==>", "<=>", "=/>", "|->"})
 #: binary infix compound connectors, printed ``(A op B)``
@@ -40,6 +45,12 @@ INT_SET = "[]"
 _VAR_PREFIXES = "$#?"
 
 
+# Compiled, a term is left out of Python's cycle collector (``no_gc``): terms form no
+# cycle (a term refers only to smaller terms, and to its variable forms, which have more
+# variables; anticipation's record is taken off when its call ends), and a full memory
+# holds hundreds of thousands of them, which every collection would otherwise walk.
+@cython.no_gc
+@cython.cclass
 class Term:
     """One Narsese term; never build directly, use :func:`atom` / :func:`compound`."""
 
