@@ -250,21 +250,19 @@ def _sweep() -> None:
     """
     table: dict = _TABLE
     table[_PROBE_KEY] = _probe()  # newest: the first one visited
-    keys: list = list(table)
-    # the terms beside their keys, read without hashing a key per term
+    # the terms only: a dropped term's key is made again from the term, so the keys of
+    # the terms that stay (most of a big table) are not touched at all
     terms: list = list(table.values())
     refs = sys.getrefcount
     later: list = []  # the forms of the dropped terms
-    t = None
-    alone = -1
-    while keys:
-        k = keys.pop()  # the previous key and term are released here and on the next line
-        t = terms.pop()
+    t = terms.pop()  # the probe
+    alone = refs(t)
+    del table[_PROBE_KEY]
+    while terms:
+        t = terms.pop()  # the previous term is released here
         n = refs(t)
-        if alone < 0:
-            alone = n  # the probe's count
         if n <= alone:
-            del table[k]
+            del table[(t.op, t.args) if t.op is not None else (None, t.name)]
             forms = t.forms
             if forms:
                 later.extend(f for f in forms if type(f) is Term)
