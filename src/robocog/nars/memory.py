@@ -313,14 +313,13 @@ class Memory:
         (use_count, last_used)."""
         groups: dict = self._groups
         lasts: dict = self._lasts
-        concepts: dict = self.concepts
         unfiled: list = self._unfiled
         c: Concept
         g: dict
         for c in unfiled:
-            if concepts.get(c.term) is not c:
-                continue  # removed meanwhile
             old = c.filed
+            if old is _GONE:
+                continue  # removed meanwhile
             if old is None or old[0] != c.use_count or old[1] != c.last_used:
                 key = (c.use_count, c.last_used)
                 if old is not None:
@@ -401,7 +400,7 @@ class Memory:
             if gone is not None:
                 if gone.filed is not None:
                     _ungroup(groups, lasts, gone.filed, gone)
-                    gone.filed = None
+                gone.filed = _GONE
                 gone.book = None
             if on_remove is not None:
                 on_remove(c)
@@ -487,6 +486,11 @@ def related_above(
                 if len(chosen) >= most:
                     return chosen
     return chosen
+
+
+#: ``Concept.filed`` of a concept that has left its memory (it may still wait in the
+#: memory's list of concepts to file, which then passes it by)
+_GONE = (-1, -1)
 
 
 def _usefulness(n: Count, last: Cycle, now1: Cycle) -> float:

@@ -30,6 +30,10 @@ cdef class Term:
     cpdef list level_order_atoms(self)
 
 cpdef Term compound(str op, tuple args)
+# a sweep of the interning table visits hundreds of thousands of terms
+@cython.locals(table=dict, terms=list, later=list, t=Term, n=Py_ssize_t, alone=Py_ssize_t,
+               forms=tuple)
+cpdef void _sweep()
 @cython.locals(r=Term, a=Term, b=Term, na=Term, nb=Term)
 cpdef Term substitute(Term t, dict mapping)
 

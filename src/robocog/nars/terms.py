@@ -265,7 +265,9 @@ def _sweep() -> None:
             del table[(t.op, t.args) if t.op is not None else (None, t.name)]
             forms = t.forms
             if forms:
-                later.extend(f for f in forms if type(f) is Term)
+                for f in forms:
+                    if type(f) is Term:  # (not the marker of a term that is its own form)
+                        later.append(f)
     forms = None
     if later:
         # held by the table and this list alone, as the probe (looked at first) is
