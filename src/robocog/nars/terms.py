@@ -199,6 +199,11 @@ F_IMAGE = 8  # contains /1 /2 \1 \2
 #: a binary term with an image as a component, at the top only (not passed on to the
 #: terms containing it): a derived belief of such a term needs an existing concept
 F_IMAGE_ARGUMENT = 16
+#: the term is an image itself (not passed on either): what ``F_IMAGE_ARGUMENT`` of the
+#: terms made from it is read from, without comparing its connector with four strings
+F_IS_IMAGE = 32
+#: the bits a term does not pass on to the terms containing it
+_OWN = F_IMAGE_ARGUMENT | F_IS_IMAGE
 _IMPS = ("==>", "<=>")
 _JUNCTIONS = ("&&", "||")
 _COMPOSED_OPS = ("-", "~", "&", "|")
@@ -396,9 +401,11 @@ def _make_compound(key: Key, op: str, args: Components) -> Term:
         complexity = 1 + a.complexity + b.complexity
         if op in SETS:
             complexity += 2
-        flags = (a.flags | b.flags) & ~F_IMAGE_ARGUMENT
-        if a.op in _IMAGE_OPS or b.op in _IMAGE_OPS:
-            flags |= F_IMAGE_ARGUMENT
+        flags = a.flags | b.flags
+        if flags & F_IS_IMAGE:
+            flags = (flags & ~_OWN) | F_IMAGE_ARGUMENT
+        else:
+            flags &= ~_OWN
         n_imp = a.n_imp + b.n_imp
         n_temp = a.n_temp + b.n_temp
         hv = a.has_var or b.has_var
@@ -428,7 +435,7 @@ def _make_compound(key: Key, op: str, args: Components) -> Term:
             hq = hq or a.has_query_var
             hi = hi or a.has_indep_var
             hd = hd or a.has_dep_var
-        flags &= ~F_IMAGE_ARGUMENT
+        flags &= ~_OWN
         t.is_op = False
     kind = _OP_KINDS.get(op)  # one look-up: most terms are ``-->`` or ``*``, of no kind
     if kind is not None:
@@ -439,8 +446,10 @@ def _make_compound(key: Key, op: str, args: Components) -> Term:
         elif kind == _K_JUNCTION:
             if args[-1].op in _JUNCTIONS:
                 flags |= F_JUNCTION_RIGHT_NESTED
+        elif kind == F_IMAGE:
+            flags |= F_IMAGE | F_IS_IMAGE
         else:
-            flags |= kind  # F_COMPOSED or F_IMAGE
+            flags |= kind  # F_COMPOSED
     t.complexity = complexity
     t.flags = flags
     t.n_imp = n_imp  # ==> and <=> inside (conclusion filter: at most one)
