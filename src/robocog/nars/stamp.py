@@ -43,10 +43,9 @@ def merge(a: Stamp, b: Stamp, size: Size = STAMP_SIZE) -> Stamp:
 
 def overlap(a: Stamp, b: Stamp) -> bool:
     """True if the two bases share evidence."""
-    if len(a) == 1:  # an input's stamp: a tuple scan
-        return a[0] in b
     # a stamp holds at most ``STAMP_SIZE`` ids: comparing them pairwise costs less than
-    # building a set, compiled (the ids as C longs, see stamp.pxd) by far
+    # building a set, compiled (the ids as C longs, see stamp.pxd) by far; an input's
+    # stamp of one id too (``a[0] in b`` compares Python integers)
     for x in a:
         for y in b:
             if x == y:

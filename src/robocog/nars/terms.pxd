@@ -40,7 +40,7 @@ cpdef Term substitute(Term t, dict mapping)
 # a new term's properties, computed once when it is interned (a burst of new terms
 # follows every new object the robot sees)
 @cython.locals(t=Term, a=Term, b=Term, complexity=long, flags=long, n_imp=long,
-               n_temp=long, hv=bint, hq=bint, hi=bint, hd=bint, table=dict)
+               n_temp=long, hv=bint, hq=bint, hi=bint, hd=bint, table=dict, kind=long)
 cpdef Term _make_compound(tuple key, str op, tuple args)
 @cython.locals(a=Term, b=Term, na=tuple, nb=tuple, seen=set, stack=list, x=Term)
 cpdef bint names_repeat(Term t)

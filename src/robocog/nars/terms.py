@@ -213,7 +213,9 @@ _IMAGE_OPS = ("/1", "/2", "\\1", "\\2")
 _K_IMP = -1
 _K_TEMP = -2
 _K_JUNCTION = -3
+_K_SET = -4  # nothing to record, but sets count more slots (see ``_make_compound``)
 _OP_KINDS: dict[str, int] = {
+    **dict.fromkeys(SETS, _K_SET),
     **dict.fromkeys(_IMPS, _K_IMP),
     "=/>": _K_TEMP,
     **dict.fromkeys(_JUNCTIONS, _K_JUNCTION),
@@ -394,12 +396,13 @@ def _make_compound(key: Key, op: str, args: Components) -> Term:
     t.args = args
     t._str = None
     t.is_var = False
+    kind = _OP_KINDS.get(op, 0)  # one look-up: most terms are ``-->`` or ``*``, of no kind
     if len(args) == 2:
         # the common case (statements, binary connectors), without loops
         a, b = args
         # ONA's binary-tree slot count: sets of n elements chain n-1 element nodes
         complexity = 1 + a.complexity + b.complexity
-        if op in SETS:
+        if kind == _K_SET:
             complexity += 2
         flags = a.flags | b.flags
         if flags & F_IS_IMAGE:
@@ -421,7 +424,7 @@ def _make_compound(key: Key, op: str, args: Components) -> Term:
         # unary terms carry a terminator slot, sets of n elements chain n-1 element
         # nodes plus the terminator
         complexity = 1 + (1 if len(args) == 1 else 0)
-        if op in SETS and len(args) > 1:
+        if kind == _K_SET and len(args) > 1:
             complexity += len(args)
         flags = 0
         n_imp = n_temp = 0
@@ -437,8 +440,7 @@ def _make_compound(key: Key, op: str, args: Components) -> Term:
             hd = hd or a.has_dep_var
         flags &= ~_OWN
         t.is_op = False
-    kind = _OP_KINDS.get(op)  # one look-up: most terms are ``-->`` or ``*``, of no kind
-    if kind is not None:
+    if kind != 0 and kind != _K_SET:
         if kind == _K_IMP:
             n_imp += 1
         elif kind == _K_TEMP:
