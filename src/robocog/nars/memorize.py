@@ -107,7 +107,8 @@ def _process_new_belief(
         add_implication(s, e.term, e.truth, e.stamp, e.dt, is_input, priority)
         return
     # most conclusions are about a concept that exists: found without the method call
-    c: Concept | None = s.memory.concepts.get(e.term)
+    concepts: dict = s.memory.concepts
+    c: Concept | None = concepts.get(e.term)
     if c is None:
         c = s.memory.conceptualize(e.term, now)
     c.use(now, eternal_input, s.config.eternal_input_usage_boost)

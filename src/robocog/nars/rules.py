@@ -360,15 +360,16 @@ class RuleTable:
         instead of its rules' matching and the building of their conclusions.
         """
         key = (t1, t2)
-        got = self._pairs.get(key)
+        pairs: dict = self._pairs  # (typed, the compiled look-up is the dict's own)
+        got = pairs.get(key)
         if got is None:
             found: list[Conclusion] = []
             _record(self.candidates(t1, t2), t1, t2, False, found)
             _record(self.candidates(t2, t1), t2, t1, True, found)
             got = tuple(found)
-            if len(self._pairs) >= REMEMBERED_PAIRS:
-                self._pairs.clear()
-            self._pairs[key] = got
+            if len(pairs) >= REMEMBERED_PAIRS:
+                pairs.clear()
+            pairs[key] = got
         return got
 
     def single_conclusions(self, t: Term) -> tuple[Conclusion, ...]:
@@ -419,10 +420,11 @@ class RuleTable:
             | (x1 is y1) << 4
             | (y0 is y1) << 5,
         )
-        got = self._shape_cache.get(key)
+        shapes: dict = self._shape_cache
+        got = shapes.get(key)
         if got is None:
             got = [r for r in self.double_rules(t1.op, t2.op) if _fits(r, key)]
-            self._shape_cache[key] = got
+            shapes[key] = got
         return got
 
     def double_rules(self, op1: str | None, op2: str | None) -> list[Rule]:

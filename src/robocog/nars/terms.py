@@ -396,7 +396,8 @@ def _make_compound(key: Key, op: str, args: Components) -> Term:
     t.args = args
     t._str = None
     t.is_var = False
-    kind = _OP_KINDS.get(op, 0)  # one look-up: most terms are ``-->`` or ``*``, of no kind
+    kinds: dict = _OP_KINDS
+    kind = kinds.get(op, 0)  # one look-up: most terms are ``-->`` or ``*``, of no kind
     if len(args) == 2:
         # the common case (statements, binary connectors), without loops
         a, b = args
