@@ -225,9 +225,9 @@ class Memory:
         self.belief_events = EventQueue(events_max)
         self.next_concept_id = 1
         self.evictions = 0
-        # concepts grouped by (use_count, last_used), which fixes their usefulness: an
-        # eviction ranks a few hundred groups instead of every concept. Concepts made
-        # or used since the last eviction wait in ``_unfiled``.
+        # concepts grouped by (use_count, last_used), which fixes their usefulness, so
+        # an eviction compares groups instead of concepts. Concepts made or used since
+        # the last eviction wait in ``_unfiled``.
         self._groups: dict[tuple[int, int], dict[Concept, None]] = {}
         # the groups' last_used values by use_count, ascending: for one use_count a
         # group is the less useful the older it is, so an eviction ranks only the
@@ -346,6 +346,7 @@ class Memory:
         self._refile()
         batch = max(1, self.capacity // 16)
         groups: dict = self._groups
+        lasts: dict = self._lasts
         # usefulness u/(u+1), u = uses per cycle since the last use. The groups are
         # taken least useful first until the batch is full, with every group as useful
         # as the last one taken, so the oldest of those can be picked. For one use
@@ -354,7 +355,7 @@ class Memory:
         # those, with where each use count's list of ages has got to.
         now1 = now + 1
         heads: list = []
-        for n, ls in self._lasts.items():
+        for n, ls in lasts.items():
             heads.append((_usefulness(n, ls[0], now1), n, 0))
         heapify(heads)
         chosen: list[tuple[float, int, Concept]] = []
@@ -363,7 +364,7 @@ class Memory:
             key, n, i = heads[0]
             if len(chosen) >= batch and key != last_key:
                 break
-            ls = self._lasts[n]
+            ls = lasts[n]
             g = groups[(n, ls[i])]
             chosen += [(key, c.id, c) for c in g]
             last_key = key

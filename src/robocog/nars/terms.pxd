@@ -30,6 +30,7 @@ cdef class Term:
     cpdef list level_order_atoms(self)
 
 cpdef Term compound(str op, tuple args)
+cdef inline tuple _key_of(Term t)
 # a sweep of the interning table visits hundreds of thousands of terms
 @cython.locals(table=dict, terms=list, later=list, t=Term, n=Py_ssize_t, alone=Py_ssize_t,
                forms=tuple)

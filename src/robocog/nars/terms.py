@@ -269,7 +269,7 @@ def _sweep() -> None:
         t = terms.pop()  # the previous term is released here
         n = refs(t)
         if n <= alone:
-            del table[(t.op, t.args) if t.op is not None else (None, t.name)]
+            del table[_key_of(t)]
             forms = t.forms
             if forms:
                 for f in forms:
@@ -289,7 +289,7 @@ def _sweep() -> None:
                 del table[_PROBE_KEY]
                 continue
             if n <= alone:
-                k = (t.op, t.args) if t.op is not None else (None, t.name)
+                k = _key_of(t)
                 if table.get(k) is t:
                     del table[k]
                     later.extend(t.args)  # looked at once this one is released
@@ -298,6 +298,11 @@ def _sweep() -> None:
     t = None
     _SWEPT_TO[0] = len(table)
     _SWEEP_AT[0] = max(200_000, 2 * len(table))
+
+
+def _key_of(t: Term) -> Key:
+    """The interning table's key of ``t``, as ``atom`` and ``compound`` make it."""
+    return (t.op, t.args) if t.op is not None else (None, t.name)
 
 
 #: the probe's key in the table during a sweep (no term has this key)
