@@ -35,6 +35,7 @@ ENGINE_MODULES = (
     "memory",
     "state",
     "unify",
+    "filters",
     "rules",
     "matchers",
     "spikegroups",

@@ -12,8 +12,10 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
+from robocog.nars import rules, terms
+from robocog.nars.filters import _rejected, rejected
+from robocog.nars.matchers import MATCHERS
 from robocog.nars.narsese import parse_term
-from robocog.nars.rules import _rejected, rejected
 from robocog.nars.stamp import has_duplicate, merge, overlap
 from robocog.nars.terms import F_IMAGE_ARGUMENT, Term, atom, compound, names_repeat
 
@@ -69,6 +71,19 @@ def test_complexity_and_flags_follow_the_components(t: Term) -> None:
     assert bool(t.flags & F_IMAGE_ARGUMENT) == image_argument
 
 
+@given(st.sampled_from(_OPS + ["=/>", "<=>", "&/", "!", "||"]), _terms(2), _terms(2))
+def test_a_terms_connector_is_the_one_object_of_its_name(op: str, a: Term, b: Term) -> None:
+    # the hot paths test connectors by identity: a connector spelled by a parser or a
+    # caller (an equal string, not the same object) must still give the named object
+    spelled = "".join(list(op))
+    args = (a,) if op == "!" else (a, b)
+    t = compound(spelled, args)
+    assert t.op == op
+    assert t.op is terms._CONNECTORS[op]
+    if op == "==>":
+        assert t.op is terms.IMPLICATION
+
+
 def test_rejected_filters_known_cases() -> None:
     assert rejected(parse_term("<a --> a>"))
     assert rejected(parse_term("<(a * b) --> (a * c)>"))
@@ -94,6 +109,35 @@ def test_merge_interleaves_and_truncates(a: tuple[int, ...], b: tuple[int, ...],
 def test_overlap_and_duplicates(a: tuple[int, ...], b: tuple[int, ...]) -> None:
     assert overlap(a, b) == any(x in b for x in a)
     assert has_duplicate(a + b) == overlap(a, b)
+
+
+@given(st.lists(st.integers(1, 2**62), max_size=10))
+def test_duplicates_among_large_ids(ids: list[int]) -> None:
+    assert has_duplicate(tuple(ids)) == (len(set(ids)) < len(ids))
+
+
+def test_the_remembered_premise_pairs_shrink_for_new_pairs_and_grow_for_old_ones(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    monkeypatch.setattr(rules, "REMEMBERED_PAIRS", 64)
+    monkeypatch.setattr(rules, "REMEMBERED_PAIRS_LEAST", 16)
+    table = rules.RuleTable(6, MATCHERS)
+    fresh = rules.RuleTable(6, MATCHERS)
+    assert table.pairs_limit == 64
+    # a stream of statements never seen before: every pair is new
+    for i in range(400):
+        t1 = parse_term(f"<p{i} --> q{i}>")
+        t2 = parse_term(f"<q{i} --> r{i}>")
+        assert table.conclusions(t1, t2) == fresh.conclusions(t1, t2)
+    assert table.pairs_limit == 16
+    # a few pairs met again and again (a robot's loop): remembered in full again
+    pairs = [(parse_term(f"<s{i} --> t{i}>"), parse_term(f"<t{i} --> u>")) for i in range(6)]
+    for _ in range(40):
+        for t1, t2 in pairs:
+            assert table.conclusions(t1, t2) == fresh.conclusions(t1, t2)
+        for i in range(3):
+            table.conclusions(parse_term(f"<v{_} --> w{i}>"), parse_term(f"<w{i} --> x>"))
+    assert table.pairs_limit == 64
 
 
 def test_sweep_drops_unreferenced_subtrees_in_one_pass_and_keeps_held_terms() -> None:

@@ -85,14 +85,15 @@ def apply_double(table: RuleTable, t1: Term, t2: Term, v1: Truth, v2: Truth, d: 
 def special(term1: Term, term2: Term, v1: Truth, v2: Truth, d: Derivation) -> None:
     """Detachment and elimination through implications and conjunctions, with unification."""
     op = term2.op
-    if op in (IMPLICATION, EQUIVALENCE):
-        is_impl = op == IMPLICATION
+    # (connectors by identity: see ``terms._CONNECTORS``)
+    if op is IMPLICATION or op is EQUIVALENCE:
+        is_impl = op is IMPLICATION
         subj, pred = term2.args
         s = unify(subj, term1)
         if s is not None:
             c = apply(pred, s)
             d.emit(c, tf.deduction(v2, v1) if is_impl else tf.analogy(v2, v1))
-        if is_impl and subj.op == CONJUNCTION:
+        if is_impl and subj.op is CONJUNCTION:
             first, rest = subj.args
             s = unify(first, term1)
             if s is None:
@@ -105,7 +106,7 @@ def special(term1: Term, term2: Term, v1: Truth, v2: Truth, d: Derivation) -> No
         if s is not None:
             c = apply(subj, s)
             d.emit(c, tf.abduction(v2, v1) if is_impl else tf.analogy(v2, v1))
-    elif op == CONJUNCTION:
+    elif op is CONJUNCTION:
         subj, pred = term2.args
         s = unify(subj, term1)
         if s is not None:

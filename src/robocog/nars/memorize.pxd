@@ -8,7 +8,7 @@ from robocog.nars.terms cimport Term
 from robocog.nars.truth cimport Truth
 from robocog.nars cimport truth as tf
 from robocog.nars.event cimport Event, event_of, revised_or_chosen
-from robocog.nars.rules cimport rejected
+from robocog.nars.filters cimport rejected
 from robocog.nars.memory cimport Concept, EventQueue
 from robocog.nars.unify cimport unify
 from robocog.nars.state cimport Reasoner, emit, shows

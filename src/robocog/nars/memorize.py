@@ -17,12 +17,20 @@ from . import truth as tf
 from .decision import add_goal
 from .declarative import note_fresh_belief
 from .event import BELIEF, ETERNAL, GOAL, Event, event_of, revised_or_chosen
+from .filters import rejected
 from .memory import Concept, EventQueue
-from .rules import rejected
 from .sensorimotor import add_implication, note_event, note_link
 from .stamp import Stamp, fmt
 from .state import Reasoner, emit, shows
-from .terms import F_COMPOSED, F_IMAGE_ARGUMENT, TEMPORAL_IMPLICATION, Term
+from .terms import (
+    CONJUNCTION,
+    EQUIVALENCE,
+    F_COMPOSED,
+    F_IMAGE_ARGUMENT,
+    IMPLICATION,
+    TEMPORAL_IMPLICATION,
+    Term,
+)
 from .truth import Cycle, Truth
 from .unify import unify
 
@@ -67,7 +75,10 @@ def _store(
     """Queue a belief event that passed the filters and store it in its concept."""
     added = False
     op = e.term.op
-    if op != TEMPORAL_IMPLICATION and (is_input or (op != "==>" and op != "<=>")):
+    # (connectors by identity: see ``terms._CONNECTORS``)
+    if op is not TEMPORAL_IMPLICATION and (
+        is_input or (op is not IMPLICATION and op is not EQUIVALENCE)
+    ):
         added = _queue(s, e, priority)  # only input implications become events
     if added and not is_input:
         s.stats["derived"] += 1
@@ -101,7 +112,7 @@ def _process_new_belief(
 ) -> None:
     now = s.time
     eternal_input = is_input and e.occurrence_time == ETERNAL
-    if e.term.op == TEMPORAL_IMPLICATION:
+    if e.term.op is TEMPORAL_IMPLICATION:
         if is_input:
             emit(s, "Input: " + e.line(priority))
         add_implication(s, e.term, e.truth, e.stamp, e.dt, is_input, priority)
@@ -148,7 +159,8 @@ def _process_new_belief(
     c.belief = belief
     if s.config.declarative_implications_cycle_process:
         note_fresh_belief(s, c)  # ONA 0.9.3: it may meet ``==>`` beliefs
-    if e.term.op in ("==>", "<=>"):
+    op = e.term.op
+    if op is IMPLICATION or op is EQUIVALENCE:
         note_link(s, e.term)
     if s.pending_questions:
         check_pending(s, c)
@@ -179,7 +191,7 @@ def add_derived(
     if rejected(term):
         return
     op = term.op
-    if (op == "==>" or op == "<=>") and not term.has_indep_var:
+    if (op is IMPLICATION or op is EQUIVALENCE) and not term.has_indep_var:
         # ONA refuses this only for conclusions with variables introduced: a ground
         # ``==>`` (from a conditional deduction) it keeps, which its 0.9.3 pass uses
         if term.has_var or not cfg.declarative_implications_cycle_process:
@@ -237,4 +249,4 @@ def _needs_existing_concept(t: Term, occurrence: Cycle) -> bool:
     concepts that already exist."""
     if t.flags & (F_COMPOSED | F_IMAGE_ARGUMENT):  # kept on the term
         return True
-    return t.op == "&&" and (t.has_dep_var or occurrence != ETERNAL)
+    return t.op is CONJUNCTION and (t.has_dep_var or occurrence != ETERNAL)

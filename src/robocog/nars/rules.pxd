@@ -6,6 +6,7 @@ cimport cython
 
 from robocog.nars.terms cimport Term, compound, names_repeat, substitute
 from robocog.nars.truth cimport Truth
+from robocog.nars.filters cimport hol_component_invalid
 from robocog.nars cimport truth as tf
 
 cpdef tuple variable_forms(Term t)
@@ -30,11 +31,7 @@ cpdef object introduce_implication_variables(Term t, bint extensional)
 cpdef object introduce_conjunction_variables(Term t, bint extensional)
 @cython.locals(op=str, found=list, ext=bint)
 cpdef tuple _variable_forms(Term t)
-@cython.locals(comp=Term, c=Term, s=Term, p=Term)
-cpdef bint hol_component_invalid(Term t)
 cpdef Term make(str op, tuple args)
-# every conclusion is filtered
-cpdef bint rejected(Term t)
 
 # the rules that can match a shape of premise pair, worked out at its first meeting
 cpdef bint is_pattern_variable(Term t)

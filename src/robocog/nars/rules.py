@@ -14,13 +14,13 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 from . import truth as tf
+from .filters import hol_component_invalid
 from .narsese import parse_pattern
 from .terms import (
     CONJUNCTION,
     DISJUNCTION,
     EQUIVALENCE,
     EXT_SET,
-    F_JUNCTION_RIGHT_NESTED,
     IMPLICATION,
     INHERITANCE,
     INT_SET,
@@ -30,7 +30,6 @@ from .terms import (
     Term,
     atom,
     compound,
-    names_repeat,
     substitute,
 )
 from .truth import Truth
@@ -274,8 +273,12 @@ Matcher = Callable[[Term, Term, Truth, Truth, Emit], None]
 #: one conclusion of a premise pair: its term, the truth function, whether that takes
 #: the premises' truths in the opposite order, whether variables are to be introduced
 Conclusion = tuple[Term, TruthFn, bool, bool]
-#: how many premise pairs (and single premises) a rule table remembers the conclusions of
+#: how many premise pairs (and single premises) a rule table remembers the conclusions of,
+#: at most and at least (see ``RuleTable.conclusions``): the least holds the pairs a
+#: robot's loop meets again (some thousands in a mission), since a table that remembers
+#: fewer pairs than come back meets none of them again and would never grow
 REMEMBERED_PAIRS = 1 << 15
+REMEMBERED_PAIRS_LEAST = 1 << 12
 #: the truth the matchers are given while their conclusions are only recorded
 _SOME_TRUTH = Truth(1.0, 0.9)
 
@@ -311,6 +314,15 @@ class Rule:
     apply: Matcher | None = None
 
 
+def _next_limit(limit: int, hits: int) -> int:
+    """How many premise pairs to remember after ``limit`` of them met ``hits`` again."""
+    if hits < limit // 16:
+        return max(REMEMBERED_PAIRS_LEAST, limit // 2)
+    if hits > limit // 2:
+        return min(REMEMBERED_PAIRS, limit * 2)
+    return limit
+
+
 def _root(p: Term) -> str:
     return "*any*" if is_pattern_variable(p) else (p.op or "*atom*")
 
@@ -328,6 +340,8 @@ class RuleTable:
         self._shape_cache: dict[tuple[object, ...], list[Rule]] = {}
         # what the rules conclude from a premise (pair), see ``conclusions``
         self._pairs: dict[tuple[Term, Term], tuple[Conclusion, ...]] = {}
+        self._pairs_limit = REMEMBERED_PAIRS
+        self._pair_hits = 0  # since the pairs were last cleared
         self._singles: dict[Term, tuple[Conclusion, ...]] = {}
         if len(matchers) != len(RULES):
             raise ValueError(f"{len(matchers)} matchers for {len(RULES)} rules")
@@ -354,10 +368,15 @@ class RuleTable:
         in the order the rules apply: each conclusion with how its truth is had from
         the premises' (:data:`Conclusion`).
 
-        The conclusions are a function of the two (interned) terms alone, and the same
-        premise pairs meet at nearly every step, so they are remembered (up to
+        The conclusions are a function of the two (interned) terms alone, and a robot's
+        premise pairs meet again at nearly every step, so they are remembered (up to
         :data:`REMEMBERED_PAIRS` pairs, then afresh): a pair met again costs one look-up
-        instead of its rules' matching and the building of their conclusions.
+        instead of its rules' matching and the building of their conclusions. A stream
+        of ever new statements (a taxonomy read in) meets no pair twice; remembered,
+        their conclusions are tens of megabytes that keep their terms alive and crowd
+        the cache. So when the pairs are full and few were met again since the last
+        time, the next round remembers half as many (down to
+        :data:`REMEMBERED_PAIRS_LEAST`), and twice as many when most were.
         """
         key = (t1, t2)
         pairs: dict = self._pairs  # (typed, the compiled look-up is the dict's own)
@@ -367,10 +386,19 @@ class RuleTable:
             _record(self.candidates(t1, t2), t1, t2, False, found)
             _record(self.candidates(t2, t1), t2, t1, True, found)
             got = tuple(found)
-            if len(pairs) >= REMEMBERED_PAIRS:
+            if len(pairs) >= self._pairs_limit:
+                self._pairs_limit = _next_limit(self._pairs_limit, self._pair_hits)
+                self._pair_hits = 0
                 pairs.clear()
             pairs[key] = got
+        else:
+            self._pair_hits += 1
         return got
+
+    @property
+    def pairs_limit(self) -> int:
+        """How many premise pairs the table remembers the conclusions of, as of now."""
+        return self._pairs_limit
 
     def single_conclusions(self, t: Term) -> tuple[Conclusion, ...]:
         """What the single-premise rules conclude from ``t`` (as ``conclusions``, the
@@ -650,135 +678,19 @@ _ITSELF: tuple[object, ...] = (object(),)
 def _variable_forms(t: Term) -> tuple[Term, ...]:
     op = t.op
     found: list[Term] = []
-    if op == IMPLICATION or op == EQUIVALENCE or op == TEMPORAL_IMPLICATION:
+    # (connectors by identity: see ``terms._CONNECTORS``)
+    if op is IMPLICATION or op is EQUIVALENCE or op is TEMPORAL_IMPLICATION:
         for ext in (True, False):
             v = introduce_implication_variables(t, ext)
             if v is not None and v is not t and not hol_component_invalid(v):
-                if (v.op == IMPLICATION or v.op == EQUIVALENCE) and not v.has_indep_var:
+                if (v.op is IMPLICATION or v.op is EQUIVALENCE) and not v.has_indep_var:
                     continue
                 found.append(v)
         return tuple(found)
-    if op == CONJUNCTION:
+    if op is CONJUNCTION:
         for ext in (True, False):
             v = introduce_conjunction_variables(t, ext)
             if v is not None and v is not t and not hol_component_invalid(v):
                 found.append(v)
         return tuple(found)
     return (t,)
-
-
-# ---------------------------------------------------------------- conclusion filters
-def atom_appears_twice(t: Term) -> bool:
-    """Filter: an -->/<-> statement naming an atom twice, or ==>/<=> with equal sides."""
-    if t.op in (INHERITANCE, SIMILARITY):
-        s = t.args[0]
-        if not (s.op == "*" and len(s.args) == 2 and s.args[0].op == "*" and s.args[1].op == "*"):
-            if names_repeat(t):
-                return True
-    if t.op in (IMPLICATION, EQUIVALENCE) and t.args[0] is t.args[1]:
-        return True
-    return False
-
-
-def nested_hol_statement(t: Term) -> bool:
-    """Filter: two ==>/<=> or more than two =/> in one term."""
-    return t.n_imp >= 2 or t.n_temp > 2
-
-
-def inh_or_sim_has_dep_var(t: Term) -> bool:
-    """Filter: an -->/<-> statement with a dependent variable."""
-    return t.op in (INHERITANCE, SIMILARITY) and t.has_dep_var
-
-
-def junction_not_right_nested(t: Term) -> bool:
-    """Filter: && or || whose right component is again && or ||."""
-    return bool(t.flags & F_JUNCTION_RIGHT_NESTED)
-
-
-def invalid_set_op(t: Term) -> bool:
-    """Filter: intersections of sets that reductions should have merged."""
-    if t.op == INHERITANCE:
-        s, p = t.args
-        if s.op == "&" and s.args[0].op == EXT_SET and s.args[1].op == EXT_SET:
-            return True
-        if p.op == "|" and p.args[0].op == INT_SET and p.args[1].op == INT_SET:
-            return True
-    return False
-
-
-def dep_var_appears_once(t: Term) -> bool:
-    """Filter: a dependent variable mentioned only once."""
-    if not t.has_dep_var:
-        return False
-    counts: dict[Term, int] = {}
-    for a in t.atoms():
-        if a.has_dep_var:
-            counts[a] = counts.get(a, 0) + 1
-    return any(v == 1 for v in counts.values())
-
-
-def conjunction_starts_with_operation(t: Term) -> bool:
-    """Filter: a declarative implication whose condition conjunction starts with an op."""
-    if t.op in (IMPLICATION, EQUIVALENCE) and t.args[0].op == CONJUNCTION:
-        s = t.args[0]
-        while s.op == CONJUNCTION:
-            first = s.args[0]
-            if first.is_op:
-                return True
-            s = first
-    return False
-
-
-def hol_component_invalid(t: Term) -> bool:
-    """Filter for variable introduction: components like ``<$1 --> $1>`` or var-only ones."""
-    if t.op not in (IMPLICATION, EQUIVALENCE, CONJUNCTION):
-        return False
-    for comp in t.args:
-        c = comp.args[0] if comp.op == "!" else comp
-        if c.op in (INHERITANCE, SIMILARITY):
-            s, p = c.args
-            if s is p or (s.is_var and p.is_var):
-                return True
-            if (s.op is None and not s.is_var) or (p.op is None and not p.is_var):
-                continue  # a plain name on either side: not variables only
-            if not c.index_names():  # its distinct names, cached on the term
-                return True
-    return False
-
-
-def rejected(t: Term) -> bool:
-    """True if a conclusion is one ONA's filters throw away (cached on the term)."""
-    got = t.cache
-    if got is None:
-        got = t.cache = _rejected(t)
-    return got
-
-
-def _rejected(t: Term) -> bool:
-    """The filters above in one pass (all pure, so the O(1) checks go first)."""
-    if t.n_imp >= 2 or t.n_temp > 2 or t.flags & F_JUNCTION_RIGHT_NESTED:
-        return True  # nested_hol_statement, junction_not_right_nested
-    op = t.op
-    if op == INHERITANCE or op == SIMILARITY:
-        if t.has_dep_var:
-            return True  # inh_or_sim_has_dep_var
-        s, p = t.args
-        if op == INHERITANCE and (
-            (s.op == "&" and s.args[0].op == EXT_SET and s.args[1].op == EXT_SET)
-            or (p.op == "|" and p.args[0].op == INT_SET and p.args[1].op == INT_SET)
-        ):
-            return True  # invalid_set_op
-        if s.op is None and p.op is None:
-            if s is p and not s.is_var:
-                return True  # atom_appears_twice on ``<a --> a>``
-        elif not (
-            s.op == "*" and len(s.args) == 2 and s.args[0].op == "*" and s.args[1].op == "*"
-        ) and names_repeat(t):
-            return True  # atom_appears_twice
-        return False  # no dependent variable: dep_var_appears_once cannot hold
-    if op == IMPLICATION or op == EQUIVALENCE:
-        if t.args[0] is t.args[1]:
-            return True  # atom_appears_twice
-        if conjunction_starts_with_operation(t):
-            return True
-    return dep_var_appears_once(t)

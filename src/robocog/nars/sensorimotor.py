@@ -26,7 +26,16 @@ from .rules import variable_forms
 from .spikegroups import group_add, group_keys, group_remove
 from .stamp import Size, fmt, merge, overlap
 from .state import Reasoner, emit, remember, shows
-from .terms import NEGATION, SEQUENCE, TEMPORAL_IMPLICATION, Bindings, Term, compound
+from .terms import (
+    EQUIVALENCE,
+    IMPLICATION,
+    NEGATION,
+    SEQUENCE,
+    TEMPORAL_IMPLICATION,
+    Bindings,
+    Term,
+    compound,
+)
 from .truth import Cycle, Truth, expectation
 from .unify import apply, unify
 
@@ -155,7 +164,8 @@ def forget_concept(s: Reasoner, c: Concept) -> None:
             if d is not None:
                 d.pop(c, None)
     t = c.term
-    if t.op in ("==>", "<=>"):
+    op = t.op
+    if op is IMPLICATION or op is EQUIVALENCE:  # (by identity: ``terms._CONNECTORS``)
         s.general_links.pop(t, None)
         for side in t.args:
             d2 = s.links_by_subject.get(side)
@@ -168,7 +178,7 @@ def forget_concept(s: Reasoner, c: Concept) -> None:
 # ------------------------------------------------------ declarative links
 def note_link(s: Reasoner, term: Term) -> None:
     """Index an eternal ``==>``/``<=>`` belief by its condition (both sides of ``<=>``)."""
-    sides = [term.args[0]] if term.op == "==>" else [term.args[0], term.args[1]]
+    sides = [term.args[0]] if term.op is IMPLICATION else [term.args[0], term.args[1]]
     for side in sides:
         if side.has_var:
             s.general_links[term] = None

@@ -7,5 +7,5 @@ cimport cython
 cpdef tuple merge(tuple a, tuple b, long size=*)
 @cython.locals(x=long, y=long)
 cpdef bint overlap(tuple a, tuple b)
-@cython.locals(n=Py_ssize_t, i=Py_ssize_t, j=Py_ssize_t, x=long)
+@cython.locals(n=Py_ssize_t, i=Py_ssize_t, j=Py_ssize_t, x=long, y=long)
 cpdef bint has_duplicate(tuple a)

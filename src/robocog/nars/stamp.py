@@ -61,7 +61,8 @@ def has_duplicate(a: Stamp) -> bool:
     for i in range(1, n):
         x = a[i]
         for j in range(i):
-            if a[j] == x:
+            y = a[j]  # (compiled, a C long like ``x``: no integer object made to compare)
+            if y == x:
                 return True
     return False
 

@@ -25,8 +25,9 @@ cdef class Term:
     cdef public object anticipated
     cdef public list keys
 
+    @cython.locals(out=list, level=list, nxt=list, x=Term, y=Term, a=Term, b=Term)
     cpdef tuple index_names(self)
-    @cython.locals(out=list, nxt=list, t=Term)
+    @cython.locals(out=list, level=list, nxt=list, t=Term, a=Term)
     cpdef list level_order_atoms(self)
 
 cpdef Term compound(str op, tuple args)

@@ -39,8 +39,37 @@ CONJUNCTION = "&&"
 DISJUNCTION = "||"
 NEGATION = "!"
 PRODUCT = "*"
+EXT_INTERSECTION = "&"
+INT_INTERSECTION = "|"
 EXT_SET = "{}"
 INT_SET = "[]"
+
+#: each connector's one string object. A term's ``op`` is always this object (see
+#: ``_make_compound``), so a hot path may test a term's connector by identity
+#: (``t.op is IMPLICATION``, with the names above): compiled, that is one pointer
+#: comparison, where ``==`` of two different strings calls a string comparison.
+_CONNECTORS: dict[str, str] = {
+    c: c
+    for c in (
+        INHERITANCE,
+        SIMILARITY,
+        IMPLICATION,
+        EQUIVALENCE,
+        TEMPORAL_IMPLICATION,
+        SEQUENCE,
+        CONJUNCTION,
+        DISJUNCTION,
+        NEGATION,
+        PRODUCT,
+        EXT_INTERSECTION,
+        INT_INTERSECTION,
+        EXT_SET,
+        INT_SET,
+    )
+}
+for _c in sorted(STATEMENT_COPULAS | INFIX_OPS | UNARY_OPS | set(SETS)):
+    _CONNECTORS.setdefault(_c, _c)
+del _c
 
 _VAR_PREFIXES = "$#?"
 
@@ -157,19 +186,26 @@ class Term:
                 else:
                     got = (a, b)
             else:
-                # breadth first over the binary tree, as ``level_order_atoms``, in one pass
-                seen: dict[Term, None] = {}
-                level: list[Term] | tuple[Term, ...] = args
+                # breadth first over the binary tree, as ``level_order_atoms``, in one
+                # pass; a term has a few names, so a repeat is found by comparing
+                # addresses with those found so far, which costs less than a dict
+                out: list[Term] = []
+                level: list[Term] = list(args)
                 while level:
                     nxt: list[Term] = []
                     for x in level:
                         if x.op is None:
                             if not x.is_var:
-                                seen[x] = None
+                                for y in out:
+                                    if y is x:
+                                        break
+                                else:
+                                    out.append(x)
                         else:
-                            nxt += x.args
+                            for y in x.args:
+                                nxt.append(y)
                     level = nxt
-                got = tuple(seen)
+                got = tuple(out)
             self._names = got
         return got
 
@@ -178,15 +214,15 @@ class Term:
         if self.op is None:
             return [self]
         out: list[Term] = []
-        append = out.append
-        level: list[Term] | tuple[Term, ...] = self.args
+        level: list[Term] = list(self.args)
         while level:
             nxt: list[Term] = []
             for t in level:
                 if t.op is None:
-                    append(t)
+                    out.append(t)
                 else:
-                    nxt += t.args
+                    for a in t.args:
+                        nxt.append(a)
             level = nxt
         return out
 
@@ -396,6 +432,7 @@ def _make_compound(key: Key, op: str, args: Components) -> Term:
     t: Term = Term.__new__(Term)
     a: Term
     b: Term
+    op = _CONNECTORS.get(op, op)
     t.op = op
     t.name = None
     t.args = args
@@ -425,7 +462,7 @@ def _make_compound(key: Key, op: str, args: Components) -> Term:
         else:
             hq = hi = hd = False
         # an operation term: ``^op`` or ``<(args) --> ^op>``
-        t.is_op = op == INHERITANCE and b.op is None and b.is_op
+        t.is_op = op is INHERITANCE and b.op is None and b.is_op
     else:
         # unary terms carry a terminator slot, sets of n elements chain n-1 element
         # nodes plus the terminator

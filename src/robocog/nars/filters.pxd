@@ -1,0 +1,11 @@
+# For the compiled engine: the C signatures of the filters in filters.py.
+# filters.py stays the only source of behaviour; see setup.py.
+
+cimport cython
+
+from robocog.nars.terms cimport Term
+
+@cython.locals(comp=Term, c=Term, s=Term, p=Term)
+cpdef bint hol_component_invalid(Term t)
+# every conclusion is filtered
+cpdef bint rejected(Term t)
