@@ -79,7 +79,7 @@ def test_a_terms_connector_is_the_one_object_of_its_name(op: str, a: Term, b: Te
     args = (a,) if op == "!" else (a, b)
     t = compound(spelled, args)
     assert t.op == op
-    assert t.op is terms._CONNECTORS[op]
+    assert t.op is terms.CONNECTORS[op]
     if op == "==>":
         assert t.op is terms.IMPLICATION
 

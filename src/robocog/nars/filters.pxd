@@ -9,3 +9,7 @@ from robocog.nars.terms cimport Term
 cpdef bint hol_component_invalid(Term t)
 # every conclusion is filtered
 cpdef bint rejected(Term t)
+@cython.locals(s=Term, p=Term)
+cpdef bint _rejected(Term t)
+@cython.locals(s=Term, first=Term)
+cpdef bint conjunction_starts_with_operation(Term t)

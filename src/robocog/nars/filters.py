@@ -76,9 +76,10 @@ def dep_var_appears_once(t: Term) -> bool:
 
 def conjunction_starts_with_operation(t: Term) -> bool:
     """Filter: a declarative implication whose condition conjunction starts with an op."""
-    if t.op in (IMPLICATION, EQUIVALENCE) and t.args[0].op == CONJUNCTION:
+    op = t.op
+    if (op is IMPLICATION or op is EQUIVALENCE) and t.args[0].op is CONJUNCTION:
         s = t.args[0]
-        while s.op == CONJUNCTION:
+        while s.op is CONJUNCTION:
             first = s.args[0]
             if first.is_op:
                 return True
@@ -118,7 +119,7 @@ def _rejected(t: Term) -> bool:
     if t.n_imp >= 2 or t.n_temp > 2 or t.flags & F_JUNCTION_RIGHT_NESTED:
         return True  # nested_hol_statement, junction_not_right_nested
     op = t.op
-    # (connectors by identity: see ``terms._CONNECTORS``)
+    # (connectors by identity: see ``terms.CONNECTORS``)
     if op is INHERITANCE or op is SIMILARITY:
         if t.has_dep_var:
             return True  # inh_or_sim_has_dep_var

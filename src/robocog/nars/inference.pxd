@@ -9,7 +9,7 @@ from robocog.nars cimport truth as tf
 from robocog.nars.unify cimport apply, unify
 from robocog.nars.state cimport Reasoner
 from robocog.nars.memorize cimport add_derived
-from robocog.nars.rules cimport variable_forms
+from robocog.nars.rules cimport RuleTable, variable_forms
 
 cdef class Derivation:
     cdef public Reasoner state
@@ -20,6 +20,6 @@ cdef class Derivation:
 
     cpdef void emit(self, Term term, Truth t, bint var_intro=*)
 
-cpdef void apply_single(object table, Term term, Truth t, Derivation d)
-cpdef void apply_double(object table, Term t1, Term t2, Truth v1, Truth v2, Derivation d)
+cpdef void apply_single(RuleTable table, Term term, Truth t, Derivation d)
+cpdef void apply_double(RuleTable table, Term t1, Term t2, Truth v1, Truth v2, Derivation d)
 cpdef void special(Term term1, Term term2, Truth v1, Truth v2, Derivation d)

@@ -85,7 +85,7 @@ def apply_double(table: RuleTable, t1: Term, t2: Term, v1: Truth, v2: Truth, d: 
 def special(term1: Term, term2: Term, v1: Truth, v2: Truth, d: Derivation) -> None:
     """Detachment and elimination through implications and conjunctions, with unification."""
     op = term2.op
-    # (connectors by identity: see ``terms._CONNECTORS``)
+    # (connectors by identity: see ``terms.CONNECTORS``)
     if op is IMPLICATION or op is EQUIVALENCE:
         is_impl = op is IMPLICATION
         subj, pred = term2.args

@@ -75,7 +75,7 @@ def _store(
     """Queue a belief event that passed the filters and store it in its concept."""
     added = False
     op = e.term.op
-    # (connectors by identity: see ``terms._CONNECTORS``)
+    # (connectors by identity: see ``terms.CONNECTORS``)
     if op is not TEMPORAL_IMPLICATION and (
         is_input or (op is not IMPLICATION and op is not EQUIVALENCE)
     ):

@@ -44,9 +44,30 @@ cdef class EventQueue:
     cpdef void _forget(self, Event e)
     cpdef bint push(self, Event e, double priority)
 
+cdef class Memory:
+    cdef public long capacity
+    cdef public long operations
+    cdef public long table_size
+    cdef public dict concepts
+    cdef public dict atom_index
+    cdef public EventQueue belief_events
+    cdef public long next_concept_id
+    cdef public long evictions
+    cdef public dict _groups
+    cdef public dict _lasts
+    cdef public list _unfiled
+    cdef public object on_remove
+    cdef public object find
+
+    @cython.locals(a=Term)
+    cpdef Concept conceptualize(self, Term term, long now)
+    cpdef void _refile(self)
+    cpdef void _evict(self, long now)
+    cpdef void _remove_all(self, object cs)
+
 # the second premises of every selected event: seventy-odd concepts a cycle
 @cython.locals(chosen=list, seen=set, c=Concept, cp=double, own=Concept, d=dict, a=Term)
-cpdef list related_above(
+cpdef list _related_above(
     dict concepts, dict atom_index, Term term, long now, double durability,
     double threshold, Py_ssize_t most
 )

@@ -213,8 +213,26 @@ class EventQueue:
         self._low = None
 
 
+#: what a pickled memory of robocog's older save format held (see ``Memory.__getstate__``)
+_STATE_FIELDS = (
+    "capacity",
+    "operations",
+    "table_size",
+    "concepts",
+    "atom_index",
+    "belief_events",
+    "next_concept_id",
+    "evictions",
+)
+
+
 class Memory:
-    """Concepts, the atom index and the event queues of one reasoner."""
+    """Concepts, the atom index and the event queues of one reasoner.
+
+    Compiled, an extension type (memory.pxd): the reasoning cycle reads its fields as
+    C struct members and calls ``conceptualize`` in C, where a Python class would look
+    each field up in its instance dict, eight times for every new concept.
+    """
 
     def __init__(self, capacity: int, operations: int, table_size: int, events_max: int) -> None:
         self.capacity = capacity
@@ -236,21 +254,19 @@ class Memory:
         self._unfiled: list[Concept] = []
         #: called with each concept that leaves, so owners of other indexes can clean up
         self.on_remove: Callable[[Concept], None] | None = None
-        # ``find`` is the dict's own ``get`` (called millions of times per run)
-        self.find = self.concepts.get  # type: ignore[method-assign]
+        #: the concept of a term if it exists: the concepts dict's own ``get``, called
+        #: millions of times per run
+        self.find: Callable[[Term], Concept | None] = self.concepts.get
 
     def __getstate__(self) -> dict[str, object]:
-        state = dict(self.__dict__)
-        state["on_remove"] = None  # re-attached by the owner after loading
-        state.pop("find", None)
-        state["_groups"] = {}  # rebuilt from the concepts on loading
-        state["_lasts"] = {}
-        state["_unfiled"] = []
-        return state
+        # read by tools/convert_pickle_memory.py only: robocog saves memory files
+        return {k: getattr(self, k) for k in _STATE_FIELDS}
 
     def __setstate__(self, state: dict[str, object]) -> None:
-        self.__dict__.update(state)
-        self.find = self.concepts.get  # type: ignore[method-assign]
+        for k in _STATE_FIELDS:
+            setattr(self, k, state[k])
+        self.on_remove = None  # re-attached by the owner after loading
+        self.find = self.concepts.get
         self._groups = {}
         self._lasts = {}
         self._unfiled = list(self.concepts.values())
@@ -282,11 +298,7 @@ class Memory:
     def __iter__(self) -> Iterator[Concept]:
         return iter(self.concepts.values())
 
-    def find(self, term: Term) -> Concept | None:
-        """The concept of ``term`` if it exists."""
-        return self.concepts.get(term)
-
-    def conceptualize(self, term: Term, now: int) -> Concept:
+    def conceptualize(self, term: Term, now: Cycle) -> Concept:
         """The concept of ``term``, made (evicting the least useful if full) if missing."""
         concepts: dict = self.concepts
         found = concepts.get(term)
@@ -340,7 +352,7 @@ class Memory:
             c.book = unfiled
         unfiled.clear()
 
-    def _evict(self, now: int) -> None:
+    def _evict(self, now: Cycle) -> None:
         """Remove the ``capacity/16`` least useful concepts, least useful first; ties
         fall to the older concept."""
         self._refile()
@@ -359,6 +371,7 @@ class Memory:
             heads.append((_usefulness(n, ls[0], now1), n, 0))
         heapify(heads)
         chosen: list[tuple[float, int, Concept]] = []
+        c: Concept
         last_key = -1.0
         while heads:
             key, n, i = heads[0]
@@ -366,7 +379,8 @@ class Memory:
                 break
             ls = lasts[n]
             g = groups[(n, ls[i])]
-            chosen += [(key, c.id, c) for c in g]
+            for c in g:
+                chosen.append((key, c.id, c))
             last_key = key
             i += 1
             if i < len(ls):
@@ -441,7 +455,9 @@ class Memory:
         :meth:`related` and a test per concept, in one loop: resuming the generator
         cost more than the test, for the seventy-odd concepts of a cycle.
         """
-        return related_above(self.concepts, self.atom_index, term, now, durability, threshold, most)
+        return _related_above(
+            self.concepts, self.atom_index, term, now, durability, threshold, most
+        )
 
 
 #: the memory's concepts by term, and its atom index (aliases the compiled engine
@@ -450,7 +466,7 @@ ConceptsByTerm = dict[Term, Concept]
 AtomIndex = dict[Term, dict[Concept, None]]
 
 
-def related_above(
+def _related_above(
     concepts: ConceptsByTerm,
     atom_index: AtomIndex,
     term: Term,

@@ -11,9 +11,26 @@ from robocog.nars cimport truth as tf
 
 cpdef tuple variable_forms(Term t)
 
+cdef class RuleTable:
+    cdef public dict single
+    cdef public dict double
+    cdef dict _cache
+    cdef dict _single_cache
+    cdef dict _shape_cache
+    cdef dict _pairs
+    cdef long _pairs_limit
+    cdef long _pair_hits
+    cdef dict _singles
+
+    cpdef tuple conclusions(self, Term t1, Term t2)
+    cpdef tuple single_conclusions(self, Term t)
+    cpdef list single_rules(self, str op)
+    cpdef list candidates(self, Term t1, Term t2)
+    cpdef list double_rules(self, str op1, str op2)
+
 # variable introduction: run once for each new conclusion term, the most of them in the
 # cycles after a new object is seen
-@cython.locals(op=str, sim=bint, s=Term, p=Term, a=Term)
+@cython.locals(op=str, sim=bint, s=Term, p=Term, a=Term, s_image=bint, p_image=bint)
 cpdef void _count_statement_atoms(
     Term t, dict counts, bint extensional, bint ignore_structure, bint spatial
 )
@@ -31,6 +48,7 @@ cpdef object introduce_implication_variables(Term t, bint extensional)
 cpdef object introduce_conjunction_variables(Term t, bint extensional)
 @cython.locals(op=str, found=list, ext=bint)
 cpdef tuple _variable_forms(Term t)
+@cython.locals(a=Term, b=Term)
 cpdef Term make(str op, tuple args)
 
 # the rules that can match a shape of premise pair, worked out at its first meeting

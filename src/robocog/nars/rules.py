@@ -18,12 +18,21 @@ from .filters import hol_component_invalid
 from .narsese import parse_pattern
 from .terms import (
     CONJUNCTION,
+    CONNECTORS,
     DISJUNCTION,
     EQUIVALENCE,
+    EXT_IMAGE1,
+    EXT_IMAGE2,
+    EXT_INTERSECTION,
     EXT_SET,
     IMPLICATION,
     INHERITANCE,
+    INT_IMAGE1,
+    INT_IMAGE2,
+    INT_INTERSECTION,
     INT_SET,
+    NEGATION,
+    SEQUENCE,
     SIMILARITY,
     TEMPORAL_IMPLICATION,
     Components,
@@ -237,13 +246,24 @@ def match(p: Term, t: Term, b: dict[Term, Term]) -> bool:
 
 def make(op: str, args: Components) -> Term:
     """Build a compound applying ONA's term reductions."""
-    if op in ("&", "|", CONJUNCTION, DISJUNCTION) and len(args) == 2 and args[0] is args[1]:
-        return args[0]
-    if op == "|" and len(args) == 2 and args[0].op == EXT_SET and args[1].op == EXT_SET:
-        return make(EXT_SET, args[0].args + args[1].args)
-    if op == "&" and len(args) == 2 and args[0].op == INT_SET and args[1].op == INT_SET:
-        return make(INT_SET, args[0].args + args[1].args)
-    if op in (EXT_SET, INT_SET):
+    # the connector's one object (a matcher passes its own string), so that it can be
+    # told by identity (see ``terms.CONNECTORS``)
+    connectors: dict = CONNECTORS  # (typed: the compiled ``get`` is the dict's own)
+    op = connectors.get(op, op)
+    if len(args) == 2:
+        a, b = args
+        if a is b and (
+            op is EXT_INTERSECTION
+            or op is INT_INTERSECTION
+            or op is CONJUNCTION
+            or op is DISJUNCTION
+        ):
+            return a
+        if op is INT_INTERSECTION and a.op is EXT_SET and b.op is EXT_SET:
+            return make(EXT_SET, a.args + b.args)
+        if op is EXT_INTERSECTION and a.op is INT_SET and b.op is INT_SET:
+            return make(INT_SET, a.args + b.args)
+    if op is EXT_SET or op is INT_SET:
         seen: list[Term] = []
         for a in args:
             if a not in seen:
@@ -328,7 +348,11 @@ def _root(p: Term) -> str:
 
 
 class RuleTable:
-    """Compiled rules, indexed by premise connectors."""
+    """Compiled rules, indexed by premise connectors.
+
+    Compiled, an extension type (rules.pxd): every premise pair asks it for its
+    conclusions, so its fields are read as C struct members and its methods called in C.
+    """
 
     def __init__(self, level: int, matchers: Sequence[Matcher]) -> None:
         """The rules of NAL ``level`` and below, each with its matcher from
@@ -505,47 +529,52 @@ Counts = dict[Term, int]
 def _count_statement_atoms(
     t: Term, counts: Counts, extensional: bool, ignore_structure: bool, spatial: bool
 ) -> None:
+    # (connectors by identity: see ``terms.CONNECTORS``)
     op = t.op
-    if op in (INHERITANCE, SIMILARITY):
-        sim = op == SIMILARITY
+    if op is INHERITANCE or op is SIMILARITY:
+        sim = op is SIMILARITY
         s, p = t.args
+        s_image = s.op is INT_IMAGE1 or s.op is INT_IMAGE2
+        p_image = p.op is EXT_IMAGE1 or p.op is EXT_IMAGE2
         if extensional or sim:
-            if s.op in ("\\1", "\\2"):
+            if s_image:
                 _count_statement_atoms(s.args[0], counts, extensional, True, spatial)
             else:
                 _count_statement_atoms(s, counts, extensional, True, spatial)
-            if p.op in ("/1", "/2"):
+            if p_image:
                 _count_statement_atoms(p.args[1], counts, extensional, True, spatial)
         if not extensional or sim:
-            if p.op in ("/1", "/2"):
+            if p_image:
                 _count_statement_atoms(p.args[0], counts, extensional, True, spatial)
             else:
                 _count_statement_atoms(p, counts, extensional, True, spatial)
-            if s.op in ("\\1", "\\2"):
+            if s_image:
                 _count_statement_atoms(s.args[1], counts, extensional, True, spatial)
     if ignore_structure or spatial:
-        if op in (EXT_SET, INT_SET) and len(t.args) > 1 and not spatial:
+        if (op is EXT_SET or op is INT_SET) and len(t.args) > 1 and not spatial:
             return
         for a in t.atoms():
-            if not a.is_var and not _is_copula_atom(a):
+            if not a.is_var:
                 counts[a] = counts.get(a, 0) + 1
-
-
-def _is_copula_atom(a: Term) -> bool:
-    return False
 
 
 def _count_hol(t: Term, counts: Counts, extensional: bool) -> None:
     op = t.op
-    if op == "!":
+    if op is NEGATION:
         _count_hol(t.args[0], counts, extensional)
         return
-    if op in ("&/", CONJUNCTION, TEMPORAL_IMPLICATION, IMPLICATION, EQUIVALENCE):
-        ext = extensional or op == "&/"
+    if (
+        op is SEQUENCE
+        or op is CONJUNCTION
+        or op is TEMPORAL_IMPLICATION
+        or op is IMPLICATION
+        or op is EQUIVALENCE
+    ):
+        ext = extensional or op is SEQUENCE
         _count_hol(t.args[0], counts, ext)
         _count_hol(t.args[1], counts, ext)
         return
-    _count_statement_atoms(t, counts, extensional, False, op == INT_SET)
+    _count_statement_atoms(t, counts, extensional, False, op is INT_SET)
 
 
 def _hol_counts(t: Term, extensional: bool) -> Counts:
@@ -628,7 +657,7 @@ def _twice(counts: Counts) -> bool:
 
 def introduce_conjunction_variables(t: Term, extensional: bool) -> Term | None:
     """ONA's dependent-variable introduction for ``&&`` conclusions."""
-    if t.op == CONJUNCTION:  # the counts of ``&&`` are those of its sides, added
+    if t.op is CONJUNCTION:  # the counts of ``&&`` are those of its sides, added
         counts = dict(_hol_counts(t.args[0], extensional))
         for a, v in _hol_counts(t.args[1], extensional).items():
             counts[a] = counts.get(a, 0) + v
@@ -678,7 +707,7 @@ _ITSELF: tuple[object, ...] = (object(),)
 def _variable_forms(t: Term) -> tuple[Term, ...]:
     op = t.op
     found: list[Term] = []
-    # (connectors by identity: see ``terms._CONNECTORS``)
+    # (connectors by identity: see ``terms.CONNECTORS``)
     if op is IMPLICATION or op is EQUIVALENCE or op is TEMPORAL_IMPLICATION:
         for ext in (True, False):
             v = introduce_implication_variables(t, ext)

@@ -165,7 +165,7 @@ def forget_concept(s: Reasoner, c: Concept) -> None:
                 d.pop(c, None)
     t = c.term
     op = t.op
-    if op is IMPLICATION or op is EQUIVALENCE:  # (by identity: ``terms._CONNECTORS``)
+    if op is IMPLICATION or op is EQUIVALENCE:  # (by identity: ``terms.CONNECTORS``)
         s.general_links.pop(t, None)
         for side in t.args:
             d2 = s.links_by_subject.get(side)

@@ -2,6 +2,8 @@
 # that the engine's functions read its fields as a struct, and the C signatures of its
 # small functions. state.py stays the only source of behaviour; see setup.py.
 
+from robocog.nars.memory cimport Memory
+
 cdef class Reasoner:
     cdef public object config
     cdef public object seed
@@ -12,7 +14,7 @@ cdef class Reasoner:
     cdef public object output
     cdef public dict operations
     cdef public object memory_dir
-    cdef public object memory
+    cdef public Memory memory
     cdef public long time
     cdef public long stamp_base
     cdef public double concept_threshold

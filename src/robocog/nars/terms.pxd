@@ -25,7 +25,7 @@ cdef class Term:
     cdef public object anticipated
     cdef public list keys
 
-    @cython.locals(out=list, level=list, nxt=list, x=Term, y=Term, a=Term, b=Term)
+    @cython.locals(out=list, level=list, nxt=list, x=Term, y=Term, a=Term, b=Term, simple=bint)
     cpdef tuple index_names(self)
     @cython.locals(out=list, level=list, nxt=list, t=Term, a=Term)
     cpdef list level_order_atoms(self)

@@ -43,12 +43,16 @@ EXT_INTERSECTION = "&"
 INT_INTERSECTION = "|"
 EXT_SET = "{}"
 INT_SET = "[]"
+EXT_IMAGE1 = "/1"
+EXT_IMAGE2 = "/2"
+INT_IMAGE1 = "\\1"
+INT_IMAGE2 = "\\2"
 
 #: each connector's one string object. A term's ``op`` is always this object (see
 #: ``_make_compound``), so a hot path may test a term's connector by identity
 #: (``t.op is IMPLICATION``, with the names above): compiled, that is one pointer
 #: comparison, where ``==`` of two different strings calls a string comparison.
-_CONNECTORS: dict[str, str] = {
+CONNECTORS: dict[str, str] = {
     c: c
     for c in (
         INHERITANCE,
@@ -65,10 +69,14 @@ _CONNECTORS: dict[str, str] = {
         INT_INTERSECTION,
         EXT_SET,
         INT_SET,
+        EXT_IMAGE1,
+        EXT_IMAGE2,
+        INT_IMAGE1,
+        INT_IMAGE2,
     )
 }
 for _c in sorted(STATEMENT_COPULAS | INFIX_OPS | UNARY_OPS | set(SETS)):
-    _CONNECTORS.setdefault(_c, _c)
+    CONNECTORS.setdefault(_c, _c)
 del _c
 
 _VAR_PREFIXES = "$#?"
@@ -177,8 +185,11 @@ class Term:
             a: Term
             b: Term
             x: Term
-            if len(args) == 2 and args[0].op is None and args[1].op is None:
-                a, b = args  # ``<a --> b>``: the most common shape, no walk needed
+            simple = False
+            if len(args) == 2:
+                a, b = args
+                simple = a.op is None and b.op is None
+            if simple:  # ``<a --> b>``: the most common shape, no walk needed
                 if a.is_var:
                     got = () if b.is_var else (b,)
                 elif b.is_var or a is b:
@@ -311,7 +322,7 @@ def _sweep() -> None:
                 for f in forms:
                     if type(f) is Term:  # (not the marker of a term that is its own form)
                         later.append(f)
-    forms = None
+    forms = f = None  # (the last dead term's forms, and its last form, held no longer)
     if later:
         # held by the table and this list alone, as the probe (looked at first) is
         table[_PROBE_KEY] = _probe()
@@ -432,7 +443,8 @@ def _make_compound(key: Key, op: str, args: Components) -> Term:
     t: Term = Term.__new__(Term)
     a: Term
     b: Term
-    op = _CONNECTORS.get(op, op)
+    connectors: dict = CONNECTORS  # (typed: the compiled ``get`` is the dict's own)
+    op = connectors.get(op, op)
     t.op = op
     t.name = None
     t.args = args
