@@ -371,6 +371,7 @@ class Memory:
             heads.append((_usefulness(n, ls[0], now1), n, 0))
         heapify(heads)
         chosen: list[tuple[float, int, Concept]] = []
+        taken: list[tuple[float, int]] = []  # (usefulness, use count) of each group
         c: Concept
         last_key = -1.0
         while heads:
@@ -381,6 +382,7 @@ class Memory:
             g = groups[(n, ls[i])]
             for c in g:
                 chosen.append((key, c.id, c))
+            taken.append((key, n))
             last_key = key
             i += 1
             if i < len(ls):
@@ -390,6 +392,22 @@ class Memory:
         # ids grow with the order concepts were made in, which is the dict's order
         chosen.sort()
         victims = [c for _, _, c in chosen[:batch]]
+        # The groups less useful than the last one taken were fewer than the batch, so
+        # all their concepts go: the groups are dropped whole here, the oldest of each
+        # use count, instead of one concept at a time by ``_remove_all``.
+        whole: dict[int, int] = {}
+        for key, n in taken:
+            if key != last_key:
+                whole[n] = whole.get(n, 0) + 1
+        for n, k in whole.items():
+            ls = lasts[n]
+            for last in ls[:k]:
+                for c in groups.pop((n, last)):
+                    c.filed = None  # (no group to leave)
+            if k == len(ls):
+                del lasts[n]
+            else:
+                del ls[:k]
         self._remove_all(victims)
         self.evictions += len(victims)
 
