@@ -3,7 +3,7 @@
 
 cimport cython
 
-from robocog.nars.terms cimport Term
+from robocog.nars.terms cimport Term, names_repeat
 
 @cython.locals(comp=Term, c=Term, s=Term, p=Term)
 cpdef bint hol_component_invalid(Term t)

@@ -4,7 +4,7 @@
 
 cimport cython
 
-from robocog.nars.terms cimport Term, compound, names_repeat, substitute
+from robocog.nars.terms cimport Term, compound, substitute
 from robocog.nars.truth cimport Truth
 from robocog.nars.filters cimport hol_component_invalid
 from robocog.nars cimport truth as tf

@@ -273,7 +273,9 @@ def make(op: str, args: Components) -> Term:
 
 
 #: connectors whose terms ``make`` may reduce; every other one is a plain ``compound``
-REDUCED_OPS = frozenset({"&", "|", CONJUNCTION, DISJUNCTION, EXT_SET, INT_SET})
+REDUCED_OPS = frozenset(
+    {EXT_INTERSECTION, INT_INTERSECTION, CONJUNCTION, DISJUNCTION, EXT_SET, INT_SET}
+)
 
 
 def build(p: Term, b: dict[Term, Term]) -> Term:

@@ -251,10 +251,10 @@ F_IMAGE_ARGUMENT = 16
 F_IS_IMAGE = 32
 #: the bits a term does not pass on to the terms containing it
 _OWN = F_IMAGE_ARGUMENT | F_IS_IMAGE
-_IMPS = ("==>", "<=>")
-_JUNCTIONS = ("&&", "||")
-_COMPOSED_OPS = ("-", "~", "&", "|")
-_IMAGE_OPS = ("/1", "/2", "\\1", "\\2")
+_IMPS = (IMPLICATION, EQUIVALENCE)
+_JUNCTIONS = (CONJUNCTION, DISJUNCTION)
+_COMPOSED_OPS = ("-", "~", EXT_INTERSECTION, INT_INTERSECTION)
+_IMAGE_OPS = (EXT_IMAGE1, EXT_IMAGE2, INT_IMAGE1, INT_IMAGE2)
 #: what ``_make_compound`` records for a connector: a counter to bump (negative codes)
 #: or the flag bit to set
 _K_IMP = -1
@@ -264,7 +264,7 @@ _K_SET = -4  # nothing to record, but sets count more slots (see ``_make_compoun
 _OP_KINDS: dict[str, int] = {
     **dict.fromkeys(SETS, _K_SET),
     **dict.fromkeys(_IMPS, _K_IMP),
-    "=/>": _K_TEMP,
+    TEMPORAL_IMPLICATION: _K_TEMP,
     **dict.fromkeys(_JUNCTIONS, _K_JUNCTION),
     **dict.fromkeys(_COMPOSED_OPS, F_COMPOSED),
     **dict.fromkeys(_IMAGE_OPS, F_IMAGE),
