@@ -17,6 +17,15 @@ in one of the paper's two results, or in neither:
 
 The report gives the frequencies, route plots in the manner of Figs. 10-11, and the
 convergence check of Section 4 (:mod:`robocog.experiments.convergence`).
+
+``--world mujoco`` runs the same plans on the physical room
+(:class:`~robocog.worlds.mujoco_room.MujocoRoom`: a camera head whose images an SVM
+reads, ultrasonic cones, a body that catches on jambs). Nothing is drawn there but the
+start pose, the door's angle, a wheel imbalance and the sensors' noise, and the runs are
+counted in three outcomes (:data:`PHYSICAL_OUTCOMES`): ``left the room``; ``opposite
+door``: the stop conditions held away from the door leaf while the area the SVM was
+surest showed a door was, in the renderer's segmentation, the opposite room's door
+(the paper's second result); ``other``.
 """
 
 from __future__ import annotations
@@ -39,6 +48,8 @@ from robocog.robot.protocols import Mind
 from robocog.worlds.room import RoomConfig, RoomWorld
 
 MINDS = ("bdi", "reference")
+WORLDS = ("2d", "mujoco")
+PHYSICAL_OUTCOMES = ("left the room", "opposite door", "other")
 OUTCOMES = (
     "exit found",
     "opposite door mistaken",
@@ -46,6 +57,9 @@ OUTCOMES = (
     "exit not found",
     "door not reached",
 )
+#: in the physical room the robot may drive through the doorway before the stop
+#: conditions ever hold (heading for the opposite door, seen through it)
+LEFT_EARLY = "left looking for the door"
 
 
 @dataclass
@@ -66,6 +80,16 @@ class RunResult:
     door_steps: list[tuple[float, float]] = field(default_factory=list)
     route: list[tuple[float, float, str]] = field(default_factory=list)
     marks: list[tuple[float, float, str]] = field(default_factory=list)
+    world: str = "2d"
+    door_angle: float | None = None
+    wall_seconds: float = 0.0
+
+    @property
+    def physical_outcome(self) -> str:
+        """The three outcomes of the physical room: the mistake first, then leaving."""
+        if self.outcome == "opposite door mistaken" and self.door_stop_source == "opposite_door":
+            return "opposite door"
+        return "left the room" if self.exited else "other"
 
 
 #: this experiment's mind names -> the registry's
@@ -87,6 +111,21 @@ def build_mind(name: str) -> tuple[Mind, QboPerception]:
     return mind, mind.perception  # type: ignore[attr-defined]
 
 
+def make_world(kind: str, seed: int, config: RoomConfig | None = None) -> Any:
+    """The 2D room (``2d``) or the physical one (``mujoco``, needs the physics extra)."""
+    if kind == "2d":
+        return RoomWorld(seed, config)
+    if kind == "mujoco":
+        try:
+            from robocog.worlds.mujoco_room import MujocoRoom
+        except ImportError as exc:
+            raise MindUnavailable(
+                f"the physical room needs the physics extra (pip install robocog[physics]): {exc}"
+            ) from exc
+        return MujocoRoom(seed)
+    raise ValueError(f"unknown world {kind!r}")
+
+
 def run_once(
     seed: int,
     mind_name: str,
@@ -94,10 +133,14 @@ def run_once(
     max_commands: int = 400,
     keep_route: bool = True,
     watch: Callable[..., Any] | None = None,
+    world_kind: str = "2d",
 ) -> RunResult:
     """Run one mind on one seeded room until it leaves, falls idle or runs out of budget
     (``watch(world, mind, loop)`` returns a hook called after each cycle: the inspector's)."""
-    world = RoomWorld(seed, config)
+    import time
+
+    started = time.perf_counter()
+    world = make_world(world_kind, seed, config)
     mind, perception = build_mind(mind_name)
     loop = Loop(world, mind)
     on_step = watch(world, mind, loop) if watch else None
@@ -132,7 +175,9 @@ def run_once(
             world.mark("door recognised" if stop_source else "stop")
             world.mark("ultrasonic")
     left = world.exited() or (idle >= 3 and world.at_entrance())
-    if stop is None:
+    if stop is None and world_kind == "mujoco" and world.exited():
+        outcome = "left looking for the door"
+    elif stop is None:
         outcome = "door not reached"
     elif correct:
         outcome = "exit found" if left else "exit not found"
@@ -141,7 +186,7 @@ def run_once(
     else:
         outcome = "stopped elsewhere"
     route = [(p.x, p.y, p.phase) for p in world.trajectory] if keep_route else []
-    return RunResult(
+    result = RunResult(
         seed=seed,
         mind=mind_name,
         outcome=outcome,
@@ -156,7 +201,13 @@ def run_once(
         sim_seconds=world.time(),
         route=route,
         marks=list(world.marks),
+        world=world_kind,
+        door_angle=getattr(world, "door_angle", None),
+        wall_seconds=time.perf_counter() - started,
     )
+    if hasattr(world, "close"):
+        world.close()
+    return result
 
 
 def summarise(results: list[RunResult]) -> dict[str, Any]:
@@ -168,6 +219,20 @@ def summarise(results: list[RunResult]) -> dict[str, Any]:
     def per_run(total: float) -> float:
         return total / n if n else 0.0
 
+    physical = [r for r in results if r.world == "mujoco"]
+    extra: dict[str, Any] = {}
+    if physical:
+        three = Counter(r.physical_outcome for r in physical)
+        extra = {
+            "outcomes": {o: three.get(o, 0) for o in PHYSICAL_OUTCOMES},
+            "detailed_outcomes": {o: counts.get(o, 0) for o in (*OUTCOMES, LEFT_EARLY)},
+            "left_room": sum(r.exited for r in results),
+            "success_rate": per_run(sum(r.exited for r in results)),
+            "sim_seconds": sum(r.sim_seconds for r in results),
+            "wall_seconds": sum(r.wall_seconds for r in results),
+            "real_time_factor": sum(r.sim_seconds for r in results)
+            / max(1e-9, sum(r.wall_seconds for r in results)),
+        }
     return {
         "runs": n,
         "success_rate": per_run(sum(r.left_room for r in results)),
@@ -178,7 +243,7 @@ def summarise(results: list[RunResult]) -> dict[str, Any]:
         "runs_seeing_opposite_door": sum(r.opposite_looks > 0 for r in results),
         "mean_looks": per_run(sum(r.looks for r in results)),
         "mean_sim_seconds": per_run(sum(r.sim_seconds for r in results)),
-    }
+    } | extra
 
 
 def front_of_door(config: RoomConfig | None = None, standoff: float = 0.45) -> tuple[float, float]:
@@ -238,7 +303,16 @@ def configure(parser: argparse.ArgumentParser) -> None:
     """Arguments of ``robocog experiment room-exit``."""
     add_run_arguments(parser, 40, "runs per mind (default 40)", "reports/room-exit")
     parser.add_argument(
-        "--mind", choices=(*MINDS, "both"), default="both", help="which mind to run"
+        "--mind",
+        choices=(*MINDS, "both"),
+        default=None,
+        help="which mind to run (default: both in the 2D room, bdi in the physical one)",
+    )
+    parser.add_argument(
+        "--world",
+        choices=WORLDS,
+        default="2d",
+        help="the 2D room (default) or the physical one in MuJoCo (physics extra)",
     )
     parser.add_argument("--max-commands", type=int, default=400, help="budget of one run")
     parser.add_argument("--obstacles", type=int, default=0, help="boxes placed in the room")
@@ -257,7 +331,11 @@ def run(args: argparse.Namespace) -> int:
 
     console = Console()
     config = RoomConfig(obstacles=args.obstacles)
-    names = list(MINDS) if args.mind == "both" else [args.mind]
+    world_kind = getattr(args, "world", "2d")
+    mind = args.mind or ("both" if world_kind == "2d" else "bdi")
+    names = list(MINDS) if mind == "both" else [mind]
+    if world_kind == "mujoco" and args.obstacles:
+        console.print("[yellow]--obstacles: the physical room has none; ignored[/yellow]")
     results: dict[str, list[RunResult]] = {}
     unavailable: dict[str, str] = {}
     from robocog.inspector.cli import session
@@ -273,7 +351,14 @@ def run(args: argparse.Namespace) -> int:
             try:
                 for i in range(args.runs):
                     runs.append(
-                        run_once(args.seed + i, name, config, args.max_commands, watch=watch)
+                        run_once(
+                            args.seed + i,
+                            name,
+                            config,
+                            args.max_commands,
+                            watch=watch,
+                            world_kind=world_kind,
+                        )
                     )
                     progress.advance(task)
             except MindUnavailable as exc:
@@ -290,11 +375,11 @@ def run(args: argparse.Namespace) -> int:
     target = front_of_door(config)
     room_steps = {name: room_d_per_step(runs, target) for name, runs in results.items()}
 
-    table = Table(title=f"room-exit, {args.runs} runs per mind, seeds {args.seed}..")
+    table = Table(title=f"room-exit ({world_kind}), {args.runs} runs per mind, seeds {args.seed}..")
     table.add_column("mind")
-    for o in OUTCOMES:
+    for o in PHYSICAL_OUTCOMES if world_kind == "mujoco" else OUTCOMES:
         table.add_column(o, justify="right")
-    table.add_column("left the room", justify="right")
+    table.add_column("left at all" if world_kind == "mujoco" else "left the room", justify="right")
     for name, s in summaries.items():
         table.add_row(
             name,
@@ -331,14 +416,35 @@ def run(args: argparse.Namespace) -> int:
     plots: dict[str, str] = {}
     if not args.no_plots:
         plots = write_plots(results, conv, report_dir, room_steps)
+    vision_scores: list[str] = []
+    if world_kind == "mujoco" and results:
+        from robocog.worlds.physics.room_vision import shared_classifier
+
+        vision_scores = [s.line() for s in shared_classifier().scores]
+        for line in vision_scores:
+            console.print(f"SVM {line}")
+        for name, s in summaries.items():
+            console.print(
+                f"{name}: real-time factor {s['real_time_factor']:.1f} "
+                f"({s['sim_seconds']:.0f} s simulated in {s['wall_seconds']:.0f} s)"
+            )
     write_report(
-        report_dir / "room_exit.md", args, summaries, unavailable, conv, plots, room_steps, config
+        report_dir / "room_exit.md",
+        args,
+        summaries,
+        unavailable,
+        conv,
+        plots,
+        room_steps,
+        config,
+        vision_scores,
     )
     console.print(f"report: {report_dir / 'room_exit.md'}")
     if args.json:
         payload = {
             "experiment": "room-exit",
             **provenance(args, config),
+            "world": world_kind,
             "seed": args.seed,
             "runs": args.runs,
             "minds": summaries,
@@ -360,6 +466,10 @@ def run(args: argparse.Namespace) -> int:
                 for name, runs in results.items()
             },
         }
+        if world_kind == "mujoco" and summaries:
+            first = next(iter(summaries.values()))
+            payload["outcomes"] = first["outcomes"]
+            payload["svm"] = vision_scores
         write_json(Path(args.json), payload)
     return 0 if results else 1
 
@@ -379,6 +489,29 @@ def _draw_room(ax: Any, world: RoomWorld) -> None:
             ax.plot([seg.ax, seg.bx], [seg.ay, seg.by], color="dimgrey", lw=2)
 
 
+def _physical_view(result: RunResult) -> Any:
+    """The physical room's plan as :func:`_draw_room` reads it, the door at its angle."""
+    from types import SimpleNamespace
+
+    from robocog.worlds.physics.room_scene import RoomPlan
+    from robocog.worlds.room import Target
+    from robocog.worlds.room_geometry import Segment
+
+    plan = RoomPlan()
+    q = result.door_angle or math.radians(80.0)
+    hx, hy = plan.doorway_x + plan.doorway_width, plan.depth
+    w = plan.doorway_width
+    leaf = Segment(hx, hy, hx - w * math.cos(q), hy - w * math.sin(q))
+    o0 = plan.opposite_door_x
+    opposite = Segment(o0, plan.top, o0 + w, plan.top)
+    return SimpleNamespace(
+        walls=[Segment(*s) for s in plan.wall_segments()],
+        door=Target("door", "door", leaf, 0.0, 1.0),
+        targets=[None, Target("opposite_door", "door", opposite, 0.0, 1.0)],
+        boxes=[],
+    )
+
+
 def plot_route(result: RunResult, config: RoomConfig, path: Path, title: str) -> None:
     """A route in the manner of Figs. 10-11: coloured by phase, circles at the stop."""
     import matplotlib
@@ -387,7 +520,7 @@ def plot_route(result: RunResult, config: RoomConfig, path: Path, title: str) ->
     import matplotlib.pyplot as plt
 
     fig, ax = plt.subplots(figsize=(6, 5.5))
-    _draw_room(ax, RoomWorld(result.seed, config))
+    _draw_room(ax, _physical_view(result) if result.world == "mujoco" else RoomWorld(0, config))
     pts = result.route
     for a, b in zip(pts, pts[1:], strict=False):
         ax.plot([a[0], b[0]], [a[1], b[1]], color=PHASE_COLOURS.get(b[2], "grey"), lw=1.8)
@@ -454,8 +587,17 @@ def write_plots(
     plots: dict[str, str] = {}
     config = RoomConfig()
     for name, runs in results.items():
-        for outcome, tag in (("exit found", "exit"), ("opposite door mistaken", "mistaken")):
-            example = next((r for r in runs if r.outcome == outcome), None)
+        physical = any(r.world == "mujoco" for r in runs)
+        for outcome, tag in (
+            ("left the room" if physical else "exit found", "exit"),
+            ("opposite door" if physical else "opposite door mistaken", "mistaken"),
+        ):
+            example = next(
+                (r for r in runs if (r.physical_outcome if physical else r.outcome) == outcome),
+                None,
+            )
+            if physical and outcome == "left the room":  # prefer the paper's route
+                example = next((r for r in runs if r.exited and r.outcome == "exit found"), example)
             if example is None:
                 continue
             file = f"route_{name}_{tag}.png"
@@ -468,6 +610,12 @@ def write_plots(
 
 def _outcome_cells(summary: dict[str, Any]) -> list[str]:
     """One mind's outcome counts with their frequencies, as the table and report show them."""
+    if "detailed_outcomes" in summary:  # the physical room's three outcomes
+        n = max(1, summary["runs"])
+        return [
+            f"{summary['outcomes'][o]} ({summary['outcomes'][o] / n:.0%})"
+            for o in PHYSICAL_OUTCOMES
+        ]
     return [f"{summary['outcomes'][o]} ({summary['frequencies'][o]:.0%})" for o in OUTCOMES]
 
 
@@ -480,17 +628,22 @@ def write_report(
     plots: dict[str, str],
     room_steps: dict[str, list[RoomStep]] | None = None,
     config: RoomConfig | None = None,
+    vision_scores: list[str] | None = None,
 ) -> None:
     """The markdown report."""
+    physical = any("detailed_outcomes" in s for s in summaries.values())
+    columns = PHYSICAL_OUTCOMES if physical else OUTCOMES
     lines = [
-        "# Room exit (Fujita et al.)",
+        "# Room exit (Fujita et al.)" + (", the physical room" if physical else ""),
         "",
         f"{args.runs} seeded runs per mind from seed {args.seed}; the plans of Figs. 6-8 "
         "unchanged. `bdi` runs them in the AgentSpeak interpreter, `reference` is the same "
         "plans transcribed to Python.",
         "",
-        "| mind | " + " | ".join(OUTCOMES) + " | left the room |",
-        "|" + "---|" * (len(OUTCOMES) + 2),
+        "| mind | "
+        + " | ".join(columns)
+        + f" | {'left at all' if physical else 'left the room'} |",
+        "|" + "---|" * (len(columns) + 2),
     ]
     for name, s in summaries.items():
         cells = _outcome_cells(s)
@@ -505,14 +658,25 @@ def write_report(
         "",
     ]
     for name, s in summaries.items():
+        if physical:
+            detail = ", ".join(f"{k}: {v}" for k, v in s["detailed_outcomes"].items())
+            lines.append(
+                f"- `{name}`: the 2D room's finer outcomes: {detail}; real-time factor "
+                f"{s['real_time_factor']:.1f}."
+            )
         lines.append(
             f"- `{name}`: in {s['runs_seeing_opposite_door']} runs the detector's best "
             f"'door' was at least once the opposite room's door; of the "
-            f"{s['outcomes']['opposite door mistaken']} mistaken runs, "
+            f"{s.get('detailed_outcomes', s['outcomes'])['opposite door mistaken']} mistaken "
+            "runs, "
             f"{s['mistaken_after_seeing_opposite_door']} had headed for it, and "
             f"{s['left_after_mistake']} still left the room."
         )
     lines.append("")
+    if vision_scores:
+        lines += ["SVM on held-out renders:", ""]
+        lines += [f"- {line}" for line in vision_scores]
+        lines.append("")
     for key, file in plots.items():
         if key != "convergence":
             lines += [f"![{key}]({file})", ""]

@@ -1,0 +1,448 @@
+"""The Q.bo's room (Fujita et al., Fig. 3) in physics: MuJoCo, a camera head, an SVM, sonar.
+
+:class:`MujocoRoom` is a ``Body`` like :class:`~robocog.worlds.room.RoomWorld` and takes
+the same commands, so the same minds (:mod:`robocog.minds.qbo`) and the same plans run on
+it; but nothing is drawn by chance from geometry:
+
+* ``Look("around")`` turns the head (a position servo on the pan joint) to +55, 0 and
+  -55 degrees, renders the head camera at each, splits each image into 3 x 2 areas and
+  asks the SVMs of :mod:`~robocog.worlds.physics.room_vision` whether each shows a door
+  or the entry. Areas whose certainty passes the threshold become ``Detection``
+  percepts (bearing of the area's column, relative to the body) until the robot moves.
+* ``Forward(d)`` drives the base at 0.15 m/s. It stops when an ultrasonic sensor reads
+  under the stop distance (``failed: obstacle ahead``) or when the body stops making
+  way (``failed: bumped``): a jamb between the two sensors' beams catches the body
+  without either sensor seeing it.
+* ``Turn(a)`` turns in place (``failed: blocked`` when the body cannot turn).
+* Percepts every cycle: ``Pose`` (odometry), ``Range("us_left")``, ``Range("us_right")``
+  (each the nearest echo among the rays that sample its cone, with noise) and
+  ``Obstacle``.
+
+What varies between seeds: the start pose, how far the door stands open, a small
+imbalance between the wheels (the path curves a little), the sonar's noise and the
+camera's pixel noise. The world keeps a trajectory, marks and the ground truth behind
+each look (which door the best "door" area showed, from the renderer's segmentation)
+for the experiment's reports; the mind never sees these.
+"""
+
+from __future__ import annotations
+
+import math
+import random
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from robocog.robot.commands import Command, Forward, Look, Outcome, Turn
+from robocog.robot.percepts import Detection, Obstacle, Percept, Pose, Range
+from robocog.worlds.physics.gl import choose_gl
+from robocog.worlds.room import Seen, Target, TrajectoryPoint
+from robocog.worlds.room_geometry import Segment, point_segment_distance, wrap
+
+choose_gl()
+
+import mujoco  # noqa: E402
+
+from robocog.worlds.physics import room_vision as vision  # noqa: E402
+from robocog.worlds.physics.room_scene import (  # noqa: E402
+    BODY_RADIUS,
+    SONAR_OFFSET,
+    RoomPlan,
+    scene_xml,
+)
+
+SONARS = (("us_left", 1.0), ("us_right", -1.0))
+
+
+@dataclass(frozen=True)
+class MujocoRoomConfig:
+    """Figures of the physical room and robot (metres, degrees where named, seconds)."""
+
+    plan: RoomPlan = field(default_factory=RoomPlan)
+    door_open_degrees: tuple[float, float] = (70.0, 90.0)
+    start_x: float = 0.8
+    start_y: tuple[float, float] = (1.2, 2.4)
+    start_heading_sd_degrees: float = 5.0
+    speed: float = 0.15
+    turn_speed: float = 0.6
+    control_period: float = 0.05
+    sonar_range: float = 1.5
+    sonar_angle_degrees: float = 10.0
+    sonar_cone_degrees: float = 12.0
+    sonar_rays: int = 5
+    sonar_noise: float = 0.01
+    stop_distance: float = 0.25
+    obstacle_range: float = 0.45
+    threshold: float = 0.5
+    stall_seconds: float = 1.0
+    stall_progress: float = 0.02
+    wheel_imbalance_sd: float = 0.03
+    heading_bias_sd_degrees: float = 1.0
+    svm_seed: int = 0
+    svm_images: int = vision.TRAIN_IMAGES
+
+
+class MujocoRoom:
+    """The physical room, corridor and Q.bo; implements ``Body``."""
+
+    def __init__(
+        self,
+        seed: int = 0,
+        config: MujocoRoomConfig | None = None,
+        classifier: vision.AreaClassifier | None = None,
+        start: tuple[float, float, float] | None = None,
+        door_open_degrees: float | None = None,
+    ) -> None:
+        self.config = c = config or MujocoRoomConfig()
+        self.seed = seed
+        self.rng = random.Random(seed)
+        self.plan = c.plan
+        self.model = mujoco.MjModel.from_xml_string(scene_xml(c.plan))
+        self.data = mujoco.MjData(self.model)
+        self.classifier = classifier or vision.shared_classifier(c.svm_seed, c.svm_images)
+        self.camera = vision.HeadCamera(self.model)
+        self._q = {j: self._adr(j) for j in ("base_x", "base_y", "base_yaw", "head_pan")}
+        self._v = {j: self._dof(j) for j in ("base_x", "base_y", "base_yaw", "head_pan")}
+        self._door_q = self._adr("door_hinge")
+        self._act = {
+            n: mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_ACTUATOR, n)
+            for n in ("drive_x", "drive_y", "drive_yaw", "pan")
+        }
+        self._robot = mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_BODY, "qbo")
+        self._names = [
+            mujoco.mj_id2name(self.model, mujoco.mjtObj.mjOBJ_GEOM, g) or ""
+            for g in range(self.model.ngeom)
+        ]
+        self.door_angle = math.radians(
+            door_open_degrees
+            if door_open_degrees is not None
+            else self.rng.uniform(*c.door_open_degrees)
+        )
+        if start is None:
+            start = (
+                c.start_x,
+                self.rng.uniform(*c.start_y),
+                self.rng.gauss(0.0, math.radians(c.start_heading_sd_degrees)),
+            )
+        self.imbalance = self.rng.gauss(0.0, c.wheel_imbalance_sd)
+        self.heading_bias = self.rng.gauss(0.0, math.radians(c.heading_bias_sd_degrees))
+        vision.pose_robot(self.model, self.data, *start, 0.0, self.door_angle)
+        self.walls = [Segment(*s) for s in c.plan.wall_segments()]
+        self.boxes: list[list[Segment]] = []
+        self.phase = ""
+        self.trajectory: list[TrajectoryPoint] = []
+        self.marks: list[tuple[float, float, str]] = []
+        self.detections: list[Detection] = []
+        self.last_seen: dict[str, Seen] = {}
+        self.commands = 0
+        self.looks = 0
+        self.physics_steps = 0
+        self._record()
+
+    # -- model access -----------------------------------------------------------------
+
+    def _adr(self, joint: str) -> int:
+        j = mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_JOINT, joint)
+        return int(self.model.jnt_qposadr[j])
+
+    def _dof(self, joint: str) -> int:
+        j = mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_JOINT, joint)
+        return int(self.model.jnt_dofadr[j])
+
+    @property
+    def x(self) -> float:
+        """The base's true x (for reports; the mind reads odometry)."""
+        return float(self.data.qpos[self._q["base_x"]])
+
+    @property
+    def y(self) -> float:
+        """The base's true y."""
+        return float(self.data.qpos[self._q["base_y"]])
+
+    @property
+    def theta(self) -> float:
+        """The base's true heading, radians in (-pi, pi]."""
+        return wrap(float(self.data.qpos[self._q["base_yaw"]]))
+
+    @property
+    def pan(self) -> float:
+        """The head's pan, radians."""
+        return float(self.data.qpos[self._q["head_pan"]])
+
+    # -- Body ------------------------------------------------------------------------
+
+    def time(self) -> float:
+        """Simulated seconds since the start."""
+        return float(self.data.time)
+
+    def percepts(self) -> list[Percept]:
+        """Odometry, both ultrasonic sensors, the obstacle ahead, the last look's areas."""
+        c = self.config
+        left, right = self.sonars()
+        nearest = min(left, right)
+        if left < c.obstacle_range and right < c.obstacle_range:
+            sector = "front"
+        elif left < c.obstacle_range:
+            sector = "left"
+        elif right < c.obstacle_range:
+            sector = "right"
+        else:
+            sector = "none"
+        heading = wrap(self.theta + self.heading_bias)
+        out: list[Percept] = [
+            Pose(self.x, self.y, heading, None),
+            Range("us_left", left),
+            Range("us_right", right),
+            Obstacle(sector, nearest),  # type: ignore[arg-type]
+        ]
+        out.extend(self.detections)
+        return out
+
+    def execute(self, command: Command) -> Outcome:
+        """Carry out a Look, Forward or Turn; any other command is refused."""
+        self.commands += 1
+        if isinstance(command, Look):
+            outcome = self._look(command.direction)
+        elif isinstance(command, Forward):
+            outcome = self._forward(command.distance)
+        elif isinstance(command, Turn):
+            outcome = self._turn(command.angle)
+        else:
+            outcome = Outcome.failure(f"the room robot cannot {type(command).__name__}")
+        self._record()
+        return outcome
+
+    def close(self) -> None:
+        """Free the camera's GL context."""
+        self.camera.close()
+
+    # -- motion ----------------------------------------------------------------------
+
+    def _drive(self, v: float, w: float, pan: float | None = None) -> None:
+        """One control period with body speed ``v`` (m/s) and turn rate ``w`` (rad/s)."""
+        th = self.theta
+        ctrl = self.data.ctrl
+        ctrl[self._act["drive_x"]] = v * math.cos(th)
+        ctrl[self._act["drive_y"]] = v * math.sin(th)
+        ctrl[self._act["drive_yaw"]] = w
+        if pan is not None:
+            ctrl[self._act["pan"]] = pan
+        n = max(1, round(self.config.control_period / self.model.opt.timestep))
+        mujoco.mj_step(self.model, self.data, nstep=n)
+        self.physics_steps += n
+
+    def _settle(self, seconds: float = 0.2) -> None:
+        for _ in range(max(1, round(seconds / self.config.control_period))):
+            self._drive(0.0, 0.0)
+
+    def _forward(self, distance: float) -> Outcome:
+        c = self.config
+        sign = 1.0 if distance >= 0 else -1.0
+        total = abs(distance)
+        x0, y0 = self.x, self.y
+        limit = self.time() + total / c.speed * 1.5 + 2.0
+        window: list[tuple[float, float, float]] = []
+        outcome = Outcome.success()
+        next_sample = self.time() + 0.5
+        while True:
+            travelled = math.hypot(self.x - x0, self.y - y0)
+            if travelled >= total - 0.005:
+                break
+            if sign > 0 and min(self.sonars()) < c.stop_distance:
+                outcome = Outcome.failure("obstacle ahead")
+                break
+            t = self.time()
+            window.append((t, self.x, self.y))
+            while window and window[0][0] < t - c.stall_seconds:
+                window.pop(0)
+            if (
+                t - window[0][0] >= c.stall_seconds * 0.95
+                and math.hypot(self.x - window[0][1], self.y - window[0][2]) < c.stall_progress
+            ):
+                outcome = Outcome.failure("bumped")
+                break
+            if t > limit:
+                outcome = Outcome.failure("too slow")
+                break
+            v = sign * min(c.speed, max(0.05, (total - travelled) * 2.0))
+            self._drive(v, self.imbalance * v / 0.3)
+            if self.time() >= next_sample:
+                next_sample += 0.5
+                self._record()
+        self._settle()
+        self.detections = []
+        return outcome
+
+    def _turn(self, angle: float) -> Outcome:
+        c = self.config
+        target = float(self.data.qpos[self._q["base_yaw"]]) + angle
+        limit = self.time() + abs(angle) / c.turn_speed * 2.0 + 2.0
+        outcome = Outcome.success()
+        while True:
+            remaining = target - float(self.data.qpos[self._q["base_yaw"]])
+            if abs(remaining) < math.radians(0.5):
+                break
+            if self.time() > limit:
+                outcome = Outcome.failure("blocked")
+                break
+            w = max(-c.turn_speed, min(c.turn_speed, 3.0 * remaining))
+            if abs(w) < 0.08:
+                w = math.copysign(0.08, remaining)
+            self._drive(0.0, w)
+        self._settle(0.1)
+        self.detections = []
+        return outcome
+
+    # -- sensors ---------------------------------------------------------------------
+
+    def _sonar_rays(self, side: float) -> list[tuple[np.ndarray, np.ndarray]]:
+        """Origins and unit directions of the rays sampling one sensor's cone."""
+        c = self.config
+        site = mujoco.mj_name2id(
+            self.model, mujoco.mjtObj.mjOBJ_SITE, "sonar_left" if side > 0 else "sonar_right"
+        )
+        origin = self.data.site_xpos[site].copy()
+        axis = self.theta + side * math.radians(c.sonar_angle_degrees)
+        half = math.radians(c.sonar_cone_degrees)
+        n = max(1, c.sonar_rays)
+        rays = []
+        for k in range(n):
+            a = axis + (half * (2 * k / (n - 1) - 1) if n > 1 else 0.0)
+            rays.append((origin, np.array([math.cos(a), math.sin(a), 0.0])))
+        return rays
+
+    def _cast(self, origin: np.ndarray, direction: np.ndarray) -> tuple[float, int]:
+        geom = np.zeros(1, dtype=np.int32)
+        groups = np.array([1, 0, 0, 0, 0, 0], dtype=np.uint8)
+        d = mujoco.mj_ray(self.model, self.data, origin, direction, groups, 1, self._robot, geom)
+        return (float(d) if d >= 0 else math.inf), int(geom[0])
+
+    def sonars(self, noise: bool = True) -> tuple[float, float]:
+        """Left and right ultrasonic readings: the nearest echo within each cone."""
+        c = self.config
+        out = []
+        for _, side in SONARS:
+            best = c.sonar_range
+            for origin, direction in self._sonar_rays(side):
+                best = min(best, self._cast(origin, direction)[0])
+            if noise:
+                best = min(c.sonar_range, max(0.0, best + self.rng.gauss(0.0, c.sonar_noise)))
+            out.append(best)
+        return out[0], out[1]
+
+    def facing(self) -> str:
+        """What the ultrasonic beams meet first: ``door``, ``jamb``, ``wall`` or ``nothing``."""
+        best, what = self.config.sonar_range, "nothing"
+        for _, side in SONARS:
+            for origin, direction in self._sonar_rays(side):
+                d, geom = self._cast(origin, direction)
+                if d < best:
+                    best = d
+                    name = self._names[geom]
+                    if name.startswith("door_"):
+                        what = "door"
+                    elif name.startswith("jamb"):
+                        what = "jamb"
+                    elif name.startswith("opposite"):
+                        what = "opposite door"
+                    else:
+                        what = "wall"
+        return what
+
+    def _look(self, direction: str) -> Outcome:
+        pans = dict(zip(("left", "front", "right"), vision.PANS, strict=True))
+        if direction == "around":
+            images = list(pans)
+        elif direction in pans:
+            images = [direction]
+        else:
+            return Outcome.failure(f"unknown look direction {direction!r}")
+        self.looks += 1
+        self.detections = []
+        self.last_seen = {}
+        for image_name in images:
+            self._pan_to(math.radians(pans[image_name]))
+            image = self.camera.render(self.data, self.rng)
+            feats = np.array([vision.area_features(a) for a in vision.split_areas(image)])
+            certainty = self.classifier.certainty(feats)
+            coverage = self.camera.coverage(self.camera.segment(self.data))
+            pan_deg = math.degrees(self.pan)
+            for i in range(vision.ROWS * vision.COLUMNS):
+                row, col = divmod(i, vision.COLUMNS)
+                bearing = vision.area_bearing(pan_deg, col)
+                for label in vision.TARGETS:
+                    value = float(certainty[label][i])
+                    if value <= self.config.threshold:
+                        continue
+                    self.detections.append(
+                        Detection(label, bearing, 0.0, value, f"{image_name}:{row}:{col}")
+                    )
+                    best = self.last_seen.get(label)
+                    if best is None or value > best.certainty:
+                        source = self._source(label, coverage[i])
+                        self.last_seen[label] = Seen(label, source, value, bearing)
+        self._pan_to(0.0)
+        return Outcome.success()
+
+    @staticmethod
+    def _source(label: str, coverage: np.ndarray) -> str:
+        """What an area really showed, from the segmentation: which door, or the doorway."""
+        if label == "door":
+            if coverage[0] <= 0.0:
+                return "noise"
+            return "door" if coverage[2] >= coverage[0] / 2 else "opposite_door"
+        return "doorway" if coverage[1] > 0.0 else "noise"
+
+    def _pan_to(self, target: float, tolerance: float = math.radians(1.0)) -> None:
+        """Turn the head with its servo until it is within tolerance (or a second passed)."""
+        limit = self.time() + 1.5
+        while self.time() < limit:
+            self._drive(0.0, 0.0, pan=target)
+            speed = abs(float(self.data.qvel[self._v["head_pan"]]))
+            if abs(self.pan - target) < tolerance and speed < 0.05:
+                break
+
+    # -- records and ground truth ----------------------------------------------------
+
+    def _record(self) -> None:
+        self.trajectory.append(TrajectoryPoint(self.time(), self.x, self.y, self.theta, self.phase))
+
+    def mark(self, kind: str) -> None:
+        """Note an event at the robot's position (drawn as a circle on the route plot)."""
+        self.marks.append((self.x, self.y, kind))
+
+    @property
+    def door(self) -> Target:
+        """The room's door leaf where it stands now (the robot may have pushed it)."""
+        p = self.plan
+        q = float(self.data.qpos[self._door_q])
+        hx, hy = p.doorway_x + p.doorway_width - 0.01, p.depth
+        w = p.doorway_width - 0.03
+        face = Segment(hx, hy, hx - w * math.cos(q), hy - w * math.sin(q))
+        return Target("door", "door", face, math.atan2(math.cos(q), -math.sin(q)), 1.0)
+
+    @property
+    def targets(self) -> list[Target]:
+        """The door leaf, the opposite room's door and the doorway, as the 2D room has them."""
+        p = self.plan
+        o0 = p.opposite_door_x
+        opposite = Segment(o0, p.top, o0 + p.doorway_width, p.top)
+        doorway = Segment(p.doorway_x, p.depth, p.doorway_x + p.doorway_width, p.depth)
+        return [
+            self.door,
+            Target("opposite_door", "door", opposite, -math.pi / 2, 1.0),
+            Target("doorway", "entry", doorway, -math.pi / 2, 1.0),
+        ]
+
+    def exited(self) -> bool:
+        """True once the whole body is through the doorway, in the corridor."""
+        return self.y > self.plan.depth + BODY_RADIUS + SONAR_OFFSET
+
+    def at_entrance(self, reach: float = 0.5) -> bool:
+        """True when the robot stands in or just before the doorway."""
+        return point_segment_distance(self.x, self.y, self.targets[2].face) < reach
+
+    def in_front_of_door(self, reach: float = 0.8) -> bool:
+        """True when the robot is close to the open leaf and its sensors meet the leaf."""
+        close = point_segment_distance(self.x, self.y, self.door.face) < reach
+        return close and self.facing() == "door"
