@@ -11,6 +11,12 @@
 ``--perturb-runs N`` then runs the sequence with ``--perturb`` for seeds 1..N (one of
 a request's cubes moved by hand in one request) and counts the runs in which every
 table's goal held in the simulator afterwards.
+
+``--room-runs N`` (default 3) runs the Q.bo of Fujita et al. in the physical room
+(``room-exit --world mujoco``, the plans of Figs. 6-8 in the AgentSpeak interpreter)
+for seeds 1..N and reports the real-time factor of the whole runs (physics, the head
+camera's renders, the SVMs and the mind) and of the physics alone. ``--only room`` or
+``--only tabletop`` runs one of the two.
 """
 
 from __future__ import annotations
@@ -55,12 +61,56 @@ def speed(seed: int) -> dict[str, float]:
     return out
 
 
+def room_speed(runs: int) -> dict[str, float]:
+    """Runs of the physical room, timed; then their physics steps again, unrendered."""
+    import mujoco
+
+    from robocog.experiments.room_exit import run_once
+    from robocog.worlds.mujoco_room import MujocoRoom
+    from robocog.worlds.physics.room_vision import shared_classifier
+
+    shared_classifier()  # fitted once per process, before the clock starts
+    sim = wall = 0.0
+    left = 0
+    for seed in range(1, runs + 1):
+        result = run_once(seed, "bdi", world_kind="mujoco", keep_route=False)
+        sim += result.sim_seconds
+        wall += result.wall_seconds
+        left += result.exited
+    world = MujocoRoom(0)
+    steps = round(sim / world.model.opt.timestep)
+    t = time.perf_counter()
+    mujoco.mj_step(world.model, world.data, nstep=steps)
+    physics_wall = time.perf_counter() - t
+    world.close()
+    return {
+        "runs": runs,
+        "left": left,
+        "sim_seconds": sim,
+        "wall_seconds": wall,
+        "rtf_run": sim / wall,
+        "rtf_physics": sim / physics_wall,
+    }
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--seed", type=int, default=0)
     parser.add_argument("--perturb-runs", type=int, default=0)
+    parser.add_argument("--room-runs", type=int, default=3)
+    parser.add_argument("--only", choices=("room", "tabletop"))
     args = parser.parse_args()
     print(f"MUJOCO_GL={os.environ.get('MUJOCO_GL')}, load average {os.getloadavg()[0]:.1f}")
+    if args.only != "tabletop" and args.room_runs > 0:
+        r = room_speed(args.room_runs)
+        print(
+            f"Q.bo room: {r['runs']:.0f} runs ({r['left']:.0f} left the room), "
+            f"{r['sim_seconds']:.0f} s simulated in {r['wall_seconds']:.1f} s wall: "
+            f"real-time factor {r['rtf_run']:.1f}; physics alone {r['rtf_physics']:.0f}x "
+            "real time"
+        )
+    if args.only == "room":
+        return
     s = speed(args.seed)
     print(
         f"tables sequence: reached {bool(s['reached'])}; {s['sim_seconds']:.0f} s simulated in "
