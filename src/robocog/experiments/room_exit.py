@@ -86,10 +86,11 @@ class RunResult:
 
     @property
     def physical_outcome(self) -> str:
-        """The three outcomes of the physical room: the mistake first, then leaving."""
+        """The three outcomes of the physical room: the mistake first, then leaving (through
+        the doorway, or standing in it when the plans ended, as the 2D room counts it)."""
         if self.outcome == "opposite door mistaken" and self.door_stop_source == "opposite_door":
             return "opposite door"
-        return "left the room" if self.exited else "other"
+        return "left the room" if self.left_room else "other"
 
 
 #: this experiment's mind names -> the registry's
@@ -226,8 +227,7 @@ def summarise(results: list[RunResult]) -> dict[str, Any]:
         extra = {
             "outcomes": {o: three.get(o, 0) for o in PHYSICAL_OUTCOMES},
             "detailed_outcomes": {o: counts.get(o, 0) for o in (*OUTCOMES, LEFT_EARLY)},
-            "left_room": sum(r.exited for r in results),
-            "success_rate": per_run(sum(r.exited for r in results)),
+            "through_doorway": sum(r.exited for r in results),
             "sim_seconds": sum(r.sim_seconds for r in results),
             "wall_seconds": sum(r.wall_seconds for r in results),
             "real_time_factor": sum(r.sim_seconds for r in results)
@@ -387,12 +387,14 @@ def run(args: argparse.Namespace) -> int:
     table.add_column("mind")
     for o in PHYSICAL_OUTCOMES if world_kind == "mujoco" else OUTCOMES:
         table.add_column(o, justify="right")
-    table.add_column("left at all" if world_kind == "mujoco" else "left the room", justify="right")
+    table.add_column(
+        "through the doorway" if world_kind == "mujoco" else "left the room", justify="right"
+    )
     for name, s in summaries.items():
         table.add_row(
             name,
             *_outcome_cells(s),
-            f"{s['success_rate']:.0%}",
+            f"{s['through_doorway']}" if "through_doorway" in s else f"{s['success_rate']:.0%}",
         )
     console.print(table)
     for name, reason in unavailable.items():
@@ -680,12 +682,13 @@ def write_report(
         "",
         "| mind | "
         + " | ".join(columns)
-        + f" | {'left at all' if physical else 'left the room'} |",
+        + f" | {'through the doorway' if physical else 'left the room'} |",
         "|" + "---|" * (len(columns) + 2),
     ]
     for name, s in summaries.items():
         cells = _outcome_cells(s)
-        lines.append(f"| {name} | " + " | ".join(cells) + f" | {s['success_rate']:.0%} |")
+        last = s.get("through_doorway", f"{s['success_rate']:.0%}")
+        lines.append(f"| {name} | " + " | ".join(cells) + f" | {last} |")
     for name, reason in unavailable.items():
         lines.append(f"\n`{name}` was not run: {reason}.")
     lines += [

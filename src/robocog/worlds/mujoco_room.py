@@ -44,8 +44,10 @@ choose_gl()
 import mujoco  # noqa: E402
 
 from robocog.worlds.physics import room_vision as vision  # noqa: E402
+from robocog.worlds.physics.mobile_base import MobileBase, RangeCone, cast_rays  # noqa: E402
 from robocog.worlds.physics.room_scene import (  # noqa: E402
     BODY_RADIUS,
+    QBO_BASE,
     SONAR_OFFSET,
     RoomPlan,
     scene_xml,
@@ -77,7 +79,7 @@ class MujocoRoomConfig:
     stall_seconds: float = 1.0
     stall_progress: float = 0.02
     wheel_imbalance_sd: float = 0.03
-    heading_bias_sd_degrees: float = 1.0
+    wheel_slip: float = 0.03
     svm_seed: int = 0
     svm_images: int = vision.TRAIN_IMAGES
 
@@ -101,14 +103,11 @@ class MujocoRoom:
         self.data = mujoco.MjData(self.model)
         self.classifier = classifier or vision.shared_classifier(c.svm_seed, c.svm_images)
         self.camera = vision.HeadCamera(self.model)
-        self._q = {j: self._adr(j) for j in ("base_x", "base_y", "base_yaw", "head_pan")}
-        self._v = {j: self._dof(j) for j in ("base_x", "base_y", "base_yaw", "head_pan")}
+        self._pan_q = self._adr("head_pan")
+        self._pan_v = self._dof("head_pan")
         self._door_q = self._adr("door_hinge")
-        self._act = {
-            n: mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_ACTUATOR, n)
-            for n in ("drive_x", "drive_y", "drive_yaw", "pan")
-        }
-        self._robot = mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_BODY, "qbo")
+        self._pan_act = mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_ACTUATOR, "pan")
+        self._robot = mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_BODY, QBO_BASE.name)
         self._names = [
             mujoco.mj_id2name(self.model, mujoco.mjtObj.mjOBJ_GEOM, g) or ""
             for g in range(self.model.ngeom)
@@ -125,9 +124,29 @@ class MujocoRoom:
                 self.rng.gauss(0.0, math.radians(c.start_heading_sd_degrees)),
             )
         self.imbalance = self.rng.gauss(0.0, c.wheel_imbalance_sd)
-        self.heading_bias = self.rng.gauss(0.0, math.radians(c.heading_bias_sd_degrees))
         vision.pose_robot(self.model, self.data, *start, 0.0, self.door_angle)
         self.walls = [Segment(*s) for s in c.plan.wall_segments()]
+        self.base = MobileBase(
+            self.model,
+            self.data,
+            QBO_BASE,
+            start,
+            walls=[((w.ax, w.ay), (w.bx, w.by)) for w in self.walls],
+            slip=c.wheel_slip,
+            seed=self.rng.getrandbits(32),
+        )
+        self.sonar = {
+            name: RangeCone(
+                self.model,
+                f"sonar_{name[3:]}",
+                half_angle=math.radians(c.sonar_cone_degrees),
+                range_max=c.sonar_range,
+                rays=13,
+                noise=c.sonar_noise,
+                rng=self.rng,
+            )
+            for name, _ in SONARS
+        }
         self.boxes: list[list[Segment]] = []
         self.phase = ""
         self.trajectory: list[TrajectoryPoint] = []
@@ -152,22 +171,22 @@ class MujocoRoom:
     @property
     def x(self) -> float:
         """The base's true x (for reports; the mind reads odometry)."""
-        return float(self.data.qpos[self._q["base_x"]])
+        return self.base.true_pose()[0]
 
     @property
     def y(self) -> float:
         """The base's true y."""
-        return float(self.data.qpos[self._q["base_y"]])
+        return self.base.true_pose()[1]
 
     @property
     def theta(self) -> float:
         """The base's true heading, radians in (-pi, pi]."""
-        return wrap(float(self.data.qpos[self._q["base_yaw"]]))
+        return wrap(self.base.true_pose()[2])
 
     @property
     def pan(self) -> float:
         """The head's pan, radians."""
-        return float(self.data.qpos[self._q["head_pan"]])
+        return float(self.data.qpos[self._pan_q])
 
     # -- Body ------------------------------------------------------------------------
 
@@ -188,9 +207,9 @@ class MujocoRoom:
             sector = "right"
         else:
             sector = "none"
-        heading = wrap(self.theta + self.heading_bias)
+        x, y, heading = self.base.odometry.pose
         out: list[Percept] = [
-            Pose(self.x, self.y, heading, None),
+            Pose(x, y, heading, None),
             Range("us_left", left),
             Range("us_right", right),
             Obstacle(sector, nearest),  # type: ignore[arg-type]
@@ -220,15 +239,12 @@ class MujocoRoom:
 
     def _drive(self, v: float, w: float, pan: float | None = None) -> None:
         """One control period with body speed ``v`` (m/s) and turn rate ``w`` (rad/s)."""
-        th = self.theta
-        ctrl = self.data.ctrl
-        ctrl[self._act["drive_x"]] = v * math.cos(th)
-        ctrl[self._act["drive_y"]] = v * math.sin(th)
-        ctrl[self._act["drive_yaw"]] = w
+        self.base.drive(v, w)
         if pan is not None:
-            ctrl[self._act["pan"]] = pan
+            self.data.ctrl[self._pan_act] = pan
         n = max(1, round(self.config.control_period / self.model.opt.timestep))
         mujoco.mj_step(self.model, self.data, nstep=n)
+        self.base.sense(n * self.model.opt.timestep)
         self.physics_steps += n
 
     def _settle(self, seconds: float = 0.2) -> None:
@@ -239,26 +255,27 @@ class MujocoRoom:
         c = self.config
         sign = 1.0 if distance >= 0 else -1.0
         total = abs(distance)
-        x0, y0 = self.x, self.y
+        odometry = self.base.odometry
+        start = odometry.travelled
         limit = self.time() + total / c.speed * 1.5 + 2.0
-        window: list[tuple[float, float, float]] = []
+        window: list[tuple[float, float]] = []
         outcome = Outcome.success()
         next_sample = self.time() + 0.5
         while True:
-            travelled = math.hypot(self.x - x0, self.y - y0)
+            travelled = odometry.travelled - start
             if travelled >= total - 0.005:
                 break
             if sign > 0 and min(self.sonars()) < c.stop_distance:
                 outcome = Outcome.failure("obstacle ahead")
                 break
             t = self.time()
-            window.append((t, self.x, self.y))
+            window.append((t, travelled))
             while window and window[0][0] < t - c.stall_seconds:
                 window.pop(0)
             if (
                 t - window[0][0] >= c.stall_seconds * 0.95
-                and math.hypot(self.x - window[0][1], self.y - window[0][2]) < c.stall_progress
-            ):
+                and travelled - window[0][1] < c.stall_progress
+            ):  # the encoders stopped turning: the body is caught
                 outcome = Outcome.failure("bumped")
                 break
             if t > limit:
@@ -275,11 +292,12 @@ class MujocoRoom:
 
     def _turn(self, angle: float) -> Outcome:
         c = self.config
-        target = float(self.data.qpos[self._q["base_yaw"]]) + angle
+        odometry = self.base.odometry
+        target = wrap(odometry.theta + angle)
         limit = self.time() + abs(angle) / c.turn_speed * 2.0 + 2.0
         outcome = Outcome.success()
         while True:
-            remaining = target - float(self.data.qpos[self._q["base_yaw"]])
+            remaining = wrap(target - odometry.theta)
             if abs(remaining) < math.radians(0.5):
                 break
             if self.time() > limit:
@@ -295,50 +313,41 @@ class MujocoRoom:
 
     # -- sensors ---------------------------------------------------------------------
 
-    def _sonar_rays(self, side: float) -> list[tuple[np.ndarray, np.ndarray]]:
-        """Origins and unit directions of the rays sampling one sensor's cone."""
+    def sonars(self, noise: bool = True) -> tuple[float, float]:
+        """Left and right ultrasonic readings: the nearest echo within each cone, capped
+        at the sensors' range."""
+        c = self.config
+        out = []
+        for name, _ in SONARS:
+            cone = self.sonar[name]
+            saved = cone.noise
+            cone.noise = saved if noise else 0.0
+            out.append(min(c.sonar_range, cone.read(self.data)))
+            cone.noise = saved
+        return out[0], out[1]
+
+    def _fan(self, side: float) -> tuple[np.ndarray, np.ndarray]:
+        """A sensor's origin and a horizontal fan of directions across its cone."""
         c = self.config
         site = mujoco.mj_name2id(
             self.model, mujoco.mjtObj.mjOBJ_SITE, "sonar_left" if side > 0 else "sonar_right"
         )
-        origin = self.data.site_xpos[site].copy()
         axis = self.theta + side * math.radians(c.sonar_angle_degrees)
         half = math.radians(c.sonar_cone_degrees)
-        n = max(1, c.sonar_rays)
-        rays = []
-        for k in range(n):
-            a = axis + (half * (2 * k / (n - 1) - 1) if n > 1 else 0.0)
-            rays.append((origin, np.array([math.cos(a), math.sin(a), 0.0])))
-        return rays
-
-    def _cast(self, origin: np.ndarray, direction: np.ndarray) -> tuple[float, int]:
-        geom = np.zeros(1, dtype=np.int32)
-        groups = np.array([1, 0, 0, 0, 0, 0], dtype=np.uint8)
-        d = mujoco.mj_ray(self.model, self.data, origin, direction, groups, 1, self._robot, geom)
-        return (float(d) if d >= 0 else math.inf), int(geom[0])
-
-    def sonars(self, noise: bool = True) -> tuple[float, float]:
-        """Left and right ultrasonic readings: the nearest echo within each cone."""
-        c = self.config
-        out = []
-        for _, side in SONARS:
-            best = c.sonar_range
-            for origin, direction in self._sonar_rays(side):
-                best = min(best, self._cast(origin, direction)[0])
-            if noise:
-                best = min(c.sonar_range, max(0.0, best + self.rng.gauss(0.0, c.sonar_noise)))
-            out.append(best)
-        return out[0], out[1]
+        angles = axis + np.linspace(-half, half, 7)
+        directions = np.column_stack((np.cos(angles), np.sin(angles), np.zeros(len(angles))))
+        return self.data.site_xpos[site].copy(), directions
 
     def facing(self) -> str:
         """What the ultrasonic beams meet first: ``door``, ``jamb``, ``wall`` or ``nothing``."""
         best, what = self.config.sonar_range, "nothing"
         for _, side in SONARS:
-            for origin, direction in self._sonar_rays(side):
-                d, geom = self._cast(origin, direction)
+            origin, directions = self._fan(side)
+            dist, geoms = cast_rays(self.model, self.data, origin, directions, best, self._robot)
+            for d, geom in zip(dist, geoms, strict=True):
                 if d < best:
                     best = d
-                    name = self._names[geom]
+                    name = self._names[int(geom)]
                     if name.startswith("door_"):
                         what = "door"
                     elif name.startswith("jamb"):
@@ -398,7 +407,7 @@ class MujocoRoom:
         limit = self.time() + 1.5
         while self.time() < limit:
             self._drive(0.0, 0.0, pan=target)
-            speed = abs(float(self.data.qvel[self._v["head_pan"]]))
+            speed = abs(float(self.data.qvel[self._pan_v]))
             if abs(self.pan - target) < tolerance and speed < 0.05:
                 break
 

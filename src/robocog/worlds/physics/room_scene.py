@@ -7,19 +7,22 @@ beyond and, across it, the closed door of the opposite room. Both leaves are the
 wood with the same horizontal slit under the knob (the feature the paper's robot
 recognised doors by), so a camera cannot tell one door from the other.
 
-The robot is the Q.bo's size and shape: a round body 0.36 m across that collides with
-walls, door leaves and jambs; a head on a pan joint carrying the camera 0.42 m above the
-floor; two ultrasonic sensors low on the front, angled outward. The base moves on the
-floor plane (two slides and a yaw hinge), driven by velocity servos whose force is
-limited, so a body pressed against a jamb stalls where it touches, as a wheeled base
-does. Geoms that the sensors and the body meet are in group 0; decoration (slits,
-knobs) in group 1, the floor in group 2.
+The robot is the Q.bo's size and shape on the shared wheeled base
+(:mod:`~robocog.worlds.physics.mobile_base`: two driven wheels whose servos' torque is
+limited, two casters, encoders and an IMU): a round body 0.36 m across that collides
+with walls, door leaves and jambs, so a body pressed against a jamb stalls where it
+touches; a head on a pan joint carrying the camera 0.42 m above the floor; two
+ultrasonic sensors low on the front, angled outward. The room's solid geoms are in
+group 0, decoration (slits, knobs) in group 1, the floors in group 2, the robot's own
+parts in the base's robot group (3), which the rays and the camera pass over.
 """
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+
+from robocog.worlds.physics.mobile_base import ROBOT_GROUP, BaseSpec, base_fragment
 
 #: wall thickness and height, metres
 WALL = 0.08
@@ -37,6 +40,8 @@ BODY_RADIUS = 0.18
 CAMERA_Z = 0.42
 SONAR_Z = 0.08
 SONAR_OFFSET = 0.1
+#: the ultrasonic sensors' axes, turned outward from straight ahead (degrees)
+SONAR_ANGLE = 10.0
 #: camera: horizontal field of view (degrees) and the image's aspect (3 x 2 square areas)
 CAMERA_HFOV = 54.0
 ASPECT = 1.5
@@ -143,30 +148,49 @@ def camera_fovy(hfov_degrees: float = CAMERA_HFOV, aspect: float = ASPECT) -> fl
     return math.degrees(2 * math.atan(math.tan(half) / aspect))
 
 
-def robot_xml() -> str:
-    """The Q.bo: planar base with velocity servos, pan head with the camera, sonar sites
-    (placed by the base joints' qpos, which start at the world's origin)."""
+#: the Q.bo's base on the shared mobile base: small wheels, a narrow track, slow
+QBO_BASE = BaseSpec(
+    name="qbo",
+    length=0.26,
+    width=0.24,
+    height=0.12,
+    clearance=0.04,
+    mass=6.0,
+    wheel_radius=0.05,
+    wheel_width=0.03,
+    track=0.26,
+    caster_radius=0.025,
+    max_speed=0.2,
+    max_turn_rate=math.radians(45.0),
+    wheel_gain=2.0,
+    wheel_torque=1.2,
+    wheel_friction=1.2,
+    lidar_at=(0.0, 0.0, 0.12),
+    rgba=(0.3, 0.3, 0.32, 1.0),
+)
+
+
+def robot_children() -> str:
+    """What rides on the base: the round body that collides, the ultrasonic sensors'
+    sites (x axis along the beam), and the pan head with the camera. The robot's own
+    geoms are in the base's robot group, so neither its rays nor its camera see them."""
     r = BODY_RADIUS
+    g = ROBOT_GROUP
     return f"""
-    <body name="qbo" pos="0 0 0">
-      <joint name="base_x" type="slide" axis="1 0 0" damping="2" ref="0"/>
-      <joint name="base_y" type="slide" axis="0 1 0" damping="2"/>
-      <joint name="base_yaw" type="hinge" axis="0 0 1" damping="0.5"/>
-      <geom name="body" type="cylinder" pos="0 0 0.17" size="{r} 0.13" mass="6"
-            rgba="{_rgba("body")}" friction="1.0 0.01 0.001"/>
-      <geom name="skirt" type="cylinder" pos="0 0 0.05" size="{r - 0.01} 0.02" mass="1"
-            rgba="{_rgba("head")}"/>
-      <site name="sonar_left" pos="{r} {SONAR_OFFSET} {SONAR_Z}" size="0.01"/>
-      <site name="sonar_right" pos="{r} {-SONAR_OFFSET} {SONAR_Z}" size="0.01"/>
+      <geom name="body" type="cylinder" pos="0 0 0.19" size="{r} 0.13" mass="1"
+            group="{g}" rgba="{_rgba("body")}" friction="1.0 0.01 0.001"/>
+      <site name="sonar_left" pos="{r} {SONAR_OFFSET} {SONAR_Z}" size="0.01"
+            euler="0 0 {SONAR_ANGLE}"/>
+      <site name="sonar_right" pos="{r} {-SONAR_OFFSET} {SONAR_Z}" size="0.01"
+            euler="0 0 {-SONAR_ANGLE}"/>
       <body name="head" pos="0.02 0 0.33">
         <joint name="head_pan" type="hinge" axis="0 0 1" range="-100 100" damping="0.2"
                armature="0.01"/>
-        <geom name="head" type="sphere" size="0.1" pos="0 0 0.08" mass="0.5" group="1"
+        <geom name="head" type="sphere" size="0.1" pos="0 0 0.08" mass="0.5" group="{g}"
               contype="0" conaffinity="0" rgba="{_rgba("head")}"/>
         <camera name="eye" pos="0.1 0 {CAMERA_Z - 0.33:.3f}" xyaxes="0 -1 0 0 0 1"
                 fovy="{camera_fovy():.3f}"/>
-      </body>
-    </body>"""
+      </body>"""
 
 
 def scene_xml(plan: RoomPlan) -> str:
@@ -188,7 +212,7 @@ def scene_xml(plan: RoomPlan) -> str:
     width = plan.doorway_width - 0.03
     o0 = plan.opposite_door_x
     top = plan.top
-    body = robot_xml()
+    base = base_fragment(QBO_BASE, children=robot_children())
     corridor_cx = (plan.corridor_left + plan.corridor_right) / 2
     corridor_hx = (plan.corridor_right - plan.corridor_left) / 2
     return f"""<mujoco model="robocog_room">
@@ -205,10 +229,10 @@ def scene_xml(plan: RoomPlan) -> str:
   <worldbody>
     <light pos="3 2 3" dir="0 0 -1" diffuse="0.35 0.35 0.35" castshadow="false"/>
     <light pos="3 4.8 2" dir="0 0 -1" diffuse="0.2 0.2 0.2" castshadow="false"/>
-    <geom name="floor" type="box" group="2" contype="0" conaffinity="0"
+    <geom name="floor" type="box" group="2" friction="1.2 0.005 0.0001"
           pos="{plan.width / 2} {plan.depth / 2} -0.01" size="{plan.width / 2} {plan.depth / 2} 0.01"
           rgba="{_rgba("floor")}"/>
-    <geom name="corridor_floor" type="box" group="2" contype="0" conaffinity="0"
+    <geom name="corridor_floor" type="box" group="2" friction="1.2 0.005 0.0001"
           pos="{corridor_cx} {(plan.depth + top) / 2} -0.01"
           size="{corridor_hx} {plan.corridor_depth / 2} 0.01" rgba="{_rgba("corridor_floor")}"/>
     {chr(10).join("    " + w for w in walls)}
@@ -222,13 +246,14 @@ def scene_xml(plan: RoomPlan) -> str:
     <body name="opposite_door" pos="{o0 + plan.doorway_width - 0.015} {top} 0">
       {_leaf_geoms("opposite", width, (-1.0,))}
     </body>
-{body}
+    {base.body}
   </worldbody>
   <actuator>
-    <velocity name="drive_x" joint="base_x" kv="300" forcerange="-60 60"/>
-    <velocity name="drive_y" joint="base_y" kv="300" forcerange="-60 60"/>
-    <velocity name="drive_yaw" joint="base_yaw" kv="40" forcerange="-15 15"/>
+    {base.actuator}
     <position name="pan" joint="head_pan" kp="4" kv="0.4" forcerange="-2 2"/>
   </actuator>
+  <sensor>
+    {base.sensor}
+  </sensor>
 </mujoco>
 """

@@ -37,7 +37,13 @@ from typing import Any
 import mujoco
 import numpy as np
 
-from robocog.worlds.physics.room_scene import BODY_RADIUS, CAMERA_HFOV, RoomPlan, scene_xml
+from robocog.worlds.physics.room_scene import (
+    BODY_RADIUS,
+    CAMERA_HFOV,
+    QBO_BASE,
+    RoomPlan,
+    scene_xml,
+)
 
 #: image size: 3 x 2 square areas of AREA pixels
 AREA = 32
@@ -173,17 +179,18 @@ def pose_robot(
     pan: float = 0.0,
     door: float | None = None,
 ) -> None:
-    """Set the robot's (and the door's) joints directly and recompute positions."""
+    """Put the robot (its base's free joint) at a pose, turn the head and set the door's
+    angle, at rest, and recompute positions."""
 
     def qadr(joint: str) -> int:
         return int(model.jnt_qposadr[mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_JOINT, joint)])
 
-    data.qpos[qadr("base_x")] = x
-    data.qpos[qadr("base_y")] = y
-    data.qpos[qadr("base_yaw")] = yaw
+    free = qadr(f"{QBO_BASE.name}_free")
+    data.qpos[free : free + 7] = [x, y, 0.0, math.cos(yaw / 2), 0.0, 0.0, math.sin(yaw / 2)]
     data.qpos[qadr("head_pan")] = pan
     if door is not None:
         data.qpos[qadr("door_hinge")] = door
+    data.qvel[:] = 0.0
     mujoco.mj_forward(model, data)
 
 
