@@ -71,12 +71,13 @@ def room_speed(runs: int) -> dict[str, float]:
 
     shared_classifier()  # fitted once per process, before the clock starts
     sim = wall = 0.0
-    left = 0
+    left = through = 0
     for seed in range(1, runs + 1):
         result = run_once(seed, "bdi", world_kind="mujoco", keep_route=False)
         sim += result.sim_seconds
         wall += result.wall_seconds
-        left += result.exited
+        left += result.physical_outcome == "left the room"
+        through += result.exited
     world = MujocoRoom(0)
     steps = round(sim / world.model.opt.timestep)
     t = time.perf_counter()
@@ -86,6 +87,7 @@ def room_speed(runs: int) -> dict[str, float]:
     return {
         "runs": runs,
         "left": left,
+        "through": through,
         "sim_seconds": sim,
         "wall_seconds": wall,
         "rtf_run": sim / wall,
@@ -104,7 +106,8 @@ def main() -> None:
     if args.only != "tabletop" and args.room_runs > 0:
         r = room_speed(args.room_runs)
         print(
-            f"Q.bo room: {r['runs']:.0f} runs ({r['left']:.0f} left the room), "
+            f"Q.bo room: {r['runs']:.0f} runs ({r['left']:.0f} left the room, "
+            f"{r['through']:.0f} through the doorway), "
             f"{r['sim_seconds']:.0f} s simulated in {r['wall_seconds']:.1f} s wall: "
             f"real-time factor {r['rtf_run']:.1f}; physics alone {r['rtf_physics']:.0f}x "
             "real time"
