@@ -118,6 +118,8 @@ def make_world(kind: str, seed: int, config: RoomConfig | None = None) -> Any:
         return RoomWorld(seed, config)
     if kind == "mujoco":
         try:
+            import sklearn  # noqa: F401  (the SVMs; imported late by the vision module)
+
             from robocog.worlds.mujoco_room import MujocoRoom
         except ImportError as exc:
             raise MindUnavailable(
