@@ -1,7 +1,8 @@
 """``robocog sim garbage --ros2|--ros1``: an embedded world served as a ROS robot.
 
 ``robocog sim tabletop --physics`` runs the physical tabletop on its own instead (see
-:mod:`robocog.sim.tabletop`).
+:mod:`robocog.sim.tabletop`); ``robocog sim room --world mujoco --ros2`` serves the
+physical Q.bo room (:mod:`robocog.sim.room`).
 
 Run it in one terminal and ``robocog bridge ros2 --loopback --mind nars`` (or ``bdi``)
 in another; any ROS 2 node on rmw_cyclonedds in the same domain sees the robot too.
@@ -21,7 +22,7 @@ from typing import Any
 
 from robocog.signals import handling
 
-WORLDS = ("garbage", "tabletop")
+WORLDS = ("garbage", "tabletop", "room")
 
 
 def configure(parser: argparse.ArgumentParser) -> None:
@@ -61,6 +62,14 @@ def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--record", type=Path, metavar="FILE.mcap", help="record every message")
     parser.add_argument("--max-frames", type=int, help="end after this many frames")
     parser.add_argument("-v", "--verbose", action="store_true", help="log more")
+    room = parser.add_argument_group("room")
+    room.add_argument(
+        "--world",
+        dest="room_world",
+        choices=("mujoco",),
+        default="mujoco",
+        help="room: the physical Q.bo room (MuJoCo; the only one served)",
+    )
     tabletop = parser.add_argument_group("tabletop")
     tabletop.add_argument(
         "--physics", action="store_true", help="tabletop: the MuJoCo arm, cameras and tags"
@@ -82,6 +91,13 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Serve the world until its mission ends or the process is stopped."""
+    if args.world == "room":
+        try:
+            from robocog.sim.room import run_room
+        except ImportError as exc:
+            print(f"robocog sim room: needs the physics and ros2 extras ({exc})", file=sys.stderr)
+            return 2
+        return run_room(args)
     if args.world == "tabletop":
         from robocog.sim.tabletop import DEFAULT_SCRIPT, run_tabletop
 

@@ -231,14 +231,25 @@ class MujocoRoom:
         self._record()
         return outcome
 
+    def image(self) -> np.ndarray:
+        """What the head camera sees now (height x width x 3, with the camera's noise)."""
+        return self.camera.render(self.data, self.rng)
+
+    def joints(self) -> dict[str, float]:
+        """The head's pan and the wheels' angles (radians), as a JointState reports them."""
+        left, right = self.base.encoders()
+        return {"head_pan": self.pan, "qbo_left_wheel": left, "qbo_right_wheel": right}
+
     def close(self) -> None:
         """Free the camera's GL context."""
         self.camera.close()
 
     # -- motion ----------------------------------------------------------------------
 
-    def _drive(self, v: float, w: float, pan: float | None = None) -> None:
-        """One control period with body speed ``v`` (m/s) and turn rate ``w`` (rad/s)."""
+    def drive(self, v: float, w: float, pan: float | None = None) -> None:
+        """One control period with body speed ``v`` (m/s) and turn rate ``w`` (rad/s),
+        the head's servo aimed at ``pan`` (radians) when given. The commands use it; so
+        does a ROS 2 server that takes velocities instead of commands."""
         self.base.drive(v, w)
         if pan is not None:
             self.data.ctrl[self._pan_act] = pan
@@ -249,7 +260,7 @@ class MujocoRoom:
 
     def _settle(self, seconds: float = 0.2) -> None:
         for _ in range(max(1, round(seconds / self.config.control_period))):
-            self._drive(0.0, 0.0)
+            self.drive(0.0, 0.0)
 
     def _forward(self, distance: float) -> Outcome:
         c = self.config
@@ -282,7 +293,7 @@ class MujocoRoom:
                 outcome = Outcome.failure("too slow")
                 break
             v = sign * min(c.speed, max(0.05, (total - travelled) * 2.0))
-            self._drive(v, self.imbalance * v / 0.3)
+            self.drive(v, self.imbalance * v / 0.3)
             if self.time() >= next_sample:
                 next_sample += 0.5
                 self._record()
@@ -306,7 +317,7 @@ class MujocoRoom:
             w = max(-c.turn_speed, min(c.turn_speed, 3.0 * remaining))
             if abs(w) < 0.08:
                 w = math.copysign(0.08, remaining)
-            self._drive(0.0, w)
+            self.drive(0.0, w)
         self._settle(0.1)
         self.detections = []
         return outcome
@@ -406,7 +417,7 @@ class MujocoRoom:
         """Turn the head with its servo until it is within tolerance (or a second passed)."""
         limit = self.time() + 1.5
         while self.time() < limit:
-            self._drive(0.0, 0.0, pan=target)
+            self.drive(0.0, 0.0, pan=target)
             speed = abs(float(self.data.qvel[self._pan_v]))
             if abs(self.pan - target) < tolerance and speed < 0.05:
                 break

@@ -56,6 +56,15 @@ DEFINITIONS: dict[str, str] = {
         "float64[] velocity\nfloat64[] effort"
     ),
     "tf2_msgs/msg/TFMessage": "geometry_msgs/msg/TransformStamped[] transforms",
+    "std_msgs/msg/Float64": "float64 data",
+    "sensor_msgs/msg/Image": (
+        "std_msgs/msg/Header header\nuint32 height\nuint32 width\nstring encoding\n"
+        "uint8 is_bigendian\nuint32 step\nuint8[] data"
+    ),
+    "sensor_msgs/msg/Range": (
+        "std_msgs/msg/Header header\nuint8 radiation_type\nfloat32 field_of_view\n"
+        "float32 min_range\nfloat32 max_range\nfloat32 range\nfloat32 variance"
+    ),
     "rosgraph_msgs/msg/Clock": "builtin_interfaces/msg/Time clock",
     "vision_msgs/msg/Point2D": "float64 x\nfloat64 y",
     "vision_msgs/msg/Pose2D": "vision_msgs/msg/Point2D position\nfloat64 theta",

@@ -255,6 +255,37 @@ class JointState(IdlStruct, typename="sensor_msgs::msg::dds_::JointState_"):
     effort: t.sequence[t.float64] = field(default_factory=list)
 
 
+@dataclass
+class Float64(IdlStruct, typename="std_msgs::msg::dds_::Float64_"):
+    data: t.float64 = 0.0
+
+
+@dataclass
+class Image(IdlStruct, typename="sensor_msgs::msg::dds_::Image_"):
+    header: Header = field(default_factory=Header)
+    height: t.uint32 = 0
+    width: t.uint32 = 0
+    encoding: str = ""
+    is_bigendian: t.uint8 = 0
+    step: t.uint32 = 0
+    data: t.sequence[t.uint8] = field(default_factory=list)
+
+
+#: sensor_msgs/Range radiation types (the layout is Jazzy's, with ``variance``)
+ULTRASOUND, INFRARED = 0, 1
+
+
+@dataclass
+class Range(IdlStruct, typename="sensor_msgs::msg::dds_::Range_"):
+    header: Header = field(default_factory=Header)
+    radiation_type: t.uint8 = ULTRASOUND
+    field_of_view: t.float32 = 0.0
+    min_range: t.float32 = 0.0
+    max_range: t.float32 = 0.0
+    range: t.float32 = 0.0
+    variance: t.float32 = 0.0  # since ROS 2 Jazzy
+
+
 # -- ROS 2 actions: goal status, and the services every action has ----------------------
 
 #: action_msgs/GoalStatus codes
