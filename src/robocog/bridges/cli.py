@@ -109,11 +109,13 @@ def run(args: argparse.Namespace) -> int:
     from robocog.bridges.runner import BridgeRunner
 
     try:
-        link = _make_link(args, config)
+        if args.mind == "qbo" and args.middleware == "ros2":
+            body: Any = _qbo_body(args, config)
+        else:
+            body = RobotBody(_make_link(args, config), config)
     except ImportError as exc:
         print(f"robocog bridge: {exc}", file=sys.stderr)
         return 2
-    body = RobotBody(link, config)
     runner = BridgeRunner(body, mind)
 
     def _terminate(_signum: int, _frame: object) -> None:
@@ -147,6 +149,49 @@ def run(args: argparse.Namespace) -> int:
         summary["reason_p99_ms"],
     )
     return code
+
+
+def _qbo_body(args: argparse.Namespace, config: BridgeConfig) -> Any:
+    """The Q.bo's own body (camera head, ultrasonic sensors) over ROS 2; its images are
+    classified by the physical room's SVMs, loaded by name: the bridges know no world."""
+    if args.loopback and "CYCLONEDDS_URI" not in os.environ:
+        from robocog.bridges.ros2.loopback import use_loopback
+
+        use_loopback()
+    try:
+        from robocog.bridges.qbo import QboRos2Body
+    except ImportError as exc:
+        raise ImportError(
+            "ROS 2 needs the cyclonedds package: pip install 'robocog[ros2]'"
+        ) from exc
+    try:
+        importlib.import_module("sklearn")
+        vision = importlib.import_module("robocog.worlds.physics.room_vision")
+    except ImportError as exc:
+        raise ImportError(
+            f"the Q.bo's vision needs the physics extra: pip install 'robocog[physics]' ({exc})"
+        ) from exc
+    recorder = None
+    if args.record is not None:
+        from robocog.bridges.ros2.record import Recorder
+
+        recorder = Recorder(args.record)
+    body = QboRos2Body(
+        args.domain,
+        config,
+        namespace=getattr(args, "namespace", ""),
+        vision=vision,
+        on_message=recorder.write if recorder is not None else None,
+    )
+    if recorder is not None:
+        closing = body.close
+
+        def close() -> None:
+            closing()
+            recorder.close()
+
+        body.close = close  # type: ignore[method-assign]
+    return body
 
 
 def _make_link(args: argparse.Namespace, config: BridgeConfig) -> Any:

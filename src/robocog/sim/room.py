@@ -326,7 +326,13 @@ def run_room(args: Any) -> int:
         world.close()
         if recorder is not None:
             recorder.close()
-    where = "out of the room" if world.exited() else "in the room"
+    if world.exited():
+        where = "out of the room"
+    elif world.at_entrance():
+        where = "in the doorway"
+    else:
+        where = "in the room"
+    where += f" at ({world.x:.2f}, {world.y:.2f})"
     print(
         f"robocog sim: {world.time():.0f} simulated seconds, {robot.frames} sensor frames, "
         f"{robot.images} images; the robot is {where}",
