@@ -35,10 +35,19 @@ from robocog.worlds.physics import room_vision  # noqa: E402
 from tests.bridges.conftest import random_domain  # noqa: E402
 
 
-def test_the_room_serves_its_sensors_and_obeys_velocity_and_head(tmp_path: Path) -> None:
+@pytest.fixture(scope="module")
+def classifier(tmp_path_factory: pytest.TempPathFactory) -> room_vision.AreaClassifier:
+    """A classifier trained on fewer renders than the default, cached in a temporary folder."""
+    return room_vision.trained(
+        seed=3, images=240, test_images=30, directory=tmp_path_factory.mktemp("svm")
+    )
+
+
+def test_the_room_serves_its_sensors_and_obeys_velocity_and_head(
+    tmp_path: Path, classifier: room_vision.AreaClassifier
+) -> None:
     use_loopback()
     domain = random_domain()
-    classifier = room_vision.trained(seed=3, images=120, test_images=30, directory=tmp_path / "svm")
     world = MujocoRoom(2, classifier=classifier, start=(1.0, 2.0, 0.0))
     path = tmp_path / "room.mcap"
     recorder = Recorder(path)
@@ -105,3 +114,53 @@ def test_the_room_serves_its_sensors_and_obeys_velocity_and_head(tmp_path: Path)
     assert decoded["/range/us_right"].max_range == pytest.approx(1.5)
     assert len(decoded["/camera/image_raw"].data) == 96 * 64 * 3
     assert math.isfinite(decoded["/odom"].pose.pose.position.x)
+
+
+def test_the_bridges_qbo_body_looks_and_stops_over_dds(
+    classifier: room_vision.AreaClassifier,
+) -> None:
+    """The bridge's Q.bo body on the served room: a look finds the door in the image
+    that faces it, and a forward stops on the ultrasonic sensors before a wall."""
+    from robocog.bridges.qbo import QboRos2Body
+    from robocog.robot.commands import Forward, Look, Turn
+
+    use_loopback()
+    domain = random_domain()
+    # at (3.0, 2.5) the open leaf (80 degrees) lies about 28 degrees left of east
+    world = MujocoRoom(
+        4, classifier=classifier, start=(3.0, 2.5, math.radians(28.0)), door_open_degrees=80.0
+    )
+    robot = QboRoomRobot(world, domain, rate=6.0)
+    body = QboRos2Body(domain, vision=room_vision, classifier=classifier).start()
+    got: dict[str, Any] = {}
+    done = threading.Event()
+
+    def bridge() -> None:
+        try:
+            start = time.monotonic()
+            while body.stale() is not None and time.monotonic() - start < 20:
+                time.sleep(0.05)
+            got["look"] = body.execute(Look("around"))
+            got["doors"] = [p for p in body.percepts() if getattr(p, "label", None) == "door"]
+            got["turn"] = body.execute(Turn(-math.radians(118.0)))  # to face south
+            got["forward"] = body.execute(Forward(4.0))
+        finally:
+            done.set()
+
+    thread = threading.Thread(target=bridge, daemon=True)
+    thread.start()
+    try:
+        robot.run(until=done.is_set)
+    finally:
+        robot.close()
+        body.close()
+        thread.join(timeout=5)
+    try:
+        assert got["look"].ok
+        best = max(got["doors"], key=lambda d: d.confidence)
+        assert best.instance is not None and best.instance.startswith("front:")
+        assert got["turn"].ok
+        assert not got["forward"].ok and got["forward"].reason == "obstacle ahead"
+        assert 0.3 < world.y < 0.75  # stopped short of the south wall, not against it
+    finally:
+        world.close()
