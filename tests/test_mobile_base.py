@@ -79,8 +79,8 @@ def test_lidar_reads_the_walls_and_respects_its_range():
     lidar_x = 2.0 + base.spec.lidar_at[0]
     ahead = scan.sector_min(-0.02, 0.02)
     behind = min(scan.ranges[0], scan.ranges[-1])
-    assert abs(ahead - (SIZE - lidar_x - 0.025)) < 0.05
-    assert abs(behind - (lidar_x - 0.025)) < 0.05
+    assert abs(ahead - (SIZE - lidar_x)) < 0.03
+    assert abs(behind - lidar_x) < 0.03
     # a short range lidar sees only the near wall
     model, data, base = _world(start=(2.0, 3.0, 0.0), range_max=2.5)
     scan = base.scan(correct=False)
@@ -92,7 +92,7 @@ def test_range_cone_reads_the_wall_ahead():
     model, data, base = _world(start=(4.0, 3.0, 0.0))
     cone = RangeCone(model, "sonar", range_max=3.0)
     reading = cone.read(data)
-    assert abs(reading - (SIZE - 4.31 - 0.025)) < 0.05
+    assert abs(reading - (SIZE - 4.31)) < 0.03
     far = RangeCone(model, "sonar", range_max=1.0)
     assert math.isinf(far.read(data))
 

@@ -43,6 +43,9 @@ import mujoco  # noqa: E402
 
 #: geom group of the robot's own parts; rays of this module never hit it
 ROBOT_GROUP = 3
+#: contact bits of the robot's geoms: they touch the world but not each other (an arm
+#: folding over its own chassis, a mast it swings past)
+ROBOT_CONTACT = 'contype="2" conaffinity="1"'
 #: geom groups a ray sees (MuJoCo has six): all but the robot's
 SEEN_GROUPS = np.array([1 if g != ROBOT_GROUP else 0 for g in range(6)], dtype=np.uint8)
 
@@ -132,7 +135,8 @@ def base_fragment(
     ``children`` is MJCF placed inside the chassis body (its frame: x forward, y left,
     z up from the ground under the base's centre), for an arm, a camera or a bumper.
     Give the geoms of such parts ``group="3"`` (:data:`ROBOT_GROUP`) so the base's own
-    rays pass through them. The wheel hinges carry encoders (``jointpos`` sensors named
+    rays pass through them, and :data:`ROBOT_CONTACT` so they do not collide with the
+    base. The wheel hinges carry encoders (``jointpos`` sensors named
     after the joints), the IMU site a gyro and an accelerometer.
     """
     s = spec
@@ -152,22 +156,22 @@ def base_fragment(
             f'<joint name="{s.joint(side)}" type="hinge" axis="0 1 0" damping="0.05"/>'
             f'<geom type="cylinder" size="{_f(r, s.wheel_width / 2)}" quat="0.7071068 0.7071068 0 0"'
             f' mass="{wheel_mass}" friction="{_f(s.wheel_friction, 0.005, 0.0001)}"'
-            f' group="{ROBOT_GROUP}" rgba="0.1 0.1 0.1 1"/>'
+            f' group="{ROBOT_GROUP}" {ROBOT_CONTACT} rgba="0.1 0.1 0.1 1"/>'
             "</body>"
         )
     body = (
         f'<body name="{n}" pos="{_f(pos[0], pos[1], 0.0)}" quat="{yaw_quat(yaw)}">'
         f'<freejoint name="{n}_free"/>'
         f'<geom name="{n}_chassis" type="box" size="{_f(*half)}" pos="{_f(0, 0, chassis_z)}"'
-        f' mass="{s.mass}" group="{ROBOT_GROUP}" rgba="{_f(*s.rgba)}"/>'
+        f' mass="{s.mass}" group="{ROBOT_GROUP}" {ROBOT_CONTACT} rgba="{_f(*s.rgba)}"/>'
         f'<geom name="{n}_caster_front" type="sphere" size="{s.caster_radius:.6g}"'
-        f' pos="{_f(caster_x, 0, caster_z)}" condim="1" mass="0.2" group="{ROBOT_GROUP}"'
+        f' pos="{_f(caster_x, 0, caster_z)}" condim="1" mass="0.2" group="{ROBOT_GROUP}" {ROBOT_CONTACT}'
         ' rgba="0.2 0.2 0.2 1"/>'
         f'<geom name="{n}_caster_back" type="sphere" size="{s.caster_radius:.6g}"'
-        f' pos="{_f(-caster_x, 0, caster_z)}" condim="1" mass="0.2" group="{ROBOT_GROUP}"'
+        f' pos="{_f(-caster_x, 0, caster_z)}" condim="1" mass="0.2" group="{ROBOT_GROUP}" {ROBOT_CONTACT}'
         ' rgba="0.2 0.2 0.2 1"/>'
         f'<geom name="{n}_lidar_head" type="cylinder" size="0.04 0.025"'
-        f' pos="{_f(*s.lidar_at)}" mass="0.3" group="{ROBOT_GROUP}" rgba="0.05 0.05 0.05 1"/>'
+        f' pos="{_f(*s.lidar_at)}" mass="0.3" group="{ROBOT_GROUP}" {ROBOT_CONTACT} rgba="0.05 0.05 0.05 1"/>'
         f'<site name="{s.imu_site}" pos="{_f(0, 0, chassis_z)}"/>'
         f'<site name="{s.lidar_site}" pos="{_f(s.lidar_at[0], s.lidar_at[1], s.lidar_at[2] + 0.03)}"/>'
         + "".join(wheels)
@@ -192,16 +196,23 @@ def base_fragment(
 def walls_xml(
     walls: Sequence[Wall], height: float = 1.0, thickness: float = 0.05, rgba: str = "0.5 0.5 0.5 1"
 ) -> str:
-    """Box geoms standing on the given segments (a fence, a room's walls), centred on
-    each segment's line so that a ray stops ``thickness / 2`` before it."""
+    """Box geoms standing on the given segments (a fence, a room's walls).
+
+    Give the segments counter-clockwise around the free space (the space on each
+    segment's left): each box stands on the outer side, so the segment is the wall's
+    face, which is what a ray hits and what :class:`Localiser` matches scans against.
+    """
     out = []
     for (x1, y1), (x2, y2) in walls:
         length = math.hypot(x2 - x1, y2 - y1)
         angle = math.atan2(y2 - y1, x2 - x1)
+        # outward normal: to the right of the direction of travel
+        nx, ny = math.sin(angle), -math.cos(angle)
+        cx = (x1 + x2) / 2 + nx * thickness / 2
+        cy = (y1 + y2) / 2 + ny * thickness / 2
         out.append(
-            f'<geom type="box" size="{_f(length / 2, thickness / 2, height / 2)}"'
-            f' pos="{_f((x1 + x2) / 2, (y1 + y2) / 2, height / 2)}" quat="{yaw_quat(angle)}"'
-            f' rgba="{rgba}"/>'
+            f'<geom type="box" size="{_f(length / 2 + thickness, thickness / 2, height / 2)}"'
+            f' pos="{_f(cx, cy, height / 2)}" quat="{yaw_quat(angle)}" rgba="{rgba}"/>'
         )
     return "".join(out)
 
