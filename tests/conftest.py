@@ -14,6 +14,13 @@ from __future__ import annotations
 
 import pytest
 
+from robocog.worlds.physics.gl import choose_gl
+
+# MuJoCo reads MUJOCO_GL once, when first imported: a test module that imports mujoco
+# before robocog's physics package would leave every later render in its worker without
+# an offscreen context, so the backend is chosen here, before any test module loads
+choose_gl()
+
 
 def pytest_configure(config: pytest.Config) -> None:
     """One test at a time to each free worker, unless ``--maxschedchunk`` says otherwise."""
