@@ -89,3 +89,22 @@ def test_the_ultrasonic_sensors_stop_the_base_before_a_wall(
         assert world.time() > 4.0  # it drove there at 0.15 m/s
     finally:
         world.close()
+
+
+def test_the_inspector_draws_the_physical_room_as_the_2d_one(
+    classifier: room_vision.AreaClassifier,
+) -> None:
+    from robocog.inspector.views import world_viewer
+
+    world = MujocoRoom(2, classifier=classifier, door_open_degrees=80.0)
+    try:
+        view = world_viewer(world)(world, world.percepts())
+        assert view["kind"] == "room"
+        leaf = view["targets"][0]["face"]
+        # the leaf stands 80 degrees into the room from its hinge at the right jamb
+        assert math.degrees(math.atan2(leaf[1] - leaf[3], leaf[0] - leaf[2])) == pytest.approx(
+            80.0, abs=1.0
+        )
+        assert view["robot"]["x"] == pytest.approx(world.x, abs=0.01)
+    finally:
+        world.close()

@@ -306,6 +306,8 @@ def world_viewer(world: Any) -> Callable[[Any, Sequence[Percept] | None], Json]:
         return tabletop_view
     if isinstance(world, RoomWorld):
         return room_view
+    if type(world).__name__ == "MujocoRoom":  # the physical room (not imported: mujoco)
+        return room_view
     return BodyViewer()
 
 

@@ -188,6 +188,16 @@ class MujocoRoom:
         """The head's pan, radians."""
         return float(self.data.qpos[self._pan_q])
 
+    @property
+    def clock(self) -> float:
+        """Simulated seconds (the 2D room's name for it, which the inspector reads)."""
+        return self.time()
+
+    @property
+    def solids(self) -> list[Segment]:
+        """The walls and the door leaf as segments, for the inspector's plan of the room."""
+        return [*self.walls, self.door.face]
+
     # -- Body ------------------------------------------------------------------------
 
     def time(self) -> float:
