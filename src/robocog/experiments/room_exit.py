@@ -322,6 +322,16 @@ def configure(parser: argparse.ArgumentParser) -> None:
         help="render the physical room's SVM training and held-out areas afresh, fit, "
         "report accuracy and confusion matrices, and stop (otherwise done on first use)",
     )
+    parser.add_argument(
+        "--over",
+        choices=("process", "ros2"),
+        default="process",
+        help="ros2 (with --world mujoco): the room served over ROS 2 and the Q.bo mind in "
+        "a bridge process, over loopback DDS",
+    )
+    parser.add_argument(
+        "--record", type=Path, metavar="DIR", help="--over ros2: one MCAP recording per run"
+    )
     parser.add_argument("--max-commands", type=int, default=400, help="budget of one run")
     parser.add_argument("--obstacles", type=int, default=0, help="boxes placed in the room")
     parser.add_argument("--particles", type=int, default=2000, help="convergence particles")
@@ -340,6 +350,8 @@ def run(args: argparse.Namespace) -> int:
     console = Console()
     if getattr(args, "train_svm", False):
         return train_svm(args, console)
+    if getattr(args, "over", "process") == "ros2":
+        return over_ros2(args, console)
     config = RoomConfig(obstacles=args.obstacles)
     world_kind = getattr(args, "world", "2d")
     mind = args.mind or ("both" if world_kind == "2d" else "bdi")
@@ -514,6 +526,51 @@ def train_svm(args: argparse.Namespace, console: Any) -> int:
             },
         )
     return 0
+
+
+def over_ros2(args: argparse.Namespace, console: Any) -> int:
+    """``--over ros2``: each seed's room served here, the Q.bo mind in a bridge process."""
+    if getattr(args, "world", "2d") != "mujoco":
+        console.print("[red]--over ros2 serves the physical room: add --world mujoco[/red]")
+        return 2
+    try:
+        import sklearn  # noqa: F401
+
+        from robocog.experiments.room_over_ros2 import run_over_ros2
+        from robocog.worlds.physics.room_vision import shared_classifier
+    except ImportError as exc:
+        console.print(f"[red]--over ros2 needs the physics and ros2 extras: {exc}[/red]")
+        return 2
+    shared_classifier()  # trained (or read from the cache) before the bridge needs it
+    runs = []
+    for i in range(args.runs):
+        seed = args.seed + i
+        record = args.record / f"room_seed{seed}.mcap" if args.record else None
+        run = run_over_ros2(seed, record=record)
+        runs.append(run)
+        console.print(
+            f"seed {seed}: {run.outcome} at ({run.x:.2f}, {run.y:.2f}), "
+            f"{run.sim_seconds:.0f} s simulated in {run.wall_seconds:.0f} s"
+            + (f"; {run.error}" if run.error else "")
+        )
+    counts = Counter(r.outcome for r in runs)
+    console.print(f"over ROS 2: {counts.get('left the room', 0)} of {len(runs)} runs left the room")
+    if args.json:
+        write_json(
+            Path(args.json),
+            {
+                "experiment": "room-exit",
+                "world": "mujoco",
+                "over": "ros2",
+                "seed": args.seed,
+                "runs": args.runs,
+                "outcomes": {
+                    o: counts.get(o, 0) for o in ("left the room", "in the doorway", "in the room")
+                },
+                "results": [asdict(r) for r in runs],
+            },
+        )
+    return 0 if all(r.error is None for r in runs) else 1
 
 
 PHASE_COLOURS = {"door": "magenta", "entry": "red", "": "grey"}
