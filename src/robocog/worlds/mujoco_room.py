@@ -48,6 +48,7 @@ from robocog.worlds.physics.mobile_base import MobileBase, RangeCone, cast_rays 
 from robocog.worlds.physics.room_scene import (  # noqa: E402
     BODY_RADIUS,
     QBO_BASE,
+    SONAR_ANGLE,
     SONAR_OFFSET,
     RoomPlan,
     scene_xml,
@@ -69,9 +70,8 @@ class MujocoRoomConfig:
     turn_speed: float = 0.6
     control_period: float = 0.05
     sonar_range: float = 1.5
-    sonar_angle_degrees: float = 10.0
     sonar_cone_degrees: float = 12.0
-    sonar_rays: int = 5
+    sonar_rays: int = 13
     sonar_noise: float = 0.01
     stop_distance: float = 0.25
     obstacle_range: float = 0.45
@@ -141,7 +141,7 @@ class MujocoRoom:
                 f"sonar_{name[3:]}",
                 half_angle=math.radians(c.sonar_cone_degrees),
                 range_max=c.sonar_range,
-                rays=13,
+                rays=c.sonar_rays,
                 noise=c.sonar_noise,
                 rng=self.rng,
             )
@@ -353,7 +353,7 @@ class MujocoRoom:
         site = mujoco.mj_name2id(
             self.model, mujoco.mjtObj.mjOBJ_SITE, "sonar_left" if side > 0 else "sonar_right"
         )
-        axis = self.theta + side * math.radians(c.sonar_angle_degrees)
+        axis = self.theta + side * math.radians(SONAR_ANGLE)
         half = math.radians(c.sonar_cone_degrees)
         angles = axis + np.linspace(-half, half, 7)
         directions = np.column_stack((np.cos(angles), np.sin(angles), np.zeros(len(angles))))
