@@ -15,21 +15,26 @@ import signal
 import sys
 from pathlib import Path
 
+from robocog.argtypes import EXISTING_FILE_STR, positive_int, seconds
+
 
 def configure(parser: argparse.ArgumentParser) -> None:
     """Declare the arguments of ``robocog agent``."""
     parser.add_argument(
-        "file", nargs="+", help="AgentSpeak program(s) (.asl), or one Jason project (.mas2j)"
+        "file",
+        nargs="+",
+        type=EXISTING_FILE_STR,
+        help="AgentSpeak program(s) (.asl), or one Jason project (.mas2j)",
     )
     parser.add_argument("--name", help="agent name of a single .asl (default: the file name)")
     parser.add_argument(
         "--max-cycles",
-        type=int,
+        type=positive_int(),
         default=None,
         help="stop after this many reasoning cycles (default: run until idle)",
     )
     parser.add_argument(
-        "--timeout", type=float, default=None, help="stop after this many seconds of wall time"
+        "--timeout", type=seconds(), default=None, help="stop after this many seconds of wall time"
     )
     parser.add_argument(
         "--env",

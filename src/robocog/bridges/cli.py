@@ -18,6 +18,7 @@ from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
+from robocog.argtypes import DDS_DOMAIN, EXISTING_FILE, EXISTING_FILE_STR, NEW_FILE, SEED, seconds
 from robocog.bridges.config import BridgeConfig, Topics
 from robocog.minds.registry import MindConfig, MindUnavailable, make, names
 from robocog.robot.protocols import Mind
@@ -35,9 +36,13 @@ def configure(parser: argparse.ArgumentParser) -> None:
         help=f"{', '.join(names())}, or module:factory for a mind of your own "
         "(called with a robocog.minds.registry.MindConfig) (default: nars)",
     )
-    parser.add_argument("--knowledge", type=Path, help="Narsese file given to a NARS mind")
-    parser.add_argument("--program", type=Path, help="AgentSpeak (.asl) program of a BDI mind")
-    parser.add_argument("--config", type=Path, help="TOML file: topics, places, speeds, limits")
+    parser.add_argument("--knowledge", type=EXISTING_FILE, help="Narsese file given to a NARS mind")
+    parser.add_argument(
+        "--program", type=EXISTING_FILE, help="AgentSpeak (.asl) program of a BDI mind"
+    )
+    parser.add_argument(
+        "--config", type=EXISTING_FILE, help="TOML file: topics, places, speeds, limits"
+    )
     parser.add_argument(
         "--robot",
         help="a robot configuration shipped with robocog (default: garbage, the field "
@@ -58,24 +63,24 @@ def configure(parser: argparse.ArgumentParser) -> None:
         help="rename a topic, e.g. scan=/front/scan (repeatable)",
     )
     parser.add_argument(
-        "--watchdog", type=float, help="stop the robot after this many seconds without percepts"
+        "--watchdog", type=seconds(), help="stop the robot after this many seconds without percepts"
     )
     parser.add_argument(
         "--goto-timeout",
-        type=float,
+        type=seconds(),
         help="seconds a GoTo waits for the navigation result before it cancels and fails",
     )
-    parser.add_argument("--seed", type=int, default=0, help="the mind's seed (default 0)")
+    parser.add_argument("--seed", type=SEED, default=0, help="the mind's seed (default 0)")
     parser.add_argument(
         "--lockstep",
         action="store_true",
         help="decide once per scan and acknowledge it on /sim/frame_done (a lock-step sim)",
     )
     parser.add_argument("--namespace", default="", help="prefix of every topic and action")
-    parser.add_argument("--record", type=Path, metavar="FILE.mcap", help="record every message")
-    parser.add_argument("--duration", type=float, help="end after this many seconds")
+    parser.add_argument("--record", type=NEW_FILE, metavar="FILE.mcap", help="record every message")
+    parser.add_argument("--duration", type=seconds(), help="end after this many seconds")
     parser.add_argument(
-        "--domain", type=int, help="ROS 2: the DDS domain (default ROS_DOMAIN_ID or 0)"
+        "--domain", type=DDS_DOMAIN, help="ROS 2: the DDS domain (default ROS_DOMAIN_ID or 0)"
     )
     parser.add_argument(
         "--loopback",
@@ -84,6 +89,7 @@ def configure(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument(
         "--ros1-python",
+        type=EXISTING_FILE_STR,
         default="/usr/bin/python3",
         help="ROS 1: the Python that has rospy (default /usr/bin/python3)",
     )

@@ -19,6 +19,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from robocog.argtypes import EXISTING_FILE, SEED
 from robocog.bridges.body import RobotBody
 from robocog.bridges.config import BridgeConfig
 from robocog.robot.commands import Command, Drop, GoTo, Outcome, Pick
@@ -61,11 +62,11 @@ class _NoLink:
 
 def configure(parser: argparse.ArgumentParser) -> None:
     """Declare the replay's arguments."""
-    parser.add_argument("recording", type=Path, help="an MCAP file written with --record")
+    parser.add_argument("recording", type=EXISTING_FILE, help="an MCAP file written with --record")
     parser.add_argument("--mind", default="nars", help="nars, bdi or module:factory")
     parser.add_argument("--robot", default="garbage", help="the robot configuration (places)")
-    parser.add_argument("--config", type=Path, help="a TOML bridge configuration instead")
-    parser.add_argument("--seed", type=int, default=0, help="the mind's seed")
+    parser.add_argument("--config", type=EXISTING_FILE, help="a TOML bridge configuration instead")
+    parser.add_argument("--seed", type=SEED, default=0, help="the mind's seed")
     parser.add_argument("--all", action="store_true", help="print frames without commands too")
 
 

@@ -16,6 +16,7 @@ from pathlib import Path
 from typing import Any
 
 from robocog import __version__
+from robocog.argtypes import NEW_DIR_STR, NEW_FILE_STR, SEED, positive_int
 from robocog.atomic import write_text
 from robocog.experiments.garbage import CAUSES, PAPER, ExperimentResult, MindResult
 from robocog.worlds.garbage import GarbageField
@@ -35,13 +36,16 @@ def add_run_arguments(
     parser: argparse.ArgumentParser, runs: int, runs_help: str, report_dir: str
 ) -> None:
     """The arguments every seeded case study shares: runs, seed, JSON file, report folder."""
-    parser.add_argument("--runs", type=int, default=runs, help=runs_help)
-    parser.add_argument("--seed", type=int, default=0, help="seed of the first run")
-    parser.add_argument("--json", metavar="FILE", help="write the figures as JSON")
+    parser.add_argument("--runs", type=positive_int(100_000), default=runs, help=runs_help)
+    parser.add_argument("--seed", type=SEED, default=0, help="seed of the first run")
+    parser.add_argument(
+        "--json", type=NEW_FILE_STR, metavar="FILE", help="write the figures as JSON"
+    )
     parser.add_argument(
         "--out",
         "--report",
         dest="report",
+        type=NEW_DIR_STR,
         metavar="DIR",
         default=report_dir,
         help="folder of the markdown report and plots",
