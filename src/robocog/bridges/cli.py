@@ -99,7 +99,8 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    """Build the mind and the body, and run until interrupted or ``--duration`` ends."""
+    """Build the mind and the body, and run until interrupted, ``--duration`` ends or the
+    robot ends its mission (``ended: WHY`` on its mission topic)."""
     logging.basicConfig(
         level=logging.DEBUG if args.verbose else logging.INFO,
         format="%(asctime)s %(levelname)s %(name)s: %(message)s",
@@ -145,6 +146,12 @@ def run(args: argparse.Namespace) -> int:
         code = 1
     finally:
         body.close()
+    if runner.mission_ended is not None:
+        print(
+            f"robocog bridge: the robot ended its mission ({runner.mission_ended}); "
+            f"the bridge ends after {runner.cycles} cycles",
+            file=sys.stderr,
+        )
     summary = runner.stats.summary()
     log.info(
         "%d cycles, mind p50 %.2f ms, p99 %.2f ms",

@@ -35,6 +35,9 @@ class Topics:
     frame_done: str = "/sim/frame_done"
     #: ROS 1: the move_base action namespace.
     move_base: str = "/move_base"
+    #: the robot's mission state (std_msgs/String): ``ended: WHY`` when the robot (or the
+    #: simulator) has ended its mission; the bridge then ends too, saying why
+    mission: str = "/mission/state"
 
 
 @dataclass(frozen=True)
