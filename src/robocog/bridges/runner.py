@@ -99,7 +99,7 @@ class BridgeRunner:
                     if ended is not None:
                         # the robot's word, not a silence: no watchdog alarm, the run ends
                         self.mission_ended = ended
-                        self._event(f"the robot ended its mission: {ended}")
+                        self._event(f"the robot ended its mission: {ended}", logging.INFO)
                         break
                     if self.config.lockstep:
                         frames, stamp = self.body.wait_for_frame(frames, self.config.cycle_period)
@@ -228,6 +228,6 @@ class BridgeRunner:
             self.body.resume()
         self._event(message)
 
-    def _event(self, message: str) -> None:
+    def _event(self, message: str, level: int = logging.WARNING) -> None:
         self.events.append((time.time(), message))
-        log.warning("%s", message)
+        log.log(level, "%s", message)
