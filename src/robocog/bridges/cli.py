@@ -11,6 +11,7 @@ from __future__ import annotations
 import argparse
 import importlib
 import logging
+import math
 import os
 import signal
 import sys
@@ -205,8 +206,8 @@ def build_config(args: argparse.Namespace) -> BridgeConfig:
             values = [float(v) for v in coords.split(",")]
         except ValueError:
             values = []
-        if not name or len(values) not in (2, 3):
-            raise ValueError(f"--place {item!r}: expected NAME=X,Y[,THETA]")
+        if not name or len(values) not in (2, 3) or not all(math.isfinite(v) for v in values):
+            raise ValueError(f"--place {item!r}: expected NAME=X,Y[,THETA] (finite numbers)")
         places[name] = (values[0], values[1], values[2] if len(values) == 3 else 0.0)
     topics = config.topics
     for item in args.topic:

@@ -199,10 +199,21 @@ def run(args: argparse.Namespace) -> int:
         config = (
             BridgeConfig.from_toml(args.config) if args.config else BridgeConfig.preset(args.robot)
         )
-        frames = read_frames(args.recording, config)
         mind = make_mind(args.mind, config, None, args.seed)
     except (ValueError, OSError, MindUnavailable) as exc:
         print(f"robocog replay: {exc}", file=sys.stderr)
+        return 2
+    try:
+        frames = read_frames(args.recording, config)
+    except OSError as exc:
+        print(f"robocog replay: {exc}", file=sys.stderr)
+        return 2
+    except Exception as exc:  # noqa: BLE001 - the MCAP reader's errors have no common base
+        print(
+            f"robocog replay: {args.recording}: not an MCAP recording that can be read "
+            f"({type(exc).__name__}: {exc})",
+            file=sys.stderr,
+        )
         return 2
     same = differ = 0
     print(f"{'frame':>5} {'time':>8}  {'recorded':40} {args.mind}")
