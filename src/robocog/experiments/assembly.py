@@ -235,7 +235,9 @@ def thesis_figures(table: str) -> tuple[tuple[str, ...], int, float]:
 
 def configure(parser: argparse.ArgumentParser) -> None:
     """Arguments of ``robocog experiment assembly``."""
-    add_run_arguments(parser, 10, "runs with grasp failures", "reports/assembly")
+    add_run_arguments(
+        parser, 10, "runs with grasp failures (0: only the two sequences)", "reports/assembly", 0
+    )
     parser.add_argument(
         "--failure-rate", type=fraction(), default=0.25, help="chance that a grasp slips"
     )

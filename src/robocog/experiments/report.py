@@ -16,7 +16,7 @@ from pathlib import Path
 from typing import Any
 
 from robocog import __version__
-from robocog.argtypes import NEW_DIR_STR, NEW_FILE_STR, SEED, positive_int
+from robocog.argtypes import NEW_DIR_STR, NEW_FILE_STR, SEED, int_range
 from robocog.atomic import write_text
 from robocog.experiments.garbage import CAUSES, PAPER, ExperimentResult, MindResult
 from robocog.worlds.garbage import GarbageField
@@ -33,10 +33,15 @@ CAUSE_TEXT = {
 
 
 def add_run_arguments(
-    parser: argparse.ArgumentParser, runs: int, runs_help: str, report_dir: str
+    parser: argparse.ArgumentParser,
+    runs: int,
+    runs_help: str,
+    report_dir: str,
+    least_runs: int = 1,
 ) -> None:
-    """The arguments every seeded case study shares: runs, seed, JSON file, report folder."""
-    parser.add_argument("--runs", type=positive_int(100_000), default=runs, help=runs_help)
+    """The arguments every seeded case study shares: runs, seed, JSON file, report folder
+    (``least_runs`` 0 where the study has a part that runs without them)."""
+    parser.add_argument("--runs", type=int_range(least_runs, 100_000), default=runs, help=runs_help)
     parser.add_argument("--seed", type=SEED, default=0, help="seed of the first run")
     parser.add_argument(
         "--json", type=NEW_FILE_STR, metavar="FILE", help="write the figures as JSON"
