@@ -203,3 +203,27 @@ def test_a_missing_folder_of_a_file_to_write_is_named(tmp_path: Path) -> None:
     assert code == 2
     assert "Traceback" not in err
     assert f"{tmp_path / 'missing'} does not exist" in err
+
+
+def test_the_installed_command_prints_one_line_and_exits_2() -> None:
+    """The same through the ``robocog`` program a user runs (a process of its own)."""
+    import subprocess
+    import sys
+
+    src = str(Path(cli.__file__).resolve().parents[1])
+    for argv in (["demo", "--runs", "-1"], ["nar", "--memory", "-5GB"]):
+        done = subprocess.run(
+            [
+                sys.executable,
+                "-c",
+                "import sys; from robocog.cli import main; sys.exit(main())",
+                *argv,
+            ],
+            capture_output=True,
+            text=True,
+            timeout=60,
+            env={"PYTHONPATH": src, "PATH": "/usr/bin:/bin"},
+        )
+        assert done.returncode == 2, done.stderr
+        assert done.stdout == "" and len(done.stderr.strip().splitlines()) == 1, done.stderr
+        assert f"argument {argv[1]}" in done.stderr and "Traceback" not in done.stderr
