@@ -111,11 +111,27 @@ def console_commands(text: str) -> list[str]:
     return commands
 
 
+def _tracked_entries() -> set[str] | None:
+    """The names at the repository's root that git tracks (None outside a checkout): an
+    untracked folder there (``reports/``, a build) is output, which examples must not
+    write into."""
+    try:
+        listed = subprocess.run(
+            ["git", "ls-files"], cwd=ROOT, capture_output=True, text=True, timeout=30
+        )
+    except (OSError, subprocess.TimeoutExpired):
+        return None
+    if listed.returncode != 0 or not listed.stdout:
+        return None
+    return {line.split("/")[0] for line in listed.stdout.splitlines()}
+
+
 @pytest.fixture
 def scratch(tmp_path: Path) -> Path:
     """A folder showing the repository's root entries, where examples write freely."""
+    tracked = _tracked_entries()
     for entry in ROOT.iterdir():
-        if entry.name not in (".git",):
+        if entry.name != ".git" and (tracked is None or entry.name in tracked):
             (tmp_path / entry.name).symlink_to(entry)
     return tmp_path
 
