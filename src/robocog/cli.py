@@ -10,9 +10,11 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import os
 import signal
 import sys
 from collections.abc import Sequence
+from typing import NoReturn
 
 #: name -> (module, one-line help)
 COMMANDS: dict[str, tuple[str, str]] = {
@@ -45,11 +47,22 @@ def _load(name: str):  # noqa: ANN202 - a module object
         raise
 
 
+class Parser(argparse.ArgumentParser):
+    """argparse's parser whose errors are one line: what was wrong and where the help is.
+
+    (argparse prints the whole usage first, which for most commands is longer than the
+    error and pushes it out of sight.) Every subcommand's parser, nested ones too, is of
+    this class, as argparse makes subparsers of their parent's class."""
+
+    def error(self, message: str) -> NoReturn:  # noqa: D102 - argparse's hook
+        self.exit(2, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
+
+
 def build_parser(argv: Sequence[str]) -> argparse.ArgumentParser:
     """Build the top-level parser; only the chosen subcommand's module is imported."""
     from robocog import __version__
 
-    parser = argparse.ArgumentParser(
+    parser = Parser(
         prog="robocog",
         description="A reasoning mind for robots: NARS, AgentSpeak and an AtomSpace planner.",
     )
@@ -73,6 +86,20 @@ def main(argv: Sequence[str] | None = None) -> int:
             parser.print_help()
             return 2
         return int(_load(args.command).run(args) or 0)
+    except Exception as exc:
+        # the last guard of "no traceback reaches a user": an error no command turned into
+        # its own message is still one line, with the way to see where it came from
+        if os.environ.get("ROBOCOG_TRACEBACK"):
+            raise
+        name = " ".join(["robocog", *argv[:1]]) if argv and argv[0] in COMMANDS else "robocog"
+        text = " ".join(str(exc).split())
+        text = text if len(text) <= 300 else text[:297] + "..."
+        print(
+            f"{name}: error: {type(exc).__name__}: {text} "
+            "(ROBOCOG_TRACEBACK=1 shows where it happened)",
+            file=sys.stderr,
+        )
+        return 1
     except KeyboardInterrupt as stop:
         # Ctrl-C (or a SIGTERM a command turned into the same) ends a command without a
         # traceback, with the shell's code for it: 128 + the signal's number

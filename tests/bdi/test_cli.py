@@ -61,3 +61,21 @@ def test_conformance_cases(case: str, capsys) -> None:  # noqa: ANN001
     prefix = f"[{path.stem}] "
     got = [line.removeprefix(prefix).rstrip() for line in out.splitlines() if line.startswith("[")]
     assert got == expected
+
+
+@pytest.mark.parametrize("two_agents", [False, True])
+def test_max_cycles_cuts_a_program_that_never_ends_with_exit_3(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], two_agents: bool
+) -> None:
+    loop = tmp_path / "loop.asl"
+    loop.write_text("!loop.\n+!loop <- !loop.\n")
+    done = tmp_path / "done.asl"
+    done.write_text("!g.\n+!g <- .print(hi).\n")
+    files = [str(done), str(loop)] if two_agents else [str(loop)]
+    parser = argparse.ArgumentParser()
+    cli.configure(parser)
+    assert cli.run(parser.parse_args([*files, "--max-cycles", "200"])) == 3
+    assert "stopped after 200 cycles (--max-cycles)" in capsys.readouterr().err
+    # a program that ends within the bound ends as usual
+    assert cli.run(parser.parse_args([str(done), "--max-cycles", "200"])) == 0
+    assert capsys.readouterr().err == ""

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import re
 import subprocess
 from pathlib import Path
 
@@ -49,7 +50,14 @@ def test_places_topics_and_limits_come_from_the_file_and_the_command_line(
 
 @pytest.mark.parametrize(
     "argv",
-    [("--place", "door"), ("--place", "door=1"), ("--topic", "nothing=/x"), ("--topic", "scan")],
+    [
+        ("--place", "door"),
+        ("--place", "door=1"),
+        ("--place", "door=1,nan"),
+        ("--place", "door=1,2,inf"),
+        ("--topic", "nothing=/x"),
+        ("--topic", "scan"),
+    ],
 )
 def test_bad_places_and_topics_are_named(argv: tuple[str, ...]) -> None:
     with pytest.raises(ValueError, match=argv[1]):
@@ -63,6 +71,34 @@ def test_unknown_configuration_keys_are_an_error(tmp_path: Path) -> None:
         BridgeConfig.from_toml(bad)
     with pytest.raises(ValueError, match="place 'x'"):
         BridgeConfig.from_dict({"places": {"x": [1]}})
+
+
+@pytest.mark.parametrize(
+    ("text", "message"),
+    [
+        ("watchdog_seconds = -1.0", "watchdog_seconds must be above 0, not -1.0"),
+        ("watchdog_seconds = nan", "watchdog_seconds must be a finite number"),
+        ("linear_speed = inf", "linear_speed must be a finite number"),
+        ('goto_timeout = "long"', "goto_timeout must be a number"),
+        ("max_mind_failures = 0", "max_mind_failures must be above 0"),
+        ("pose_timeout = -0.5", "pose_timeout must be 0 (not watched) or more"),
+        ("horizontal_fov = 0.0", "horizontal_fov is an angle"),
+        ("lockstep = 1", "lockstep must be true or false"),
+        ('pose_source = "gps"', "pose_source is amcl or odom"),
+        ("start = [0.0, nan]", "start must be finite numbers"),
+        ("[places]\nk = [1.0, inf]", "place 'k' must be finite numbers"),
+        ("watchdog_seconds = ", "not TOML"),
+    ],
+)
+def test_a_bad_number_in_a_robots_file_is_named_with_the_file(
+    tmp_path: Path, text: str, message: str
+) -> None:
+    bad = tmp_path / "robot.toml"
+    bad.write_text(text + "\n")
+    with pytest.raises(ValueError, match=re.escape(message)) as refused:
+        BridgeConfig.from_toml(bad)
+    assert str(refused.value).startswith(str(bad))
+    BridgeConfig(pose_timeout=0.0, scan_timeout=None)  # 0 and None: not watched
 
 
 def test_a_mind_is_found_by_module_and_factory(tmp_path: Path) -> None:

@@ -68,8 +68,13 @@ def _commands(monkeypatch: pytest.MonkeyPatch, **given: str) -> list[str]:
     ],
 )
 def test_the_launch_file_starts_a_bridge_the_cli_accepts(
-    monkeypatch: pytest.MonkeyPatch, given: dict[str, str]
+    monkeypatch: pytest.MonkeyPatch, given: dict[str, str], tmp_path: Path
 ) -> None:
+    # the files it names exist (the command line checks them while it is read)
+    monkeypatch.chdir(tmp_path)
+    for key in ("knowledge", "config"):
+        if key in given:
+            (tmp_path / given[key]).write_text("")
     cmd = _commands(monkeypatch, **given)
     assert cmd[:3] == ["robocog", "bridge", "ros2"]
     parser = argparse.ArgumentParser()

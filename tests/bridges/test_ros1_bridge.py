@@ -218,20 +218,28 @@ def test_ros1_the_garbage_field_served_by_the_sim_is_cleaned_through_move_base(
         text=True,
     )
     run = subprocess.Popen(
-        bridge_argv("ros1", "--mind", mind, "--duration", "60", "-v"),
+        bridge_argv("ros1", "--mind", mind, "--duration", "110", "-v"),
         env=roscore,
         stdout=subprocess.DEVNULL,
         stderr=subprocess.PIPE,
         text=True,
     )
+    bridge_err = ""
     try:
         out, err = sim.communicate(timeout=120)  # the sim ends with the field's mission
-    finally:
-        run.terminate()
+        # and the bridge with it, told so on /mission/state (its --duration is far off)
         _, bridge_err = run.communicate(timeout=30)
+    finally:
+        if run.poll() is None:
+            run.terminate()
+            _, bridge_err = run.communicate(timeout=30)
         if sim.poll() is None:
             sim.kill()
     assert sim.returncode == 0, err[-2000:]
+    assert run.returncode == 0, bridge_err[-3000:]
+    assert "the robot ended its mission (battery spent" in bridge_err or (
+        "the robot ended its mission (route complete" in bridge_err
+    ), bridge_err[-3000:]
     collected = int(out.split("collected ")[1].split(" of ")[0])
     assert collected >= 1, out + bridge_err[-3000:]
     assert re.search(r"GoTo\(place='\w+'\) -> succeeded", bridge_err), bridge_err[-3000:]

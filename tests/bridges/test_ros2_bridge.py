@@ -175,3 +175,22 @@ def test_the_bdi_mind_drives_the_robot(
     spawn: Callable[..., Child], dds: tuple[int, dict[str, str]], bdi_program: str
 ) -> None:
     _mind_turns_away_then_picks(spawn, dds, "bdi", "--program", bdi_program)
+
+
+def test_the_bridge_ends_when_its_robot_ends_the_mission(
+    spawn: Callable[..., Child], dds: tuple[int, dict[str, str]]
+) -> None:
+    domain, env = dds
+    robot = start_robot(spawn, domain, env, {"obstacle": [0.9, 1.0]})
+    run = spawn(bridge(domain, REFLEX, "--duration", "120"), env, "bridge")
+    assert robot.wait_event(is_turn, 60), run.stderr_text()[-3000:]
+    robot.send({"mission": "running"})  # any other state: the bridge goes on
+    time.sleep(0.5)
+    assert run.proc.poll() is None
+    robot.send({"mission": "ended: all bins emptied"})
+    assert run.wait_for(lambda: run.proc.poll() is not None, 20), run.stderr_text()[-3000:]
+    assert run.proc.returncode == 0
+    err = run.stderr_text()
+    assert "the robot ended its mission (all bins emptied)" in err
+    tail = err.split("the robot ended its mission: all bins emptied")[-1]
+    assert "watchdog" not in tail

@@ -124,7 +124,12 @@ def test_odometry_gives_the_pose_when_configured(domain: int) -> None:
 
 
 def test_an_unknown_pose_source_is_refused(domain: int) -> None:
-    link = Ros2Link(BridgeConfig(pose_source="gps"), domain + 2)
+    with pytest.raises(ValueError, match="pose_source"):  # by the configuration itself
+        BridgeConfig(pose_source="gps")
+    # and by the link, should a configuration get by
+    config = BridgeConfig()
+    object.__setattr__(config, "pose_source", "gps")
+    link = Ros2Link(config, domain + 2)
     with pytest.raises(ValueError, match="pose_source"):
         RobotBody(link).start()
     link.close()

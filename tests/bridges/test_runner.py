@@ -257,3 +257,26 @@ def test_text_input_is_found_by_name() -> None:
     assert hear is not None
     hear("x")
     assert mind.heard == ["x"]
+
+
+def test_the_robots_end_of_mission_ends_the_run_saying_why_with_no_watchdog_alarm() -> None:
+    mind = ReflexMind()
+    link, body, feeder, runner, thread, result = start(mind, duration=30.0)
+    try:
+        assert wait_until(lambda: runner.cycles > 2, 5)
+        body.on_mission("running")  # a state other than the end changes nothing
+        time.sleep(0.1)
+        assert thread.is_alive() and body.mission_ended() is None
+        body.on_mission("ended: route complete; collected 3 of 5 objects")
+        feeder.on.clear()  # the robot falls silent once its mission is over
+        thread.join(3)
+        assert not thread.is_alive()  # long before the 30 s of the run
+    finally:
+        runner.stop()
+        thread.join(5)
+        feeder.close()
+    assert result == [0]
+    assert runner.mission_ended == "route complete; collected 3 of 5 objects"
+    assert any("the robot ended its mission: route complete" in t for _t, t in runner.events)
+    assert runner.events[-1][1].startswith("the robot ended its mission")
+    assert link.of("twist")[-1] == (0.0, 0.0)  # left stopped, as at any end

@@ -110,7 +110,9 @@ def test_the_command_writes_json_with_an_entry_per_mind(tmp_path: Path) -> None:
 
 
 def test_bad_arguments_are_refused(capsys) -> None:  # noqa: ANN001 - pytest fixture
-    assert cli.main(["experiment", "garbage", "--runs", "0"]) == 2
+    with pytest.raises(SystemExit) as refused:  # while the command line is read
+        cli.main(["experiment", "garbage", "--runs", "0"])
+    assert refused.value.code == 2
     assert cli.main(["experiment", "garbage", "--minds", "cortex", "--runs", "1"]) == 2
     assert "unknown mind" in capsys.readouterr().err
 

@@ -55,6 +55,25 @@ def test_a_sweep_is_every_combination_and_refuses_what_the_study_lacks() -> None
         check(SweepSpec("garbage", (), ("cortex",), 1, 1))
 
 
+@pytest.mark.parametrize(
+    ("argv", "says"),
+    [
+        (["garbage", "--vary", "detection=2"], "--vary detection=2: detection must be"),
+        (["room-exit", "--vary", "obstacles=1.5"], "--vary obstacles=1.5: obstacles is a whole"),
+        (["assembly", "--vary", "failure_rate=0:2:0.5"], "failure_rate=1.5: failure_rate"),
+        (["garbage", "--light", "foo", "--vary", "detection=0.5"], "light must be one of"),
+    ],
+)
+def test_a_value_the_world_refuses_is_one_line_before_any_mission(
+    argv: list[str], says: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    out = tmp_path / "sweep"
+    assert cli.main(["sweep", *argv, "--runs", "1", "--jobs", "2", "--out", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and says in err and "Traceback" not in err
+    assert not out.exists()  # no table begun
+
+
 @pytest.mark.slow
 def test_local_pool_and_this_process_give_the_same_table(tmp_path: Path) -> None:
     spec = _spec(("bdi", "nars"), runs=1)

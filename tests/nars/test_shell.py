@@ -188,3 +188,18 @@ def test_a_session_run_in_process_leaves_the_collector_as_it_found_it(
     assert shell.run(args) == 0
     assert "Answer: <a --> b>." in capsys.readouterr().out
     assert gc.get_threshold() == before
+
+
+def test_a_memory_larger_than_the_engine_holds_is_taken_and_said() -> None:
+    r = _nar(["--memory", "99999TB"], b"5\n")
+    assert r.returncode == 0 and b"done with 5 additional inference steps" in r.stdout
+    assert b"holds at most 100,000,000 concepts" in r.stderr
+    r = _nar(["--memory", "-1GB"], b"")
+    assert r.returncode == 2 and b"argument --memory" in r.stderr and b"Traceback" not in r.stderr
+
+
+def test_a_twenty_digit_number_of_cycles_is_too_many_not_a_misspelling() -> None:
+    r = _nar([], b"12345678901234567890\n3\n")
+    assert b"at most" in r.stdout and b"cycles per line" in r.stdout
+    assert b"written in digits" not in r.stdout
+    assert b"done with 3 additional inference steps" in r.stdout

@@ -69,8 +69,10 @@ def test_bad_sentence_is_reported_not_raised(capsys) -> None:
 
 
 def test_missing_pddl_file_is_reported(capsys, tmp_path: Path) -> None:
-    code, _, err = _run(["--pddl", str(tmp_path / "d.pddl"), str(tmp_path / "p.pddl")], capsys)
-    assert code == 2 and "d.pddl" in err
+    with pytest.raises(SystemExit) as stop:  # refused while the command line is read
+        _run(["--pddl", str(tmp_path / "d.pddl"), str(tmp_path / "p.pddl")], capsys)
+    err = capsys.readouterr().err
+    assert stop.value.code == 2 and "d.pddl" in err
 
 
 def test_no_plan_exits_with_one(capsys) -> None:

@@ -220,3 +220,33 @@ def test_a_recorded_mission_replays_to_the_same_decisions(tmp_path: Path) -> Non
     )
     assert result.returncode == 0, result.stderr
     assert "0 different" in result.stdout
+
+
+def test_the_bridge_ends_when_the_sim_ends_its_mission() -> None:
+    """The sim says ``ended: WHY`` on /mission/state when its mission is over (here
+    after 40 frames), and a bridge on it ends its run with that reason."""
+    from robocog.bridges.runner import BridgeRunner
+    from tests.bridges.reflex import ReflexMind
+
+    use_loopback()
+    domain = random_domain()
+    world = GarbageField(GarbageConfig(), seed=3)
+    robot = GarbageRobot(world, domain, rate=50.0, max_frames=40)
+    thread = threading.Thread(target=robot.run, daemon=True)
+    thread.start()
+    config = BridgeConfig.preset("garbage")
+    body = RobotBody(Ros2Link(config, domain), config).start()
+    runner = BridgeRunner(body, ReflexMind())  # type: ignore[arg-type]
+    try:
+        started = time.monotonic()
+        assert runner.run(duration=60.0) == 0
+        took = time.monotonic() - started
+    finally:
+        body.close()
+        robot.close()
+        thread.join(timeout=5)
+    assert robot.ended is not None and "40 frames" in robot.ended
+    assert runner.mission_ended == robot.ended
+    assert took < 30.0
+    # (a loaded machine may trip the watchdog before the first frame; never after the end)
+    assert runner.events[-1][1].startswith("the robot ended its mission: 40 frames")

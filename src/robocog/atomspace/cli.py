@@ -12,6 +12,7 @@ import argparse
 import sys
 from pathlib import Path
 
+from robocog.argtypes import EXISTING_FILE_STR, NEW_FILE_STR
 from robocog.atomspace import types as _t
 from robocog.atomspace.atomese import AtomeseError, dump, parse, write_pretty
 from robocog.atomspace.execute import GroundedError, execute
@@ -21,10 +22,16 @@ from robocog.atomspace.space import AtomSpace
 
 def configure(parser: argparse.ArgumentParser) -> None:
     """Declare the command's arguments."""
-    parser.add_argument("files", nargs="+", metavar="FILE", help="Atomese (.scm) files")
+    parser.add_argument(
+        "files", nargs="+", type=EXISTING_FILE_STR, metavar="FILE", help="Atomese (.scm) files"
+    )
     parser.add_argument("--dump", action="store_true", help="print the whole AtomSpace at the end")
-    parser.add_argument("--db", metavar="PATH", help="load this SQLite store first")
-    parser.add_argument("--save", metavar="PATH", help="store the AtomSpace here at the end")
+    parser.add_argument(
+        "--db", type=EXISTING_FILE_STR, metavar="PATH", help="load this SQLite store first"
+    )
+    parser.add_argument(
+        "--save", type=NEW_FILE_STR, metavar="PATH", help="store the AtomSpace here at the end"
+    )
 
 
 def run(args: argparse.Namespace) -> int:
@@ -76,7 +83,11 @@ def run(args: argparse.Namespace) -> int:
     if args.dump:
         out.write(dump(space))
     if args.save:
-        from robocog.atomspace.persist import store
+        from robocog.atomspace.persist import StoreError, store
 
-        store(space, args.save)
+        try:
+            store(space, args.save)
+        except (StoreError, OSError) as exc:
+            print(f"robocog atomese: {exc}", file=sys.stderr)
+            return 1
     return status

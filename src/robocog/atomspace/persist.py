@@ -64,7 +64,10 @@ class SQLiteStore:
 
     def __init__(self, path: str | Path) -> None:
         self.path = Path(path)
-        self._db = sqlite3.connect(str(self.path), isolation_level=None)
+        try:
+            self._db = sqlite3.connect(str(self.path), isolation_level=None)
+        except sqlite3.Error as exc:  # a missing folder, a file one may not open
+            raise StoreError(f"{path}: cannot open the store ({exc})") from None
         try:
             self._db.execute("PRAGMA synchronous = FULL")
             self._db.executescript(_SCHEMA)

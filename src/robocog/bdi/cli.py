@@ -15,21 +15,26 @@ import signal
 import sys
 from pathlib import Path
 
+from robocog.argtypes import EXISTING_FILE_STR, positive_int, seconds
+
 
 def configure(parser: argparse.ArgumentParser) -> None:
     """Declare the arguments of ``robocog agent``."""
     parser.add_argument(
-        "file", nargs="+", help="AgentSpeak program(s) (.asl), or one Jason project (.mas2j)"
+        "file",
+        nargs="+",
+        type=EXISTING_FILE_STR,
+        help="AgentSpeak program(s) (.asl), or one Jason project (.mas2j)",
     )
     parser.add_argument("--name", help="agent name of a single .asl (default: the file name)")
     parser.add_argument(
         "--max-cycles",
-        type=int,
+        type=positive_int(),
         default=None,
         help="stop after this many reasoning cycles (default: run until idle)",
     )
     parser.add_argument(
-        "--timeout", type=float, default=None, help="stop after this many seconds of wall time"
+        "--timeout", type=seconds(), default=None, help="stop after this many seconds of wall time"
     )
     parser.add_argument(
         "--env",
@@ -92,8 +97,9 @@ def run(args: argparse.Namespace) -> int:
             )  # fmt: skip
             if environment is not None:
                 agent.environment = environment
-            agent.run(args.max_cycles)
+            cycles = agent.run(args.max_cycles)
             agents = [agent]
+            cut = args.max_cycles is not None and cycles >= args.max_cycles and not agent.is_idle()
         else:
             project = paths[0].suffix == ".mas2j"
             if project and len(paths) > 1:
@@ -103,6 +109,7 @@ def run(args: argparse.Namespace) -> int:
                 read_project(paths[0])  # errors in the project file come first
             mas = run_files(paths, printer, args.max_cycles, environment)
             agents = list(mas.agents.values())
+            cut = args.max_cycles is not None and not mas.stopped and not mas.is_idle()
     except ParseError as exc:
         print(f"robocog agent: {exc}", file=sys.stderr)
         return 1
@@ -118,4 +125,11 @@ def run(args: argparse.Namespace) -> int:
         for agent in agents:
             for b in agent.beliefs():
                 print(f"{agent.name}: {b!r}", file=sys.stderr)
+    if cut:
+        # as --timeout: the program did not end by itself, and the exit status says so
+        print(
+            f"robocog agent: stopped after {args.max_cycles} cycles (--max-cycles), not idle",
+            file=sys.stderr,
+        )
+        return 3
     return 0

@@ -109,6 +109,7 @@ class RobotBody:
         self._generation = 0
         self._halted: str | None = None
         self._started = False
+        self._mission_ended: str | None = None
 
     # -- lifecycle -------------------------------------------------------------
 
@@ -192,6 +193,24 @@ class RobotBody:
                 if line.strip():
                     self._texts.append(line.strip())
             self._lock.notify_all()
+
+    def on_mission(self, state: str) -> None:
+        """The robot's mission state arrived: ``ended`` or ``ended: WHY`` ends the run
+        (other states, such as ``running``, are only logged)."""
+        head, _, why = state.strip().partition(":")
+        if head.strip().lower() != "ended":
+            log.info("mission state: %s", state.strip()[:200])
+            return
+        with self._lock:
+            if self._mission_ended is None:
+                self._mission_ended = why.strip()[:500] or "no reason given"
+            self._generation += 1  # wakes a wait for readings
+            self._lock.notify_all()
+
+    def mission_ended(self) -> str | None:
+        """Why the robot ended its mission (None while it goes on)."""
+        with self._lock:
+            return self._mission_ended
 
     def on_goal_result(self, token: int, status: str) -> None:
         """A navigation goal ended: ``succeeded``, ``aborted``, ``canceled``, ..."""

@@ -11,6 +11,7 @@ from __future__ import annotations
 import argparse
 import importlib
 import logging
+import math
 import os
 import signal
 import sys
@@ -18,6 +19,7 @@ from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
+from robocog.argtypes import DDS_DOMAIN, EXISTING_FILE, EXISTING_FILE_STR, NEW_FILE, SEED, seconds
 from robocog.bridges.config import BridgeConfig, Topics
 from robocog.minds.registry import MindConfig, MindUnavailable, make, names
 from robocog.robot.protocols import Mind
@@ -35,9 +37,13 @@ def configure(parser: argparse.ArgumentParser) -> None:
         help=f"{', '.join(names())}, or module:factory for a mind of your own "
         "(called with a robocog.minds.registry.MindConfig) (default: nars)",
     )
-    parser.add_argument("--knowledge", type=Path, help="Narsese file given to a NARS mind")
-    parser.add_argument("--program", type=Path, help="AgentSpeak (.asl) program of a BDI mind")
-    parser.add_argument("--config", type=Path, help="TOML file: topics, places, speeds, limits")
+    parser.add_argument("--knowledge", type=EXISTING_FILE, help="Narsese file given to a NARS mind")
+    parser.add_argument(
+        "--program", type=EXISTING_FILE, help="AgentSpeak (.asl) program of a BDI mind"
+    )
+    parser.add_argument(
+        "--config", type=EXISTING_FILE, help="TOML file: topics, places, speeds, limits"
+    )
     parser.add_argument(
         "--robot",
         help="a robot configuration shipped with robocog (default: garbage, the field "
@@ -58,24 +64,24 @@ def configure(parser: argparse.ArgumentParser) -> None:
         help="rename a topic, e.g. scan=/front/scan (repeatable)",
     )
     parser.add_argument(
-        "--watchdog", type=float, help="stop the robot after this many seconds without percepts"
+        "--watchdog", type=seconds(), help="stop the robot after this many seconds without percepts"
     )
     parser.add_argument(
         "--goto-timeout",
-        type=float,
+        type=seconds(),
         help="seconds a GoTo waits for the navigation result before it cancels and fails",
     )
-    parser.add_argument("--seed", type=int, default=0, help="the mind's seed (default 0)")
+    parser.add_argument("--seed", type=SEED, default=0, help="the mind's seed (default 0)")
     parser.add_argument(
         "--lockstep",
         action="store_true",
         help="decide once per scan and acknowledge it on /sim/frame_done (a lock-step sim)",
     )
     parser.add_argument("--namespace", default="", help="prefix of every topic and action")
-    parser.add_argument("--record", type=Path, metavar="FILE.mcap", help="record every message")
-    parser.add_argument("--duration", type=float, help="end after this many seconds")
+    parser.add_argument("--record", type=NEW_FILE, metavar="FILE.mcap", help="record every message")
+    parser.add_argument("--duration", type=seconds(), help="end after this many seconds")
     parser.add_argument(
-        "--domain", type=int, help="ROS 2: the DDS domain (default ROS_DOMAIN_ID or 0)"
+        "--domain", type=DDS_DOMAIN, help="ROS 2: the DDS domain (default ROS_DOMAIN_ID or 0)"
     )
     parser.add_argument(
         "--loopback",
@@ -84,6 +90,7 @@ def configure(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument(
         "--ros1-python",
+        type=EXISTING_FILE_STR,
         default="/usr/bin/python3",
         help="ROS 1: the Python that has rospy (default /usr/bin/python3)",
     )
@@ -93,7 +100,8 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    """Build the mind and the body, and run until interrupted or ``--duration`` ends."""
+    """Build the mind and the body, and run until interrupted, ``--duration`` ends or the
+    robot ends its mission (``ended: WHY`` on its mission topic)."""
     logging.basicConfig(
         level=logging.DEBUG if args.verbose else logging.INFO,
         format="%(asctime)s %(levelname)s %(name)s: %(message)s",
@@ -141,6 +149,12 @@ def run(args: argparse.Namespace) -> int:
         code = 1
     finally:
         body.close()
+    if runner.mission_ended is not None:
+        print(
+            f"robocog bridge: the robot ended its mission ({runner.mission_ended}); "
+            f"the bridge ends after {runner.cycles} cycles",
+            file=sys.stderr,
+        )
     summary = runner.stats.summary()
     log.info(
         "%d cycles, mind p50 %.2f ms, p99 %.2f ms",
@@ -237,8 +251,8 @@ def build_config(args: argparse.Namespace) -> BridgeConfig:
             values = [float(v) for v in coords.split(",")]
         except ValueError:
             values = []
-        if not name or len(values) not in (2, 3):
-            raise ValueError(f"--place {item!r}: expected NAME=X,Y[,THETA]")
+        if not name or len(values) not in (2, 3) or not all(math.isfinite(v) for v in values):
+            raise ValueError(f"--place {item!r}: expected NAME=X,Y[,THETA] (finite numbers)")
         places[name] = (values[0], values[1], values[2] if len(values) == 3 else 0.0)
     topics = config.topics
     for item in args.topic:

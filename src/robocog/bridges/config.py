@@ -35,6 +35,15 @@ class Topics:
     frame_done: str = "/sim/frame_done"
     #: ROS 1: the move_base action namespace.
     move_base: str = "/move_base"
+    #: the robot's mission state (std_msgs/String): ``ended: WHY`` when the robot (or the
+    #: simulator) has ended its mission; the bridge then ends too, saying why
+    mission: str = "/mission/state"
+
+
+#: settings where 0 means "not watched"
+_MAY_BE_ZERO = {"scan_timeout", "pose_timeout", "detections_timeout"}
+#: settings that are angles (rad)
+_ANGLES = {"front_half_width", "obstacle_half_width", "horizontal_fov"}
 
 
 @dataclass(frozen=True)
@@ -100,6 +109,38 @@ class BridgeConfig:
     #: on ``frame_done`` so that a lock-step simulator can step on
     lockstep: bool = False
 
+    def __post_init__(self) -> None:
+        """Every number finite and in its range, so that a typo in a robot's file is an
+        error naming the setting, not a watchdog that never trips or a NaN velocity."""
+        for f in fields(self):
+            value = getattr(self, f.name)
+            kind = str(f.type)
+            if kind in ("float", "float | None", "int"):
+                if value is None and kind == "float | None":
+                    continue
+                if isinstance(value, bool) or not isinstance(value, int | float):
+                    raise ValueError(f"{f.name} must be a number, not {value!r}")
+                if not math.isfinite(value):
+                    raise ValueError(f"{f.name} must be a finite number, not {value!r}")
+                if f.name in _MAY_BE_ZERO:
+                    if value < 0:
+                        raise ValueError(f"{f.name} must be 0 (not watched) or more, not {value!r}")
+                elif f.name in _ANGLES:
+                    if not 0 < value <= 2 * math.pi:
+                        raise ValueError(f"{f.name} is an angle above 0 up to 2 pi, not {value!r}")
+                elif value <= 0:
+                    raise ValueError(f"{f.name} must be above 0, not {value!r}")
+            elif kind == "bool" and not isinstance(value, bool):
+                raise ValueError(f"{f.name} must be true or false, not {value!r}")
+        poses = [(f"place {n!r}", p) for n, p in self.places.items()]
+        if self.start is not None:
+            poses.append(("start", self.start))
+        for what, pose in poses:
+            if not all(isinstance(v, int | float) and math.isfinite(v) for v in pose):
+                raise ValueError(f"{what} must be finite numbers, not {list(pose)}")
+        if self.pose_source not in ("amcl", "odom"):
+            raise ValueError(f"pose_source is amcl or odom, not {self.pose_source!r}")
+
     @classmethod
     def preset(cls, name: str) -> BridgeConfig:
         """A configuration shipped with robocog (``robocog/bridges/robots/NAME.toml``)."""
@@ -116,7 +157,10 @@ class BridgeConfig:
     def from_toml(cls, path: str | Path) -> BridgeConfig:
         """Read a configuration file; unknown keys are an error that names them."""
         with open(path, "rb") as handle:
-            data = tomllib.load(handle)
+            try:
+                data = tomllib.load(handle)
+            except tomllib.TOMLDecodeError as exc:
+                raise ValueError(f"{path}: not TOML: {exc}") from None
         return cls.from_dict(data, source=str(path))
 
     @classmethod
@@ -152,8 +196,11 @@ class BridgeConfig:
                 raise ValueError(f"{source}: start must be [x, y] or [x, y, theta]")
             x, y, *rest = (float(v) for v in value)
             data["start"] = (x, y, rest[0] if rest else 0.0)
-        config = cls(topics=Topics(**topics_data), places=places)
-        return replace(config, **data)
+        try:
+            config = cls(topics=Topics(**topics_data), places=places)
+            return replace(config, **data)
+        except ValueError as exc:
+            raise ValueError(f"{source}: {exc}") from None
 
     @property
     def route_places(self) -> tuple[str, ...]:

@@ -19,6 +19,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from robocog.argtypes import EXISTING_FILE, SEED
 from robocog.bridges.body import RobotBody
 from robocog.bridges.config import BridgeConfig
 from robocog.robot.commands import Command, Drop, GoTo, Outcome, Pick
@@ -61,11 +62,11 @@ class _NoLink:
 
 def configure(parser: argparse.ArgumentParser) -> None:
     """Declare the replay's arguments."""
-    parser.add_argument("recording", type=Path, help="an MCAP file written with --record")
+    parser.add_argument("recording", type=EXISTING_FILE, help="an MCAP file written with --record")
     parser.add_argument("--mind", default="nars", help="nars, bdi or module:factory")
     parser.add_argument("--robot", default="garbage", help="the robot configuration (places)")
-    parser.add_argument("--config", type=Path, help="a TOML bridge configuration instead")
-    parser.add_argument("--seed", type=int, default=0, help="the mind's seed")
+    parser.add_argument("--config", type=EXISTING_FILE, help="a TOML bridge configuration instead")
+    parser.add_argument("--seed", type=SEED, default=0, help="the mind's seed")
     parser.add_argument("--all", action="store_true", help="print frames without commands too")
 
 
@@ -198,10 +199,21 @@ def run(args: argparse.Namespace) -> int:
         config = (
             BridgeConfig.from_toml(args.config) if args.config else BridgeConfig.preset(args.robot)
         )
-        frames = read_frames(args.recording, config)
         mind = make_mind(args.mind, config, None, args.seed)
     except (ValueError, OSError, MindUnavailable) as exc:
         print(f"robocog replay: {exc}", file=sys.stderr)
+        return 2
+    try:
+        frames = read_frames(args.recording, config)
+    except OSError as exc:
+        print(f"robocog replay: {exc}", file=sys.stderr)
+        return 2
+    except Exception as exc:  # noqa: BLE001 - the MCAP reader's errors have no common base
+        print(
+            f"robocog replay: {args.recording}: not an MCAP recording that can be read "
+            f"({type(exc).__name__}: {exc})",
+            file=sys.stderr,
+        )
         return 2
     same = differ = 0
     print(f"{'frame':>5} {'time':>8}  {'recorded':40} {args.mind}")

@@ -59,6 +59,8 @@ class BridgeRunner:
         self._trip_lock = threading.Lock()
         self._hear = text_input_of(mind)
         self._deaf_warned = False
+        #: why the robot ended its mission, when that is what ended the run
+        self.mission_ended: str | None = None
 
     # -- control -----------------------------------------------------------------
 
@@ -92,6 +94,12 @@ class BridgeRunner:
                     if deadline is not None and time.monotonic() >= deadline:
                         break
                     if max_cycles is not None and self.cycles >= max_cycles:
+                        break
+                    ended = self.body.mission_ended()
+                    if ended is not None:
+                        # the robot's word, not a silence: no watchdog alarm, the run ends
+                        self.mission_ended = ended
+                        self._event(f"the robot ended its mission: {ended}", logging.INFO)
                         break
                     if self.config.lockstep:
                         frames, stamp = self.body.wait_for_frame(frames, self.config.cycle_period)
@@ -190,6 +198,8 @@ class BridgeRunner:
     def _watch(self) -> None:
         period = min(0.05, self.config.watchdog_seconds / 4)
         while not self._done.wait(period):
+            if self.body.mission_ended() is not None:
+                continue  # the loop ends on it; silence after the end is no fault
             if self._stop.is_set():
                 if self._trip != "stop":  # (halted here, not in a signal handler)
                     self._halt("stop", "the run was asked to stop")
@@ -218,6 +228,6 @@ class BridgeRunner:
             self.body.resume()
         self._event(message)
 
-    def _event(self, message: str) -> None:
+    def _event(self, message: str, level: int = logging.WARNING) -> None:
         self.events.append((time.time(), message))
-        log.warning("%s", message)
+        log.log(level, "%s", message)

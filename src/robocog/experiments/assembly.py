@@ -29,6 +29,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, cast
 
+from robocog.argtypes import fraction
 from robocog.atomic import write_json, write_text
 from robocog.experiments.assembly_thesis import EXPERIMENTS, WHOLE_ASSEMBLIES, experiment
 from robocog.experiments.report import add_run_arguments, provenance, provenance_lines
@@ -234,9 +235,11 @@ def thesis_figures(table: str) -> tuple[tuple[str, ...], int, float]:
 
 def configure(parser: argparse.ArgumentParser) -> None:
     """Arguments of ``robocog experiment assembly``."""
-    add_run_arguments(parser, 10, "runs with grasp failures", "reports/assembly")
+    add_run_arguments(
+        parser, 10, "runs with grasp failures (0: only the two sequences)", "reports/assembly", 0
+    )
     parser.add_argument(
-        "--failure-rate", type=float, default=0.25, help="chance that a grasp slips"
+        "--failure-rate", type=fraction(), default=0.25, help="chance that a grasp slips"
     )
     parser.add_argument(
         "--mode",

@@ -12,6 +12,7 @@ import sys
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from robocog.argtypes import NEW_DIR, NEW_FILE, SEED, count, positive_int
 from robocog.worlds.garbage import LIGHTS
 
 if TYPE_CHECKING:
@@ -43,9 +44,12 @@ def configure(parser: argparse.ArgumentParser) -> None:
 def configure_garbage(parser: argparse.ArgumentParser) -> None:
     """The garbage experiment's arguments."""
     parser.add_argument(
-        "--runs", type=int, default=30, help="runs per mind (default 30, as Table II)"
+        "--runs",
+        type=positive_int(100_000),
+        default=30,
+        help="runs per mind (default 30, as Table II)",
     )
-    parser.add_argument("--seed", type=int, default=0, help="seed of the first run (default 0)")
+    parser.add_argument("--seed", type=SEED, default=0, help="seed of the first run (default 0)")
     parser.add_argument("--light", choices=LIGHTS, default="sunny", help="lighting (default sunny)")
     parser.add_argument(
         "--minds",
@@ -54,11 +58,11 @@ def configure_garbage(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument(
         "--rounds",
-        type=int,
+        type=count(10_000),
         default=8,
         help="rounds NARS collects before it is asked where trash accumulates (0: skip)",
     )
-    parser.add_argument("--json", type=Path, metavar="FILE", help="write the results as JSON")
+    parser.add_argument("--json", type=NEW_FILE, metavar="FILE", help="write the results as JSON")
     parser.add_argument(
         "--over",
         choices=("process", "ros2"),
@@ -67,10 +71,10 @@ def configure_garbage(parser: argparse.ArgumentParser) -> None:
         "reported beside the in-process run of the same seeds",
     )
     parser.add_argument(
-        "--record", type=Path, metavar="DIR", help="--over ros2: one MCAP recording per mission"
+        "--record", type=NEW_DIR, metavar="DIR", help="--over ros2: one MCAP recording per mission"
     )
     parser.add_argument(
-        "--out", type=Path, default=Path("reports/garbage"), metavar="DIR", help="report folder"
+        "--out", type=NEW_DIR, default=Path("reports/garbage"), metavar="DIR", help="report folder"
     )
     parser.add_argument("--no-report", action="store_true", help="skip the markdown and plots")
     from robocog.inspector.cli import add_arguments

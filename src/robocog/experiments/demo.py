@@ -12,19 +12,24 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
+from robocog.argtypes import NEW_DIR, NEW_FILE, SEED, count, positive_int
 from robocog.worlds.garbage import LIGHTS
 
 
 def configure(parser: argparse.ArgumentParser) -> None:
     """Declare the demo's arguments."""
-    parser.add_argument("--runs", type=int, default=6, help="runs per mind (default 6)")
-    parser.add_argument("--seed", type=int, default=0, help="seed (default 0)")
+    parser.add_argument(
+        "--runs", type=positive_int(100_000), default=6, help="runs per mind (default 6)"
+    )
+    parser.add_argument("--seed", type=SEED, default=0, help="seed (default 0)")
     parser.add_argument("--light", choices=LIGHTS, default="sunny")
     parser.add_argument(
-        "--rounds", type=int, default=12, help="NARS's learning rounds (default 12)"
+        "--rounds", type=count(10_000), default=12, help="NARS's learning rounds (default 12)"
     )
-    parser.add_argument("--out", type=Path, default=Path("robocog-demo"), metavar="DIR")
-    parser.add_argument("--json", type=Path, metavar="FILE", help="also write the results as JSON")
+    parser.add_argument("--out", type=NEW_DIR, default=Path("robocog-demo"), metavar="DIR")
+    parser.add_argument(
+        "--json", type=NEW_FILE, metavar="FILE", help="also write the results as JSON"
+    )
     from robocog.inspector.cli import add_arguments
 
     add_arguments(parser)

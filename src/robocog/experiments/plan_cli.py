@@ -12,7 +12,7 @@ from __future__ import annotations
 import argparse
 import sys
 
-from robocog.experiments.assembly_thesis import experiment
+from robocog.experiments.assembly_thesis import EXPERIMENTS, WHOLE_ASSEMBLIES, experiment
 from robocog.planning import cli as planning_cli
 
 
@@ -22,6 +22,7 @@ def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--thesis",
         metavar="TABLE",
+        choices=[exp.table for exp in EXPERIMENTS + WHOLE_ASSEMBLIES],
         help="plan one of the thesis's tables (5.2 ... 5.10, BlockB, BlockC)",
     )
 

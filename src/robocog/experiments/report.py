@@ -16,6 +16,7 @@ from pathlib import Path
 from typing import Any
 
 from robocog import __version__
+from robocog.argtypes import NEW_DIR_STR, NEW_FILE_STR, SEED, int_range
 from robocog.atomic import write_text
 from robocog.experiments.garbage import CAUSES, PAPER, ExperimentResult, MindResult
 from robocog.worlds.garbage import GarbageField
@@ -32,16 +33,24 @@ CAUSE_TEXT = {
 
 
 def add_run_arguments(
-    parser: argparse.ArgumentParser, runs: int, runs_help: str, report_dir: str
+    parser: argparse.ArgumentParser,
+    runs: int,
+    runs_help: str,
+    report_dir: str,
+    least_runs: int = 1,
 ) -> None:
-    """The arguments every seeded case study shares: runs, seed, JSON file, report folder."""
-    parser.add_argument("--runs", type=int, default=runs, help=runs_help)
-    parser.add_argument("--seed", type=int, default=0, help="seed of the first run")
-    parser.add_argument("--json", metavar="FILE", help="write the figures as JSON")
+    """The arguments every seeded case study shares: runs, seed, JSON file, report folder
+    (``least_runs`` 0 where the study has a part that runs without them)."""
+    parser.add_argument("--runs", type=int_range(least_runs, 100_000), default=runs, help=runs_help)
+    parser.add_argument("--seed", type=SEED, default=0, help="seed of the first run")
+    parser.add_argument(
+        "--json", type=NEW_FILE_STR, metavar="FILE", help="write the figures as JSON"
+    )
     parser.add_argument(
         "--out",
         "--report",
         dest="report",
+        type=NEW_DIR_STR,
         metavar="DIR",
         default=report_dir,
         help="folder of the markdown report and plots",

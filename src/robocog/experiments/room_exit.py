@@ -38,6 +38,7 @@ from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import Any
 
+from robocog.argtypes import count, positive_int
 from robocog.atomic import write_json, write_text
 from robocog.experiments import convergence
 from robocog.experiments.report import add_run_arguments, provenance, provenance_lines
@@ -332,9 +333,13 @@ def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--record", type=Path, metavar="DIR", help="--over ros2: one MCAP recording per run"
     )
-    parser.add_argument("--max-commands", type=int, default=400, help="budget of one run")
-    parser.add_argument("--obstacles", type=int, default=0, help="boxes placed in the room")
-    parser.add_argument("--particles", type=int, default=2000, help="convergence particles")
+    parser.add_argument(
+        "--max-commands", type=positive_int(1_000_000), default=400, help="budget of one run"
+    )
+    parser.add_argument("--obstacles", type=count(100), default=0, help="boxes placed in the room")
+    parser.add_argument(
+        "--particles", type=positive_int(1_000_000), default=2000, help="convergence particles"
+    )
     parser.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
     from robocog.inspector.cli import add_arguments
 

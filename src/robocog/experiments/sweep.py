@@ -214,6 +214,10 @@ class Study:
     ]
     #: the fixed settings -> every setting of the world in effect where no axis varies it
     base: Callable[[dict[str, Any]], dict[str, Any]] = lambda fixed: dict(fixed)
+    #: settings -> None, or ValueError/TypeError naming the one out of range: run on every
+    #: value of every axis before the first mission, so that a bad value is one line at the
+    #: start, not an error in a worker process after the sweep has begun
+    validate: Callable[[dict[str, Any]], None] = lambda settings: None
 
 
 def _numeric_fields(config_type: type) -> dict[str, type]:
@@ -282,6 +286,14 @@ def _plain(config: Any) -> dict[str, Any]:
     return json.loads(json.dumps(dataclasses.asdict(config), default=str))
 
 
+def _check_assembly(settings: dict[str, Any]) -> None:
+    rate = settings.get("failure_rate", 0.0)
+    if not 0.0 <= rate <= 1.0:
+        raise ValueError(f"failure_rate must be a probability in [0, 1], not {rate!r}")
+    if settings.get("sequence", "tables") not in ("tables", "whole"):
+        raise ValueError(f"sequence is tables or whole, not {settings['sequence']!r}")
+
+
 def studies() -> dict[str, Study]:
     """The experiments a sweep can run, by name."""
     from robocog.worlds.garbage import GarbageConfig
@@ -296,6 +308,7 @@ def studies() -> dict[str, Study]:
             _garbage_mission,
             fixed={"light": "sunny"},
             base=lambda fixed: _plain(GarbageConfig(**fixed)),
+            validate=lambda settings: GarbageConfig(**settings) and None,
         ),
         "room-exit": Study(
             "room-exit",
@@ -304,6 +317,7 @@ def studies() -> dict[str, Study]:
             "left_room",
             _room_mission,
             base=lambda fixed: _plain(RoomConfig(**fixed)),
+            validate=lambda settings: RoomConfig(**settings) and None,
         ),
         "assembly": Study(
             "assembly",
@@ -312,6 +326,7 @@ def studies() -> dict[str, Study]:
             "reached",
             _assembly_mission,
             fixed={"sequence": "tables"},
+            validate=_check_assembly,
         ),
     }
 
@@ -334,7 +349,28 @@ def check(spec: SweepSpec) -> Study:
     for name, _value in spec.fixed:
         if name not in study.fixed:
             raise SweepError(f"{spec.experiment} has no fixed setting {name!r}")
+    _check_values(spec, study)
     return study
+
+
+def _check_values(spec: SweepSpec, study: Study) -> None:
+    """Every value of every axis, and the fixed settings, as the world would take them."""
+    fixed = dict(spec.fixed)
+    try:
+        study.validate(dict(fixed))
+    except (ValueError, TypeError) as exc:
+        raise SweepError(str(exc)) from None
+    for axis in spec.axes:
+        kind = study.settings[axis.name]
+        for value in axis.values:
+            if not math.isfinite(value):
+                raise SweepError(f"--vary {axis.name}: {value} is not a finite number")
+            if kind is int and value != int(value):
+                raise SweepError(f"--vary {axis.name}={value:g}: {axis.name} is a whole number")
+            try:
+                study.validate({**fixed, axis.name: int(value) if kind is int else value})
+            except (ValueError, TypeError) as exc:
+                raise SweepError(f"--vary {axis.name}={value:g}: {exc}") from None
 
 
 def run_task(spec_doc: dict[str, Any], task: Task) -> dict[str, Any]:

@@ -18,6 +18,8 @@ import sys
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from robocog.argtypes import NEW_DIR, int_range, positive_int
+
 if TYPE_CHECKING:
     from rich.console import Console
 
@@ -39,17 +41,29 @@ def configure(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument("--minds", help="comma-separated minds (garbage: nars, bdi, ona; "
                         "room-exit: bdi, reference; assembly: the search modes astar, first, quick)")  # fmt: skip
-    parser.add_argument("--runs", type=int, default=30, help="missions per seed block (default 30)")
-    parser.add_argument("--seeds", type=int, default=1, help="seed blocks per point (default 1)")
-    parser.add_argument("--seed", type=int, default=0, help="the first seed block (default 0)")
+    parser.add_argument(
+        "--runs",
+        type=positive_int(100_000),
+        default=30,
+        help="missions per seed block (default 30)",
+    )
+    parser.add_argument(
+        "--seeds", type=positive_int(10_000), default=1, help="seed blocks per point (default 1)"
+    )
+    parser.add_argument(
+        "--seed", type=int_range(0, 10**6), default=0, help="the first seed block (default 0)"
+    )
     parser.add_argument("--light", default="sunny", help="garbage: the light (default sunny)")
     parser.add_argument("--sequence", default="tables", help="assembly: tables or whole")
     parser.add_argument("--compare", metavar="A,B", help="the two minds to difference "
                         "(default: the first two)")  # fmt: skip
-    parser.add_argument("--out", type=Path, metavar="DIR", help="table and report folder "
+    parser.add_argument("--out", type=NEW_DIR, metavar="DIR", help="table and report folder "
                         "(default reports/sweep-EXPERIMENT)")  # fmt: skip
     parser.add_argument(
-        "--jobs", type=int, default=os.cpu_count() or 1, help="local worker processes"
+        "--jobs",
+        type=positive_int(1024),
+        default=os.cpu_count() or 1,
+        help="local worker processes",
     )
     parser.add_argument(
         "--ray",
@@ -68,7 +82,6 @@ def configure(parser: argparse.ArgumentParser) -> None:
 def run(args: argparse.Namespace) -> int:
     """Run (or resume) the sweep and write its report; 2 on a bad request."""
     from rich.console import Console
-    from rich.markup import escape
 
     from robocog.experiments.sweep import (
         SweepError,
@@ -119,10 +132,11 @@ def run(args: argparse.Namespace) -> int:
                 execute, where = in_process, "this process"
             rows = _run_with_progress(spec, table, execute, args.fresh, where, console)
     except SweepError as exc:
-        console.print(escape(f"robocog sweep: {exc}"))
+        # plain lines, never wrapped: an error is one line however narrow the console
+        print(f"robocog sweep: {exc}", file=sys.stderr)
         return 2
     except FileNotFoundError as exc:
-        console.print(escape(f"robocog sweep: no table to report on: {exc.filename}"))
+        print(f"robocog sweep: no table to report on: {exc.filename}", file=sys.stderr)
         return 2
     page = write_report(summarise(spec, rows, compare), out)
     print(f"table: {table}")

@@ -22,9 +22,10 @@ import sys
 import threading
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
-from pathlib import Path
 from types import FrameType
 from typing import Any
+
+from robocog.argtypes import EXISTING_FILE, NEW_FILE, PORT, positive_int
 
 DEFAULT_PORT = 8765
 
@@ -132,7 +133,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     group.add_argument(
         "--inspect",
         nargs="?",
-        type=int,
+        type=PORT,
         const=DEFAULT_PORT,
         default=None,
         metavar="PORT",
@@ -145,11 +146,14 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         help="address the inspector binds (default 127.0.0.1; any other requires the printed token)",
     )
     group.add_argument(
-        "--inspect-record", type=Path, metavar="FILE", help="also write the snapshots as JSON lines"
+        "--inspect-record",
+        type=NEW_FILE,
+        metavar="FILE",
+        help="also write the snapshots as JSON lines",
     )
     group.add_argument(
         "--inspect-record-limit",
-        type=int,
+        type=positive_int(1_000_000, "MB"),
         default=200,
         metavar="MB",
         help="stop recording at this size (default 200 MB)",
@@ -280,9 +284,9 @@ def session(args: argparse.Namespace, source: str = "") -> Iterator[Session | No
 
 def configure(parser: argparse.ArgumentParser) -> None:
     """Arguments of ``robocog inspect``."""
-    parser.add_argument("file", type=Path, help="a log written with --inspect-record")
+    parser.add_argument("file", type=EXISTING_FILE, help="a log written with --inspect-record")
     parser.add_argument(
-        "--port", type=int, default=DEFAULT_PORT, help=f"default {DEFAULT_PORT}; 0 for any"
+        "--port", type=PORT, default=DEFAULT_PORT, help=f"default {DEFAULT_PORT}; 0 for any"
     )
     parser.add_argument(
         "--host", default="127.0.0.1", help="default 127.0.0.1 (others need the token)"

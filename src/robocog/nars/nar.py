@@ -133,9 +133,9 @@ class NAR(Reasoner):
         if len(line) > MAX_LINE:
             raise NarseseError(1, MAX_LINE + 1, f"line longer than {MAX_LINE} characters")
         if line.isdigit():
-            if not (line.isascii() and len(line) <= 12):
+            if not line.isascii():
                 raise NarseseError(1, 1, "a number of cycles is written in digits 0-9")
-            n = int(line)
+            n = int(line) if len(line) <= 12 else MAX_CYCLES_PER_LINE + 1
             if n > MAX_CYCLES_PER_LINE:
                 raise NarseseError(1, 1, f"at most {MAX_CYCLES_PER_LINE} cycles per line")
             emit(self, f"performing {n} inference steps:")

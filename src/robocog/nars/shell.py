@@ -18,11 +18,16 @@ from pathlib import Path
 from types import FrameType
 from typing import TextIO
 
+from robocog.argtypes import EXISTING_DIR_STR, EXISTING_FILE_STR, NEW_FILE_STR, int_range
+
 from . import memfile
 from .config import (
+    BYTES_PER_CONCEPT,
     DEFAULT_MEMORY_BYTES,
+    ENGINE_BYTES,
     ONA_CONCEPTS_MAX,
     ONA_VERSIONS,
+    RANGES,
     concepts_for_memory,
     parse_size,
 )
@@ -32,20 +37,25 @@ from .narsese import NarseseError
 
 def configure(parser: argparse.ArgumentParser) -> None:
     """Declare the shell's arguments."""
-    parser.add_argument("--load", metavar="FILE", help="start from a memory saved earlier")
+    parser.add_argument(
+        "--load", type=EXISTING_FILE_STR, metavar="FILE", help="start from a memory saved earlier"
+    )
     parser.add_argument(
         "--save",
+        type=NEW_FILE_STR,
         metavar="FILE",
         help="save the memory here at the end, or when interrupted (SIGINT, SIGTERM)",
     )
     parser.add_argument(
         "--memory-dir",
+        type=EXISTING_DIR_STR,
         metavar="DIR",
         help="the folder where '*save NAME' and '*load NAME' lines may write and read "
         "(without it those lines are refused)",
     )
     parser.add_argument(
         "--memory",
+        type=memory_argument,
         metavar="SIZE",
         help="memory budget from which the concept capacity follows, e.g. 500MB or 2GB "
         f"(default {DEFAULT_MEMORY_BYTES >> 20}MB), or 'ona' for ONA's {ONA_CONCEPTS_MAX} "
@@ -58,7 +68,12 @@ def configure(parser: argparse.ArgumentParser) -> None:
         help=f"follow this ONA version's behaviour (default {SHELL_ONA}; a memory given "
         "to --load keeps its own unless --ona is given)",
     )
-    parser.add_argument("--seed", type=int, default=666, help="random seed (ONA's is 666)")
+    parser.add_argument(
+        "--seed",
+        type=int_range(-(2**63), 2**63 - 1),
+        default=666,
+        help="random seed (ONA's is 666)",
+    )
     parser.add_argument(
         "--set",
         metavar="NAME=VALUE",
@@ -98,6 +113,34 @@ def capacity(memory: str | None) -> int:
     if memory.strip().lower() == "ona":
         return ONA_CONCEPTS_MAX
     return concepts_for_memory(parse_size(memory))
+
+
+def memory_argument(text: str) -> str:
+    """``--memory``, checked while the command line is read: ``ona`` or a size the engine
+    can run in (a size above what it can use is taken, and said so when the shell starts)."""
+    try:
+        capacity(text)
+    except ValueError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
+    return text
+
+
+#: values ``--memory`` refuses, for the test that walks every option of every command
+memory_argument.bad_values = ("-1", "0", "nan", "inf", "1KB", "abc", "1" + "0" * 20)  # type: ignore[attr-defined]
+
+
+def _capped_note(memory: str | None) -> str | None:
+    """The note that ``--memory`` asked for more than the engine holds, or None."""
+    if memory is None or memory.strip().lower() == "ona":
+        return None
+    most = int(RANGES["concepts_max"][1])
+    if parse_size(memory) <= ENGINE_BYTES + most * BYTES_PER_CONCEPT:
+        return None
+    gb = (ENGINE_BYTES + most * BYTES_PER_CONCEPT) / (1 << 30)
+    return (
+        f"robocog nar: --memory {memory}: the engine holds at most {most:,} concepts "
+        f"(about {gb:.0f} GB); it takes that many"
+    )
 
 
 def check_save_path(path: str) -> str | None:
@@ -188,6 +231,9 @@ def run(args: argparse.Namespace) -> int:
         except ValueError as exc:
             print(f"robocog nar: --memory: {exc}", file=sys.stderr)
             return 2
+        note = _capped_note(memory)
+        if note is not None:
+            print(note, file=sys.stderr)
     memory_dir = getattr(args, "memory_dir", None)
     if memory_dir is not None and not Path(memory_dir).is_dir():
         print(f"robocog nar: --memory-dir {memory_dir}: not a directory", file=sys.stderr)

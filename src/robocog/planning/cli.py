@@ -18,6 +18,7 @@ import json
 import sys
 from pathlib import Path
 
+from robocog.argtypes import EXISTING_FILE, NEW_FILE, positive_int, seconds
 from robocog.atomic import write_text
 from robocog.planning.english import EnglishError
 from robocog.planning.pddl import PDDLError, ground, read_domain, read_problem, scene_problem
@@ -38,10 +39,16 @@ def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--facts", default="", help="sentences of the learning phase")
     parser.add_argument("--goal", default=None, help="sentences of the request")
     parser.add_argument(
-        "--pddl", nargs=2, metavar=("DOMAIN", "PROBLEM"), help="plan a PDDL task instead"
+        "--pddl",
+        nargs=2,
+        type=EXISTING_FILE,
+        metavar=("DOMAIN", "PROBLEM"),
+        help="plan a PDDL task instead",
     )
     parser.add_argument("--mode", choices=ALL_MODES, default="astar", help="search (default astar)")
-    parser.add_argument("--max-iterations", type=int, default=None, help="for --mode bounded")
+    parser.add_argument(
+        "--max-iterations", type=positive_int(), default=None, help="for --mode bounded"
+    )
     parser.add_argument(
         "--prune",
         choices=("global", "branch"),
@@ -54,12 +61,12 @@ def configure(parser: argparse.ArgumentParser) -> None:
         default="created",
         help="BFS: test the goal when a state is created (default) or taken from the queue",
     )
-    parser.add_argument("--max-seconds", type=float, default=None, help="time limit for A*")
+    parser.add_argument("--max-seconds", type=seconds(), default=None, help="time limit for A*")
     parser.add_argument("--json", action="store_true", help="print the result as JSON")
     parser.add_argument(
         "--write-pddl",
         metavar="FILE",
-        type=Path,
+        type=NEW_FILE,
         help="also write the scene and request as a 4-operator blocks PDDL problem",
     )
 

@@ -20,6 +20,15 @@ import sys
 from pathlib import Path
 from typing import Any
 
+from robocog.argtypes import (
+    DDS_DOMAIN,
+    EXISTING_FILE_STR,
+    NEW_DIR_STR,
+    NEW_FILE,
+    SEED,
+    FloatRange,
+    positive_int,
+)
 from robocog.signals import handling
 
 WORLDS = ("garbage", "tabletop", "room")
@@ -36,6 +45,7 @@ def configure(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument(
         "--ros1-python",
+        type=EXISTING_FILE_STR,
         default="/usr/bin/python3",
         help="ROS 1: the Python that has rospy (default /usr/bin/python3)",
     )
@@ -44,13 +54,15 @@ def configure(parser: argparse.ArgumentParser) -> None:
         action="store_true",
         help="keep DDS traffic on 127.0.0.1 (unless CYCLONEDDS_URI is set)",
     )
-    parser.add_argument("--domain", type=int, help="the DDS domain (default ROS_DOMAIN_ID or 0)")
+    parser.add_argument(
+        "--domain", type=DDS_DOMAIN, help="the DDS domain (default ROS_DOMAIN_ID or 0)"
+    )
     parser.add_argument("--namespace", default="", help="prefix of every topic and action")
-    parser.add_argument("--seed", type=int, default=0, help="the field's seed (default 0)")
+    parser.add_argument("--seed", type=SEED, default=0, help="the field's seed (default 0)")
     parser.add_argument("--light", choices=LIGHTS, default="sunny", help="lighting")
     parser.add_argument(
         "--rate",
-        type=float,
+        type=FloatRange(0.0, 1000.0, "x real time", lo_open=True),
         default=1.0,
         help="simulated seconds per wall second (default 1: real time)",
     )
@@ -59,8 +71,8 @@ def configure(parser: argparse.ArgumentParser) -> None:
         action="store_true",
         help="publish a frame, then wait for the controller's /sim/frame_done",
     )
-    parser.add_argument("--record", type=Path, metavar="FILE.mcap", help="record every message")
-    parser.add_argument("--max-frames", type=int, help="end after this many frames")
+    parser.add_argument("--record", type=NEW_FILE, metavar="FILE.mcap", help="record every message")
+    parser.add_argument("--max-frames", type=positive_int(), help="end after this many frames")
     parser.add_argument("-v", "--verbose", action="store_true", help="log more")
     room = parser.add_argument_group("room")
     room.add_argument(
@@ -85,7 +97,11 @@ def configure(parser: argparse.ArgumentParser) -> None:
     )
     tabletop.add_argument("--no-video", action="store_true", help="tabletop: no GIF or frame")
     tabletop.add_argument(
-        "--out", default="reports/sim_tabletop", metavar="DIR", help="tabletop: film folder"
+        "--out",
+        type=NEW_DIR_STR,
+        default="reports/sim_tabletop",
+        metavar="DIR",
+        help="tabletop: film folder",
     )
 
 

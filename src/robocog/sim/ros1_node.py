@@ -39,6 +39,9 @@ from robocog.worlds.garbage import GarbageConfig, GarbageField
 
 #: how long rospy's shutdown may take once the field has reported
 SHUTDOWN_SECONDS = 5.0
+#: how long the sim stays up after it announced the end of its mission: a subscriber
+#: connected then gets the message before the node goes
+MISSION_END_SECONDS = 1.0
 
 
 class Ros1GarbageRobot:
@@ -72,6 +75,8 @@ class Ros1GarbageRobot:
         self.odom_pub = rospy.Publisher("/odom", Odometry, queue_size=5)
         self.amcl_pub = rospy.Publisher("/amcl_pose", PoseWithCovarianceStamped, queue_size=5)
         self.grip_pub = rospy.Publisher("/gripper/state", String, queue_size=5)
+        # latched: a controller that subscribes after the end still hears of it
+        self.mission_pub = rospy.Publisher("/mission/state", String, queue_size=1, latch=True)
         rospy.Subscriber("/cmd_vel", Twist, self.on_twist)
         rospy.Subscriber("/gripper/command", String, self.on_gripper)
         self.server = actionlib.SimpleActionServer(
@@ -232,6 +237,16 @@ def main() -> int:
     )
     try:
         robot.run()
+        if robot.world.done and not robot.stop.is_set():
+            # the end of the mission, told to the controller (a bridge ends with it)
+            w = robot.world
+            why = "route complete" if w.route_complete else "battery spent"
+            robot.mission_pub.publish(
+                robot.String(
+                    f"ended: {why}; collected {w.collected()} of {len(w.objects())} objects"
+                )
+            )
+            robot.stop.wait(MISSION_END_SECONDS)  # time for the latched message to go out
     finally:
         robot.stop.set()
     # the report first: it is the field's own count, whatever rospy's shutdown does next

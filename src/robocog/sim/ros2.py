@@ -130,6 +130,9 @@ class GarbageRobot:
         self.w_joints = writer("/joint_states", m.JointState)
         self.w_gripper = writer(tp.gripper_state, m.String)
         self.w_clock = writer("/clock", m.Clock, SENSOR)
+        self.w_mission = writer(tp.mission, m.String)
+        #: why the mission ended (None while it runs, or when the sim was stopped)
+        self.ended: str | None = None
         self.navigate = ActionServer(
             dp,
             name(tp.navigate_action),
@@ -168,9 +171,10 @@ class GarbageRobot:
                 return
             self._stop.wait(0.05)
         while not self._stop.is_set():
-            if self.world.done or (until is not None and until()):
+            if until is not None and until():
                 break
-            if self.max_frames is not None and self.frames >= self.max_frames:
+            if self.world.done or (self.max_frames is not None and self.frames >= self.max_frames):
+                self._end_mission()
                 break
             with self.lock:  # sent under the lock: a result sent after it is seen after it
                 if self._busy:
@@ -187,6 +191,24 @@ class GarbageRobot:
                 self._wait_for_ack(frame)
             else:
                 self._stop.wait(c.frame_seconds / self.rate)
+
+    def _end_mission(self) -> None:
+        """Tell the controller the mission is over (``ended: WHY`` on the mission topic),
+        so that a bridge ends with it instead of waiting for frames that never come."""
+        w = self.world
+        if w.route_complete:
+            why = "route complete"
+        elif w.out_of_time:
+            why = "battery spent"
+        else:
+            why = f"{self.frames} frames (--max-frames)"
+        self.ended = f"{why}; collected {w.collected()} of {len(w.objects())} objects"
+        with self.lock:
+            self.w_mission.write(m.String(f"ended: {self.ended}"))
+        try:  # reliable: the controller has it before the participant goes
+            self.w_mission.wait_for_acks(duration(seconds=2))
+        except Exception:  # noqa: BLE001 - no controller left to tell: nothing to wait for
+            log.debug("the mission's end was not acknowledged")
 
     def stop(self) -> None:
         """End ``run`` and the listener."""

@@ -65,6 +65,7 @@ class StandIn:
         self.pose_pub = rospy.Publisher("/amcl_pose", PoseWithCovarianceStamped, queue_size=5)
         self.grip_pub = rospy.Publisher("/gripper/state", String, queue_size=5)
         self.text_pub = rospy.Publisher("/narsese", String, queue_size=10)
+        self.mission_pub = rospy.Publisher("/mission/state", String, queue_size=1, latch=True)
         rospy.Subscriber("/cmd_vel", Twist, self.on_twist)
         rospy.Subscriber("/gripper/command", String, self.on_grip)
         # beside the action server: every cancel request, even with no goal under way
@@ -137,6 +138,8 @@ class StandIn:
             self.goal_seconds = float(data["goal_seconds"])
         if "narsese" in data:
             self.text_pub.publish(self.String(str(data["narsese"])))
+        if "mission" in data:
+            self.mission_pub.publish(self.String(str(data["mission"])))
 
     def publish(self) -> None:
         """Publish one round of scan, detections, amcl pose and gripper state."""

@@ -123,6 +123,7 @@ class StandInRobot:
         )
         self.gripper_writer = DataWriter(dp, topic(tp.gripper_state, m.String), qos=RELIABLE)
         self.narsese_writer = DataWriter(dp, topic(tp.narsese, m.String), qos=RELIABLE)
+        self.mission_writer = DataWriter(dp, topic(tp.mission, m.String), qos=RELIABLE)
         self.navigate = ActionServer(
             dp,
             navigate_action or tp.navigate_action,
@@ -191,11 +192,14 @@ class StandInRobot:
         self.gripper_writer.write(m.String(scene.holding))
 
     def update(self, data: dict[str, Any]) -> None:
-        """Change the scene (see ``Scene.update``); ``narsese`` sends text to the mind."""
+        """Change the scene (see ``Scene.update``); ``narsese`` sends text to the mind,
+        ``mission`` the robot's mission state."""
         with self._lock:
             self.scene.update(data)
         if "narsese" in data:
             self.narsese_writer.write(m.String(str(data["narsese"])))
+        if "mission" in data:  # the robot's mission state, e.g. "ended: test over"
+            self.mission_writer.write(m.String(str(data["mission"])))
 
     def _publish_loop(self, rate: float) -> None:
         while not self._stop.wait(1.0 / rate):

@@ -204,6 +204,8 @@ class Ros1Link:
             body.on_gripper(msg["text"])
         elif kind == "text":
             body.on_text(msg["text"])
+        elif kind == "mission":
+            body.on_mission(msg["text"])
         elif kind == "goal":
             body.on_goal_result(int(msg["id"]), msg["status"])
         elif kind == "ready":

@@ -119,6 +119,8 @@ class Node:
         )
         rospy.Subscriber(topics["gripper_state"], String, self.on_gripper, queue_size=10)
         rospy.Subscriber(topics["narsese"], String, self.on_text, queue_size=100)
+        if topics.get("mission"):
+            rospy.Subscriber(topics["mission"], String, self.on_mission, queue_size=10)
         if settings.get("pose_source", "amcl") == "odom":
             rospy.Subscriber(topics["odom"], Odometry, self.on_pose_message, queue_size=5)
         else:
@@ -192,6 +194,10 @@ class Node:
     def on_text(self, msg: Any) -> None:
         """Text for the mind (Narsese), as a std_msgs/String."""
         self.emit({"k": "text", "text": msg.data})
+
+    def on_mission(self, msg: Any) -> None:
+        """The robot's mission state (``ended: WHY`` at its end), as a std_msgs/String."""
+        self.emit({"k": "mission", "text": msg.data})
 
     # -- from the parent -------------------------------------------------------------
 

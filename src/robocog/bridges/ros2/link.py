@@ -125,6 +125,10 @@ class Ros2Link:
                 DataReader(dp, topic(tp.narsese, m.String), qos=typed(RELIABLE, m.String)),
                 self._on_text,
             ),
+            (
+                DataReader(dp, topic(tp.mission, m.String), qos=typed(RELIABLE, m.String)),
+                self._on_mission,
+            ),
         ]
         if self.config.pose_source == "odom":
             readers.append(
@@ -285,6 +289,9 @@ class Ros2Link:
 
     def _on_text(self, msg: m.String) -> None:
         self._body.on_text(msg.data)
+
+    def _on_mission(self, msg: m.String) -> None:
+        self._body.on_mission(msg.data)
 
 
 def boxes_of(a: m.Detection2DArray) -> list[BoxReading]:
