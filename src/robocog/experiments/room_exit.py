@@ -38,7 +38,7 @@ from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import Any
 
-from robocog.argtypes import count, positive_int
+from robocog.argtypes import NEW_DIR, count, positive_int
 from robocog.atomic import write_json, write_text
 from robocog.experiments import convergence
 from robocog.experiments.report import add_run_arguments, provenance, provenance_lines
@@ -331,7 +331,7 @@ def configure(parser: argparse.ArgumentParser) -> None:
         "a bridge process, over loopback DDS",
     )
     parser.add_argument(
-        "--record", type=Path, metavar="DIR", help="--over ros2: one MCAP recording per run"
+        "--record", type=NEW_DIR, metavar="DIR", help="--over ros2: one MCAP recording per run"
     )
     parser.add_argument(
         "--max-commands", type=positive_int(1_000_000), default=400, help="budget of one run"
