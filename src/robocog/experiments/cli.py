@@ -111,6 +111,16 @@ def run_garbage_args(args: argparse.Namespace) -> int:
     if getattr(args, "over", "process") == "ros2":
         return run_garbage_over_ros2(args, specs)
     from robocog.inspector.cli import session
+    from robocog.progress import duration
+
+    seconds, note = garbage_estimate([s.name for s in specs], args.runs, args.rounds)
+    learning = f", then {args.rounds} learning rounds for NARS" if args.rounds else ""
+    print(
+        "robocog experiment garbage: Table II of Hammer et al., "
+        f"{args.runs} runs per mind ({', '.join(s.name for s in specs)}) from seed {args.seed} "
+        f"in {args.light} light{learning} ({duration(seconds)} on an idle machine{note})",
+        flush=True,
+    )
 
     with session(args, "robocog experiment garbage") as inspecting:
         result = run_garbage(
@@ -124,6 +134,32 @@ def run_garbage_args(args: argparse.Namespace) -> int:
             watch=inspecting.watcher() if inspecting else None,
         )
     return 0 if all(m.ok for m in result.minds.values()) else 1
+
+
+#: CPU seconds of one mission per mind and of one NARS learning round, measured with
+#: ``robocog demo`` piped through ``cat`` on this project's 2-core machine (the rounds grow
+#: slower as the memory fills; this is their mean over 12)
+MISSION_SECONDS = {"BDI": 0.05, "NARS": 0.25, "ONA": 0.5}
+ROUND_SECONDS = 0.6
+#: how much slower the pure-Python NARS engine is than the compiled one
+PURE_FACTOR = 4.5
+
+
+def garbage_estimate(names: list[str], runs: int, rounds: int) -> tuple[float, str]:
+    """Seconds the garbage missions and the learning rounds are expected to take on an
+    idle machine, and a note on the NARS engine that runs them (the pure one is slower)."""
+    import robocog.nars
+
+    pure = robocog.nars.ENGINE != "compiled"
+    factor = PURE_FACTOR if pure else 1.0
+    seconds = 1.0 + rounds * ROUND_SECONDS * factor
+    for name in names:
+        cost = MISSION_SECONDS.get(name, 0.25)
+        seconds += runs * cost * (factor if name == "NARS" else 1.0)
+    note = ""
+    if pure and "NARS" in names:
+        note = "; NARS runs as pure Python: `robocog build` makes it about 4 times faster"
+    return seconds, note
 
 
 def run_garbage(
@@ -141,31 +177,33 @@ def run_garbage(
     (``watch`` hooks every loop, for ``--inspect``)."""
     from rich.console import Console
     from rich.markup import escape
-    from rich.progress import BarColumn, MofNCompleteColumn, Progress, TimeElapsedColumn
 
     from robocog.experiments.garbage import run_experiment
     from robocog.experiments.report import mind_status, summary_table, write_json, write_report
+    from robocog.progress import Steps
     from robocog.worlds.garbage import GarbageConfig
 
     console = Console()
     config = GarbageConfig(light=light, **(config_overrides or {}))  # type: ignore[arg-type]
-    with Progress(
-        "[progress.description]{task.description}",
-        BarColumn(),
-        MofNCompleteColumn(),
-        TimeElapsedColumn(),
-        console=console,
-        transient=True,
-    ) as progress:
-        task = progress.add_task("garbage runs", total=runs * len(specs))
+    learner = next((s.name for s in specs if s.name in ("NARS", "ONA")), None)
+    with Steps(console) as steps:
+        missions = steps.add("garbage runs", runs * len(specs))
+        learning = steps.add(f"{learner} learning rounds", rounds) if rounds and learner else None
+
+        def advance() -> None:
+            steps.advance(missions)
+            if learning is not None and steps.done(missions):
+                steps.start(learning)  # the learning phase begins
+
         result = run_experiment(
             specs,
             runs=runs,
             seed=seed,
             config=config,
             rounds=rounds,
-            advance=lambda: progress.advance(task),
+            advance=advance,
             watch=watch,
+            on_round=None if learning is None else lambda _r: steps.advance(learning),
         )
     console.print(summary_table(result))
     for m in result.minds.values():

@@ -14,7 +14,6 @@ from __future__ import annotations
 
 import argparse
 import os
-import sys
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -133,27 +132,44 @@ def run(args: argparse.Namespace) -> int:
 def _run_with_progress(
     spec: SweepSpec, table: Path, execute: Executor, fresh: bool, where: str, console: Console
 ) -> list[dict[str, Any]]:
-    """The sweep with a progress bar on the terminal (none when stderr is not one)."""
-    from rich.progress import (
-        BarColumn,
-        MofNCompleteColumn,
-        Progress,
-        TimeElapsedColumn,
-        TimeRemainingColumn,
-    )
-
+    """The sweep with a progress bar on the terminal, plain lines when stderr is not one;
+    a table that already holds missions is resumed, and says so."""
     from robocog.experiments.sweep import run_sweep
+    from robocog.progress import Steps, duration, header
 
-    console.print(f"robocog sweep {spec.experiment}: {spec.missions} missions on {where}; "
-                  f"table {table}")  # fmt: skip
-    with Progress(
-        "[progress.description]{task.description}",
-        BarColumn(),
-        MofNCompleteColumn(),
-        TimeElapsedColumn(),
-        TimeRemainingColumn(),
-        console=console,
-        disable=not sys.stderr.isatty(),
-    ) as progress:
-        task = progress.add_task("missions", total=spec.missions)
-        return run_sweep(spec, table, execute, fresh, lambda n: progress.advance(task, n))
+    per_mission = MISSION_SECONDS.get(spec.experiment, 1.0)
+    expected = spec.missions * per_mission / max(1, _workers(where))
+    header(
+        console,
+        f"robocog sweep {spec.experiment}",
+        f"{spec.missions} missions on {where}; table {table}",
+        f"{duration(expected)} for all of them on an idle machine",
+    )
+    with Steps(console) as steps:
+        task = steps.add("missions", spec.missions)
+        first = [True]
+
+        def advance(n: int) -> None:
+            if first[0]:  # run_sweep first says how many the table already holds
+                first[0] = False
+                if n == spec.missions:
+                    steps.say(f"resumed: all {n} missions are already in {table}; none to run")
+                elif n:
+                    steps.say(
+                        f"resuming: {n} of {spec.missions} missions are already in {table}; "
+                        f"running the other {spec.missions - n} (--fresh starts over)"
+                    )
+            steps.advance(task, n)
+
+        return run_sweep(spec, table, execute, fresh, advance)
+
+
+#: wall seconds of one mission in one worker, for the header's estimate (garbage: a NARS
+#: or BDI mission, pure-Python NARS; room-exit and assembly missions are shorter)
+MISSION_SECONDS = {"garbage": 1.0, "room-exit": 0.3, "assembly": 0.2}
+
+
+def _workers(where: str) -> int:
+    """The number of local processes ``where`` names (1 when it names none)."""
+    first = where.split()[0]
+    return int(first) if first.isdigit() else 1
