@@ -317,6 +317,8 @@ def run(args: argparse.Namespace) -> int:
     from rich.progress import Progress
     from rich.table import Table
 
+    from robocog.experiments.tables import fit
+
     console = Console()
     clean: dict[str, SequenceRun] = {}
     failing: dict[str, list[SequenceRun]] = {name: [] for name in SEQUENCES}
@@ -383,7 +385,7 @@ def run(args: argparse.Namespace) -> int:
                 f"{rec.get('reached', 0)}/{rec.get('runs', 0)} reached, "
                 f"{rec.get('failed_grasps', 0)} slips, {rec.get('replans', 0)} replans",
             )
-        console.print(table)
+        console.print(fit(table, console.width))
 
     minds = {
         "planner": _mind_summary(list(clean.values())),

@@ -180,6 +180,7 @@ def run_garbage(
 
     from robocog.experiments.garbage import run_experiment
     from robocog.experiments.report import mind_status, summary_table, write_json, write_report
+    from robocog.experiments.tables import fit
     from robocog.progress import Steps
     from robocog.worlds.garbage import GarbageConfig
 
@@ -205,7 +206,7 @@ def run_garbage(
             watch=watch,
             on_round=None if learning is None else lambda _r: steps.advance(learning),
         )
-    console.print(summary_table(result))
+    console.print(fit(summary_table(result), console.width))
     for m in result.minds.values():
         console.print(escape(mind_status(m)))
     acc = result.accumulation

@@ -255,6 +255,8 @@ def run(args: argparse.Namespace) -> int:
     from rich.progress import Progress
     from rich.table import Table
 
+    from robocog.experiments.tables import fit
+
     console = Console()
     config = RoomConfig(obstacles=args.obstacles)
     names = list(MINDS) if args.mind == "both" else [args.mind]
@@ -301,7 +303,7 @@ def run(args: argparse.Namespace) -> int:
             *_outcome_cells(s),
             f"{s['success_rate']:.0%}",
         )
-    console.print(table)
+    console.print(fit(table, console.width))
     for name, reason in unavailable.items():
         console.print(f"[yellow]{name}: not run ({reason})[/yellow]")
     ctable = Table(title="Section 4: D after one step / D before, against alpha")
@@ -316,7 +318,7 @@ def run(args: argparse.Namespace) -> int:
             f"{info['steps_holding']}/{info['steps']}",
             where,
         )
-    console.print(ctable)
+    console.print(fit(ctable, console.width))
     for name, steps in room_steps.items():
         fails = [
             f"{st.step} ({st.mean_distance:.2f} m: {st.ratio:.2f})" for st in steps if not st.holds
