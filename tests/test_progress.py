@@ -75,3 +75,14 @@ def test_the_header_and_rough_durations() -> None:
     assert duration(1) == "about 5 s"
     assert duration(130) == "about 2 min"
     assert duration(5400) == "about 1.5 h"
+
+
+def test_quick_steps_are_summed_up_in_a_few_lines() -> None:
+    console, out = _piped()
+    with Steps(console) as steps:
+        task = steps.add("missions", 500)
+        for _ in range(500):
+            steps.advance(task)
+    lines = out.getvalue().splitlines()
+    assert lines[0].startswith("missions: 1/500") and lines[-1].startswith("missions: 500/500")
+    assert len(lines) <= 4

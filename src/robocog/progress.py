@@ -3,8 +3,8 @@
 A command that runs for more than a few seconds says first what it runs and about how
 long that takes (``header``), then shows its progress (``Steps``): on a terminal a rich
 progress bar, one line per phase; when the output is piped or redirected, plain lines, one
-per finished step and, while a step is still running, one at least every few seconds, so
-that a log or a CI job never sits silent. Every package may use this module: it imports
+per finished step (at most one a second) and, while a step is still running, one at least
+every few seconds, so that a log or a CI job never sits silent. Every package may use this module: it imports
 nothing of robocog.
 """
 
@@ -21,6 +21,8 @@ if TYPE_CHECKING:
 
 #: the longest a piped command stays silent, in seconds (less than the promised 5 s)
 QUIET_LIMIT = 4.0
+#: the least time between two plain lines for steps of the same phase, in seconds
+STEP_LINE_SECONDS = 1.0
 
 
 def duration(seconds: float) -> str:
@@ -48,6 +50,7 @@ class _Task:
     total: int | None
     done: int = 0
     detail: str = ""
+    said: bool = False
     rich_id: int | None = None
     started: float = field(default_factory=time.monotonic)
 
@@ -61,8 +64,8 @@ class _Task:
 class Steps:
     """Progress of one command's phases: ``add`` a phase, ``advance`` it, ``note`` what
     it is doing now. On a terminal a transient rich bar per phase; otherwise plain lines
-    (every step, and a ``still running`` line whenever ``QUIET_LIMIT`` seconds passed
-    without one). Use as a context manager."""
+    (a phase's first and last step, others at most one a second, and a ``still running``
+    line whenever ``QUIET_LIMIT`` seconds passed without one). Use as a context manager."""
 
     def __init__(self, console: Console, quiet_limit: float = QUIET_LIMIT) -> None:
         self.console = console
@@ -121,17 +124,20 @@ class Steps:
         task = _Task(description, total)
         with self._lock:
             self._tasks.append(task)
-            self._current = task
+            current = self._current
+            if current is None or (current.total is not None and current.done >= current.total):
+                self._current = task  # else it waits for its first step or for ``start``
         if self._rich is not None:
             task.rich_id = int(self._rich.add_task(description, total=total, detail=""))
         return len(self._tasks) - 1
 
     def start(self, number: int) -> None:
-        """Phase ``number`` is the one running now (a plain line says it began)."""
+        """Phase ``number`` is the one running now (a plain line says so, once)."""
         task = self._tasks[number]
         with self._lock:
             self._current = task
-        if self._rich is None:
+            begun, task.said = task.said, True
+        if self._rich is None and not begun:
             self._say(task)
 
     def done(self, number: int) -> bool:
@@ -147,8 +153,17 @@ class Steps:
             self._current = task
         if self._rich is not None and task.rich_id is not None:
             self._rich.advance(task.rich_id, steps)  # type: ignore[arg-type]
-        elif steps:
+        elif steps and self._worth_a_line(task):
             self._say(task)
+
+    def _worth_a_line(self, task: _Task) -> bool:
+        """A step gets its own plain line when it is its phase's first or last, or a
+        second has passed since the last line: a log of a thousand quick steps stays short."""
+        with self._lock:
+            first, task.said = not task.said, True
+            recent = time.monotonic() - self._last < STEP_LINE_SECONDS
+        finished = task.total is not None and task.done >= task.total
+        return first or finished or not recent
 
     def note(self, number: int, detail: str) -> None:
         """What phase ``number`` is doing now (shown beside its count)."""
