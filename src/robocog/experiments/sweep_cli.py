@@ -137,8 +137,7 @@ def _run_with_progress(
     from robocog.experiments.sweep import run_sweep
     from robocog.progress import Steps, duration, header
 
-    per_mission = MISSION_SECONDS.get(spec.experiment, 1.0)
-    expected = spec.missions * per_mission / max(1, _workers(where))
+    expected = _expected_seconds(spec) / max(1, _workers(where))
     header(
         console,
         f"robocog sweep {spec.experiment}",
@@ -164,9 +163,19 @@ def _run_with_progress(
         return run_sweep(spec, table, execute, fresh, advance)
 
 
-#: wall seconds of one mission in one worker, for the header's estimate (garbage: a NARS
-#: or BDI mission, pure-Python NARS; room-exit and assembly missions are shorter)
-MISSION_SECONDS = {"garbage": 1.0, "room-exit": 0.3, "assembly": 0.2}
+#: wall seconds of one room-exit or assembly mission in one worker (a garbage mission's
+#: depends on the mind and on the NARS engine: ``garbage_estimate``)
+MISSION_SECONDS = {"room-exit": 0.1, "assembly": 0.1}
+
+
+def _expected_seconds(spec: SweepSpec) -> float:
+    """CPU seconds of the whole sweep on one worker, roughly."""
+    per_mind = spec.missions // max(1, len(spec.minds))
+    if spec.experiment == "garbage":
+        from robocog.experiments.cli import garbage_estimate
+
+        return garbage_estimate([m.upper() for m in spec.minds], per_mind, 0)[0]
+    return spec.missions * MISSION_SECONDS.get(spec.experiment, 0.1)
 
 
 def _workers(where: str) -> int:

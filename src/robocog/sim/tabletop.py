@@ -45,8 +45,8 @@ def parse_script(text: str) -> list[Command]:
 
 #: wall seconds to build the scene and to run one command, on this project's 2-core
 #: machine (rendering the cameras and finding the tags take most of it)
-SETUP_SECONDS = 5.0
-COMMAND_SECONDS = 6.0
+SETUP_SECONDS = 3.0
+COMMAND_SECONDS = 2.0
 
 
 def run_tabletop(args: argparse.Namespace) -> int:
