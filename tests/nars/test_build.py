@@ -83,3 +83,52 @@ def test_a_current_build_is_not_built_again(
     monkeypatch.setattr(build, "package_dir", lambda: here)
     assert cli.main(["build"]) == 0
     assert "is current" in capsys.readouterr().out
+
+
+def test_a_folder_it_cannot_write_is_named_before_any_compiling(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys
+) -> None:  # noqa: ANN001
+    here = _sources(tmp_path)
+    monkeypatch.setattr(build, "package_dir", lambda: here)
+    monkeypatch.setattr(build, "missing_tools", lambda: None)
+    monkeypatch.setattr(build.os, "access", lambda path, mode: False)
+    monkeypatch.setattr(build, "build", lambda *a, **k: pytest.fail("compiled anyway"))
+    assert cli.main(["build"]) == 1
+    out = capsys.readouterr().out
+    assert "is not writable" in out and str(here) in out and len(out.splitlines()) == 1
+
+
+@pytest.mark.slow
+@pytest.mark.skipif(build.missing_tools() is not None, reason=f"{build.missing_tools()}")
+def test_a_build_compiles_into_place_and_replaces_the_old_one(tmp_path: Path) -> None:
+    """The whole path on two small modules of a package laid out as robocog's: Cython,
+    the C compiler, the folder swapped in, the manifest; the modules then import."""
+    import subprocess
+
+    here = tmp_path / "robocog" / "nars"
+    here.mkdir(parents=True)
+    (here / "first.py").write_text("def double(x: int) -> int:\n    return 2 * x\n")
+    (here / "second.py").write_text("from robocog.nars.first import double\nFOUR = double(2)\n")
+    old = here / build.COMPILED
+    old.mkdir()
+    (old / "stale.txt").write_text("an older build")
+    events: list[tuple[str, str]] = []
+    folder = build.build(here, 2, lambda e, m: events.append((e, m)), ("first", "second"))
+    assert folder == old and not (folder / "stale.txt").exists()
+    assert sorted(events) == sorted(
+        [("starts", "first"), ("done", "first"), ("starts", "second"), ("done", "second")]
+    )
+    manifest = json.loads((folder / "manifest.json").read_text())
+    assert manifest["sources"] == build.digests(here, ("first", "second"))
+    built = sorted(p.name.split(".")[0] for p in folder.iterdir() if p.suffix in (".so", ".pyd"))
+    assert built == ["first", "second"]
+    assert [p.name for p in here.iterdir() if p.name.startswith(build.COMPILED)] == [build.COMPILED]
+    so = next(folder.glob("first.*"))
+    code = (
+        "import importlib.util\n"
+        f"spec = importlib.util.spec_from_file_location('first', {str(so)!r})\n"
+        "m = importlib.util.module_from_spec(spec); spec.loader.exec_module(m)\n"
+        "print(m.double(21), m.__file__.endswith(('.so', '.pyd')))"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
+    assert out.stdout.split() == ["42", "True"], out.stderr

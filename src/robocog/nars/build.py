@@ -169,14 +169,15 @@ def build(
     here: Path,
     jobs: int,
     report: object = None,
+    modules: tuple[str, ...] = ENGINE_MODULES,
 ) -> Path:
     """Compile every engine module into a fresh folder and put it in place of
     ``here/_compiled``; returns that folder. ``report(event, module)`` is told of each
     module that ``starts`` and is ``done``. Raises BuildError, leaving the old build."""
     import tempfile
 
-    sources = digests(here)  # as they are when the build starts
-    order = sorted(ENGINE_MODULES, key=lambda m: -(here / f"{m}.py").stat().st_size)
+    sources = digests(here, modules)  # as they are when the build starts
+    order = sorted(modules, key=lambda m: -(here / f"{m}.py").stat().st_size)
     with tempfile.TemporaryDirectory(prefix="robocog-build-") as work:
         built: dict[str, str] = {}
         import multiprocessing
@@ -282,6 +283,8 @@ def run(args: argparse.Namespace) -> int:
         )
         return 0
     why = missing_tools()
+    if why is None and not os.access(here, os.W_OK):
+        why = f"{here} is not writable (build where robocog is installed by you)"
     if why:
         console.print(
             f"robocog build: cannot compile the NARS engine here: {why}; NARS runs as pure "
