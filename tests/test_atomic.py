@@ -56,3 +56,12 @@ def test_a_replaced_file_keeps_its_own_mode(tmp_path: Path) -> None:
     assert target.stat().st_mode & 0o777 == 0o640
     assert json.loads(target.read_text()) == [2]
     assert sorted(p.name for p in tmp_path.iterdir()) == ["results.json"]
+
+
+def test_a_private_file_is_the_owners_alone_whatever_the_umask(tmp_path: Path) -> None:
+    before = os.umask(0o002)
+    try:
+        atomic.write_bytes(tmp_path / "memory.nar", b"x", mode=0o600)
+    finally:
+        os.umask(before)
+    assert (tmp_path / "memory.nar").stat().st_mode & 0o777 == 0o600

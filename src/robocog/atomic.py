@@ -19,17 +19,24 @@ from pathlib import Path
 from typing import Any
 
 
-def write_bytes(path: str | os.PathLike[str], data: bytes) -> None:
-    """Replace the file at ``path`` with ``data`` in one step, creating its folder."""
+def write_bytes(path: str | os.PathLike[str], data: bytes, mode: int | None = None) -> None:
+    """Replace the file at ``path`` with ``data`` in one step, creating its folder.
+
+    ``mode`` gives the file those permissions whatever the umask (0o600 for a file that
+    only its owner may read, as a saved memory); by default it gets what ``open`` gives.
+    """
     target = Path(path)
     target.parent.mkdir(parents=True, exist_ok=True)
     fd, tmp = _create_beside(target)
     try:
         with os.fdopen(fd, "wb") as f:
-            try:
-                os.fchmod(f.fileno(), stat.S_IMODE(os.stat(target).st_mode))  # its own mode
-            except FileNotFoundError:
-                pass  # a new file: the mode the umask gave it at creation
+            if mode is not None:
+                os.fchmod(f.fileno(), mode)
+            else:
+                try:
+                    os.fchmod(f.fileno(), stat.S_IMODE(os.stat(target).st_mode))  # its own
+                except FileNotFoundError:
+                    pass  # a new file: the mode the umask gave it at creation
             f.write(data)
             f.flush()
             os.fsync(f.fileno())
