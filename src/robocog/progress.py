@@ -20,7 +20,7 @@ if TYPE_CHECKING:
     from rich.console import Console
 
 #: the longest a piped command stays silent, in seconds (less than the promised 5 s)
-QUIET_LIMIT = 4.0
+QUIET_LIMIT = 3.5
 #: the least time between two plain lines for steps of the same phase, in seconds
 STEP_LINE_SECONDS = 1.0
 
