@@ -10,7 +10,7 @@ import argparse
 import importlib
 import sys
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from robocog.worlds.garbage import LIGHTS
 
@@ -229,17 +229,49 @@ def run_garbage(
 
 def run_garbage_over_ros2(args: argparse.Namespace, specs: list[MindSpec]) -> int:
     """``--over ros2``: each mission in process and over DDS, the rates side by side."""
-    import json
+    from rich.console import Console
 
-    from robocog.experiments.garbage import mission_seeds, run_once
-    from robocog.experiments.over_ros2 import pooled, run_mission
+    from robocog.experiments.garbage import mission_seeds
+    from robocog.progress import Steps, duration, header
     from robocog.worlds.garbage import GarbageConfig
 
     config = GarbageConfig(light=args.light)
     seeds = mission_seeds(args.seed, args.runs)
     doc: dict[str, object] = {"experiment": "garbage", "over": "ros2", "seeds": seeds, "minds": {}}
     code = 0
-    print(f"{'mind':6} {'in process':>10} {'over ROS 2':>10} {'difference':>11}  missions")
+    console = Console()
+    ran = [s for s in specs if s.name.lower() in ("nars", "bdi")]
+    header(
+        console,
+        "robocog experiment garbage --over ros2",
+        f"{args.runs} missions per mind ({', '.join(s.name for s in ran)}) in this process, "
+        "then the same missions with the mind in a `robocog bridge ros2` process over DDS",
+        f"{duration(len(ran) * args.runs * ROS2_MISSION_SECONDS)} on an idle machine",
+    )
+    with Steps(console) as steps:
+        return _over_ros2(args, specs, config, seeds, doc, code, steps)
+
+
+#: wall seconds of one garbage mission in process and over ROS 2 together
+ROS2_MISSION_SECONDS = 3.0
+
+
+def _over_ros2(
+    args: argparse.Namespace,
+    specs: list[MindSpec],
+    config: Any,
+    seeds: list[int],
+    doc: dict[str, object],
+    code: int,
+    steps: Any,
+) -> int:
+    """``run_garbage_over_ros2`` once its header is out, ``steps`` showing the missions."""
+    import json
+
+    from robocog.experiments.garbage import run_once
+    from robocog.experiments.over_ros2 import pooled, run_mission
+
+    steps.say(f"{'mind':6} {'in process':>10} {'over ROS 2':>10} {'difference':>11}  missions")
     for spec in specs:
         key = spec.name.lower()
         if key not in ("nars", "bdi"):
@@ -250,8 +282,15 @@ def run_garbage_over_ros2(args: argparse.Namespace, specs: list[MindSpec]) -> in
             print(f"{spec.name:6} unavailable: {why}", file=sys.stderr)
             code = 1
             continue
-        local = [run_once(spec, config, seed) for seed in seeds]
+        here = steps.add(f"{spec.name} in process", len(seeds))
+        steps.start(here)
+        local = []
+        for seed in seeds:
+            local.append(run_once(spec, config, seed))
+            steps.advance(here)
         remote = []
+        there = steps.add(f"{spec.name} over ROS 2", len(seeds))
+        steps.start(there)
         for seed in seeds:
             record = None
             if args.record is not None:
@@ -262,11 +301,12 @@ def run_garbage_over_ros2(args: argparse.Namespace, specs: list[MindSpec]) -> in
                 print(f"{spec.name} seed {seed}: {run.error}", file=sys.stderr)
                 code = 1
             remote.append(run)
+            steps.advance(there)
         placed = sum(r.objects for r in local)
         rate_local = sum(r.collected for r in local) / placed if placed else 0.0
         rate_remote = pooled(remote) or 0.0
         same = sum(a.collected == b.collected for a, b in zip(local, remote, strict=True))
-        print(
+        steps.say(
             f"{spec.name:6} {rate_local:>10.1%} {rate_remote:>10.1%} "
             f"{(rate_remote - rate_local) * 100:>+10.1f}p  "
             f"{same}/{len(seeds)} collected the same"
