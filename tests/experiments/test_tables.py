@@ -92,3 +92,13 @@ def test_a_wide_terminal_shows_the_assembly_table_whole(
     text = capsys.readouterr().out
     header = next(line for line in text.splitlines() if line.startswith("┃ table"))
     assert "thesis iters" in header and len(header) > 120  # one row across, not vertical
+
+
+@pytest.mark.parametrize("width", [30, 40, 60])
+def test_even_a_narrow_terminal_cuts_no_cell(width: int) -> None:
+    headers = ["mind", "success rate", "missed: detection/grasp/decision/time"]
+    table = _table([["NARS", "67%", "11/6/3/0"], ["BDI", "57%", "8/7/4/7"]], headers)
+    text = _render(table, width)
+    assert not any(c in text for c in CUT)
+    assert max(len(line) for line in text.splitlines()) <= width
+    assert "11/6/3/0" in text and "8/7/4/7" in text

@@ -78,7 +78,7 @@ def vertical(table: Table) -> Table:
     column's name and value; the records apart by rules."""
     columns = table.columns
     out = Table(title=table.title, show_header=False, box=table.box, show_lines=False)
-    out.add_column(no_wrap=True, style="bold")
+    out.add_column(style="bold", overflow="fold")  # never cut, even on a very narrow terminal
     out.add_column(overflow="fold")
     cells = [list(c.cells) for c in columns]
     rows = len(cells[0]) if cells else 0
