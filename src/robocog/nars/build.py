@@ -22,12 +22,14 @@ from __future__ import annotations
 import argparse
 import hashlib
 import json
+import multiprocessing
 import os
 import shutil
 import subprocess
 import sys
 import sysconfig
 import time
+from collections.abc import Callable
 from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
 from pathlib import Path
 
@@ -168,7 +170,7 @@ def _compile_one(module: str, here: str, work: str) -> tuple[str, str | None, st
 def build(
     here: Path,
     jobs: int,
-    report: object = None,
+    report: Callable[[str, str], None] | None = None,
     modules: tuple[str, ...] = ENGINE_MODULES,
 ) -> Path:
     """Compile every engine module into a fresh folder and put it in place of
@@ -180,8 +182,6 @@ def build(
     order = sorted(modules, key=lambda m: -(here / f"{m}.py").stat().st_size)
     with tempfile.TemporaryDirectory(prefix="robocog-build-") as work:
         built: dict[str, str] = {}
-        import multiprocessing
-
         # spawned, not forked: the parent runs a progress thread
         context = multiprocessing.get_context("spawn")
         with ProcessPoolExecutor(max_workers=jobs, mp_context=context) as pool:
@@ -191,7 +191,7 @@ def build(
                 while queue and len(pending) < jobs:
                     module = queue.pop(0)
                     pending.add(pool.submit(_compile_one, module, str(here), work))
-                    if callable(report):
+                    if report is not None:
                         report("starts", module)
                 finished, pending = wait(pending, return_when=FIRST_COMPLETED)
                 for future in finished:
@@ -201,7 +201,7 @@ def build(
                             other.cancel()
                         raise BuildError(f"{module}.py did not compile: {why}")
                     built[module] = path
-                    if callable(report):
+                    if report is not None:
                         report("done", module)
         fresh = Path(tempfile.mkdtemp(prefix=f"{COMPILED}.new-", dir=here))
         try:
