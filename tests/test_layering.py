@@ -61,7 +61,7 @@ def test_every_package_keeps_to_its_imports() -> None:
 
 
 #: modules of no package that every package may use, because they import no robocog module
-SHARED_MODULES = ("argtypes.py", "atomic.py", "ona_process.py")
+SHARED_MODULES = ("argtypes.py", "atomic.py", "ona_process.py", "progress.py")
 
 
 def test_the_modules_every_package_may_use_import_nothing_of_robocog() -> None:

@@ -2,7 +2,10 @@
 
 Saved memories, experiment results and reports are written to a temporary file in the
 same folder (so the rename stays on one file system), flushed to disk, then renamed over
-the target. A process killed in between leaves the previous file as it was. Every
+the target. A process killed in between leaves the previous file as it was. The new
+file gets the permissions a plain ``open(path, "w")`` would give it: an existing file's
+own, else those the user's umask allows (not the owner-only mode of a private temporary
+file, which would make a report unreadable to the group that can read its plots). Every
 package may use this module: it knows nothing of engines or robots.
 """
 
@@ -10,18 +13,30 @@ from __future__ import annotations
 
 import json
 import os
-import tempfile
+import secrets
+import stat
 from pathlib import Path
 from typing import Any
 
 
-def write_bytes(path: str | os.PathLike[str], data: bytes) -> None:
-    """Replace the file at ``path`` with ``data`` in one step, creating its folder."""
+def write_bytes(path: str | os.PathLike[str], data: bytes, mode: int | None = None) -> None:
+    """Replace the file at ``path`` with ``data`` in one step, creating its folder.
+
+    ``mode`` gives the file those permissions whatever the umask (0o600 for a file that
+    only its owner may read, as a saved memory); by default it gets what ``open`` gives.
+    """
     target = Path(path)
     target.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=target.parent, prefix=f".{target.name}.", suffix=".tmp")
+    fd, tmp = _create_beside(target)
     try:
         with os.fdopen(fd, "wb") as f:
+            if mode is not None:
+                os.fchmod(f.fileno(), mode)
+            else:
+                try:
+                    os.fchmod(f.fileno(), stat.S_IMODE(os.stat(target).st_mode))  # its own
+                except FileNotFoundError:
+                    pass  # a new file: the mode the umask gave it at creation
             f.write(data)
             f.flush()
             os.fsync(f.fileno())
@@ -29,6 +44,22 @@ def write_bytes(path: str | os.PathLike[str], data: bytes) -> None:
     except BaseException:
         Path(tmp).unlink(missing_ok=True)
         raise
+
+
+def _create_beside(target: Path) -> tuple[int, Path]:
+    """A new, empty file in ``target``'s folder, open for writing, and its path.
+
+    Created with mode 0o666, so that the kernel applies the process's umask, as it does
+    for any file a program opens for writing (``tempfile.mkstemp`` would force 0o600).
+    """
+    flags = os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_CLOEXEC", 0)
+    for _ in range(100):
+        tmp = target.parent / f".{target.name}.{secrets.token_hex(4)}.tmp"
+        try:
+            return os.open(tmp, flags, 0o666), tmp
+        except FileExistsError:
+            continue
+    raise FileExistsError(f"{target.parent}: no free name for a temporary file")
 
 
 def write_text(path: str | os.PathLike[str], text: str) -> None:

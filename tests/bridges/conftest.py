@@ -1,4 +1,4 @@
-"""Fixtures of the bridge tests: loopback-only DDS settings, roscore on 127.0.0.1, and
+"""Fixtures of the bridge tests: loopback-only DDS settings, a ROS master on 127.0.0.1, and
 child processes that are always ended, whatever the test's fate."""
 
 from __future__ import annotations
@@ -66,8 +66,8 @@ def _has_rospy() -> str:
     """Why ROS 1 tests cannot run here, or '' when they can."""
     if not Path(SYSTEM_PYTHON).exists():
         return f"{SYSTEM_PYTHON} is missing"
-    if shutil.which("roscore") is None:
-        return "roscore is missing (run .ci/install_ros.sh)"
+    if shutil.which("rosmaster") is None:
+        return "rosmaster is missing (run .ci/install_ros.sh)"
     probe = subprocess.run(
         [SYSTEM_PYTHON, "-c", "import rospy, actionlib, move_base_msgs.msg, sensor_msgs.msg"],
         capture_output=True,
@@ -81,7 +81,10 @@ def _has_rospy() -> str:
 
 @pytest.fixture(scope="module")
 def roscore(tmp_path_factory: pytest.TempPathFactory) -> Iterator[dict[str, str]]:
-    """A roscore on 127.0.0.1 and a free port; yields the environment that reaches it."""
+    """A ROS master on 127.0.0.1 and a free port; yields the environment that reaches it.
+
+    ``rosmaster --core`` is what ``roscore`` starts, without roslaunch and the C++
+    ``rosout`` logger (and the Boost and ICU libraries they bring), which no test reads."""
     reason = _has_rospy()
     if reason:
         pytest.skip(reason)
@@ -97,7 +100,7 @@ def roscore(tmp_path_factory: pytest.TempPathFactory) -> Iterator[dict[str, str]
     )
     env.pop("ROS_HOSTNAME", None)
     core_env = {k: v for k, v in env.items() if k != "PYTHONPATH"}
-    core = Child(["roscore", "-p", str(port)], core_env, "roscore")
+    core = Child(["rosmaster", "--core", "-p", str(port)], core_env, "rosmaster")
     try:
         master = xmlrpc.client.ServerProxy(env["ROS_MASTER_URI"])
         deadline = time.monotonic() + 30
@@ -109,7 +112,7 @@ def roscore(tmp_path_factory: pytest.TempPathFactory) -> Iterator[dict[str, str]
             except OSError:
                 pass
             if time.monotonic() > deadline or core.proc.poll() is not None:
-                pytest.fail(f"roscore did not come up: {core.stderr_text()[-2000:]}")
+                pytest.fail(f"rosmaster did not come up: {core.stderr_text()[-2000:]}")
             time.sleep(0.2)
         yield env
     finally:

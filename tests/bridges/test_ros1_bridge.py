@@ -1,5 +1,5 @@
 """`robocog bridge ros1` against a stand-in robot and a stand-in move_base, with
-roscore on 127.0.0.1 started by the test."""
+ROS master on 127.0.0.1 started by the test."""
 
 from __future__ import annotations
 
@@ -14,7 +14,7 @@ import pytest
 
 from tests.bridges.procs import SRC, SYSTEM_PYTHON, Child, bridge_argv
 
-#: every test here starts a stand-in robot and a bridge as processes on a roscore and
+#: every test here starts a stand-in robot and a bridge as processes on a ROS master and
 #: waits on them
 pytestmark = pytest.mark.slow
 

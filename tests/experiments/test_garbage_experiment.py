@@ -177,3 +177,31 @@ def test_nars_ranks_the_hotspots_first_after_a_few_rounds() -> None:
     expectations = [e for _p, _f, _c, e in acc.ranking]
     assert expectations == sorted(expectations, reverse=True)
     assert acc.answer is not None and acc.answer[0].startswith("<<({SELF} * {p")
+
+
+class _Noting(Sweeper):
+    """A mind that, like the NARS mind, records a rewritten rule of its knowledge."""
+
+    def __init__(self) -> None:
+        super().__init__(retry=False)
+        self.notes = ["One rule was rewritten; nothing is wrong with the run."]
+
+
+def test_a_minds_notes_sit_in_their_own_section_not_under_table_ii(tmp_path: Path) -> None:
+    result = run_experiment([MindSpec("noting", lambda w, s: _Noting())], runs=1, seed=0)
+    text = write_report(result, tmp_path).read_text()
+    table_ii = text.index("## Success rate (Table II)")
+    next_section = text.index("\n## ", table_ii + 1)
+    assert "rewritten" not in text[table_ii:next_section]
+    notes = text.index("## How the paper's knowledge was read")
+    assert notes < text.index("## Configuration")
+    assert "**noting.** One rule was rewritten" in text[notes:]
+
+
+def test_the_nars_minds_note_explains_the_rewritten_rule_in_words() -> None:
+    from robocog.minds.nars_mind import BRACKETED_GOTO_RULE, PRINTED_GOTO_RULE, rewrite_note
+
+    note = rewrite_note(PRINTED_GOTO_RULE, "line 1, column 91: unexpected '.'")
+    assert PRINTED_GOTO_RULE in note and BRACKETED_GOTO_RULE in note
+    assert "without changing its meaning" in note and "column 91" in note
+    assert "gripper open" in note and "Nothing is wrong with the run" in note

@@ -193,3 +193,18 @@ def test_an_estimate_is_a_mean_with_a_t_interval() -> None:
     assert all_or_nothing.high == pytest.approx(0.9544, abs=1e-3)
     assert Estimate.of([1.0] * 30).high == 1.0 and Estimate.of([1.0] * 30).low < 1.0
     assert not Estimate.of([-0.1, 0.1]).excludes_zero
+
+
+def test_a_sweep_says_what_it_runs_and_that_it_resumed(tmp_path: Path, capsys) -> None:  # noqa: ANN001
+    argv = ["sweep", "garbage", "--vary", "detection=0.5,0.9", "--minds", "bdi", "--runs", "1"]
+    argv += ["--jobs", "1", "--out", str(tmp_path)]
+    assert cli.main(argv) == 0
+    first = capsys.readouterr().err
+    assert first.startswith("robocog sweep garbage: 2 missions on this process")
+    assert "missions: 2/2" in first and "resum" not in first
+    assert cli.main(argv) == 0
+    assert "resumed: all 2 missions are already in" in capsys.readouterr().err
+    lines = (tmp_path / "results.jsonl").read_text().splitlines()
+    (tmp_path / "results.jsonl").write_text("\n".join(lines[:2]) + "\n")  # header, one row
+    assert cli.main(argv) == 0
+    assert "resuming: 1 of 2 missions are already in" in capsys.readouterr().err

@@ -310,6 +310,10 @@ def _mind_summary(runs: list[SequenceRun]) -> dict[str, Any]:
     }
 
 
+#: wall seconds of one sequence on the symbolic tabletop, on this project's 2-core machine
+SEQUENCE_SECONDS = 0.25
+
+
 def run(args: argparse.Namespace) -> int:
     """Run both sequences with and without failures; print, report, write JSON."""
     if getattr(args, "world", "symbolic") == "mujoco":
@@ -317,8 +321,10 @@ def run(args: argparse.Namespace) -> int:
 
         return run_physical(args, SEQUENCES, make_world, run_sequence)
     from rich.console import Console
-    from rich.progress import Progress
     from rich.table import Table
+
+    from robocog.experiments.tables import fit
+    from robocog.progress import Steps, duration, header
 
     console = Console()
     clean: dict[str, SequenceRun] = {}
@@ -326,20 +332,28 @@ def run(args: argparse.Namespace) -> int:
     total = len(SEQUENCES) * (1 + args.runs)
     from robocog.inspector.cli import session
 
+    header(
+        console,
+        "robocog experiment assembly",
+        f"Thiella's Tables 5.2-5.10 and the whole assemblies ({len(SEQUENCES)} sequences) "
+        f"planned and executed on the symbolic tabletop, once and {args.runs} times with "
+        f"grasps slipping at {args.failure_rate:.0%}",
+        f"{duration(SEQUENCE_SECONDS * total)} on an idle machine",
+    )
     with (
         session(args, "robocog experiment assembly") as inspecting,
-        Progress(console=console, transient=True) as progress,
+        Steps(console) as steps,
     ):
         watch = inspecting.watcher() if inspecting else None
-        task = progress.add_task("assembly", total=total)
+        task = steps.add("sequences", total)
         for name in SEQUENCES:
             clean[name] = run_sequence(name, args.seed, 0.0, args.mode, watch=watch)
-            progress.advance(task)
+            steps.advance(task)
             for i in range(args.runs):
                 failing[name].append(
                     run_sequence(name, args.seed + 1 + i, args.failure_rate, args.mode, watch=watch)
                 )
-                progress.advance(task)
+                steps.advance(task)
 
     rows = {name: [_row(r) for r in run.requests] for name, run in clean.items()}
     recovery: dict[str, dict[str, dict[str, Any]]] = {}
@@ -386,7 +400,7 @@ def run(args: argparse.Namespace) -> int:
                 f"{rec.get('reached', 0)}/{rec.get('runs', 0)} reached, "
                 f"{rec.get('failed_grasps', 0)} slips, {rec.get('replans', 0)} replans",
             )
-        console.print(table)
+        console.print(fit(table, console.width))
 
     minds = {
         "planner": _mind_summary(list(clean.values())),

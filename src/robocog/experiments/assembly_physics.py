@@ -82,7 +82,49 @@ def run_physical(
     import imageio.v3 as iio
     from rich.console import Console
 
+    from robocog.progress import Steps, duration, header
+
     console = Console()
+    n = len(sequences)
+    filmed = FILMED_SECONDS * n
+    slipping = SLIP_RUN_SECONDS * n * args.runs
+    later = (
+        f", then {args.runs} run{'s' if args.runs != 1 else ''} of each with grasps slipping at {args.failure_rate:.0%} "
+        f"({duration(slipping)}; --runs 0 leaves them out)"
+        if args.runs
+        else ""
+    )
+    header(
+        console,
+        "robocog experiment assembly --world mujoco",
+        f"the {n} assembly sequences on the MuJoCo arm, planned from AprilTags seen in "
+        f"rendered frames: once each{' with a cube moved by hand' if args.perturb else ''}"
+        f"{', filmed' if not args.no_video else ''} ({duration(filmed)}){later}",
+        f"{duration(filmed + slipping)} in all on a 2-core machine shared with other work",
+    )
+    with Steps(console) as steps:
+        return _run_physical(args, sequences, make_world, run_sequence, console, steps, iio)
+
+
+#: wall seconds of one filmed sequence and of one run with slips, measured on this
+#: project's 2-core machine shared with other work (the rendering and the tag detection
+#: take most of them; an idle machine takes about a third)
+FILMED_SECONDS = 55.0
+SLIP_RUN_SECONDS = 40.0
+
+
+def _run_physical(
+    args: argparse.Namespace,
+    sequences: dict[str, Any],
+    make_world: Callable[..., Any],
+    run_sequence: Callable[..., Any],
+    console: Any,
+    steps: Any,
+    iio: Any,
+) -> int:
+    """``run_physical`` once its header is out, with ``steps`` showing the progress."""
+    first = steps.add("filmed sequences", len(sequences))
+    later = steps.add("runs with slips", len(sequences) * args.runs) if args.runs else None
     report_dir = Path(args.report)
     report_dir.mkdir(parents=True, exist_ok=True)
     video = not args.no_video
@@ -96,6 +138,7 @@ def run_physical(
         keys: list[str] = []
 
         def key_frame(table: str, w: Any, name: str = name, keys: list[str] = keys) -> None:
+            steps.note(first, f"{name}: table {table} done")
             if video:
                 file = f"{name}_{table}.png"
                 iio.imwrite(report_dir / file, w.snapshot())
@@ -124,10 +167,19 @@ def run_physical(
             "detect_seconds": world.eyes.detect_seconds,
         }
         world.close()
-        console.print(_summary_line(name, run, stats[name]))
+        steps.say(_summary_line(name, run, stats[name]))
+        steps.advance(first)
     failing: dict[str, list[SequenceRun]] = {name: [] for name in sequences}
     for name in sequences:
         for i in range(args.runs):
+            assert later is not None
+            steps.start(later)
+
+            def note(
+                table: str, _world: Any, name: str = name, seed: int = args.seed + 1 + i
+            ) -> None:
+                steps.note(later, f"{name}, seed {seed}: table {table} done")
+
             run = run_sequence(
                 name,
                 args.seed + 1 + i,
@@ -135,12 +187,14 @@ def run_physical(
                 args.mode,
                 world_kind="mujoco",
                 perturb=args.perturb,
+                on_request=note,
             )
             failing[name].append(run)
-            console.print(
+            steps.say(
                 f"  slips at {args.failure_rate:.0%}, seed {args.seed + 1 + i}: "
                 + _summary_line(name, run, None)
             )
+            steps.advance(later)
     rows = {name: [_row(r) for r in run.requests] for name, run in clean.items()}
     write_report(report_dir / "assembly.md", args, rows, failing, films, frames, stats)
     console.print(f"report: {report_dir / 'assembly.md'}")

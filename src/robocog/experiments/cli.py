@@ -10,7 +10,7 @@ import argparse
 import importlib
 import sys
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from robocog.argtypes import NEW_DIR, NEW_FILE, SEED, count, positive_int
 from robocog.worlds.garbage import LIGHTS
@@ -115,6 +115,16 @@ def run_garbage_args(args: argparse.Namespace) -> int:
     if getattr(args, "over", "process") == "ros2":
         return run_garbage_over_ros2(args, specs)
     from robocog.inspector.cli import session
+    from robocog.progress import duration
+
+    seconds, note = garbage_estimate([s.name for s in specs], args.runs, args.rounds)
+    learning = f", then {args.rounds} learning rounds for NARS" if args.rounds else ""
+    print(
+        "robocog experiment garbage: Table II of Hammer et al., "
+        f"{args.runs} runs per mind ({', '.join(s.name for s in specs)}) from seed {args.seed} "
+        f"in {args.light} light{learning} ({duration(seconds)} on an idle machine{note})",
+        flush=True,
+    )
 
     with session(args, "robocog experiment garbage") as inspecting:
         result = run_garbage(
@@ -128,6 +138,32 @@ def run_garbage_args(args: argparse.Namespace) -> int:
             watch=inspecting.watcher() if inspecting else None,
         )
     return 0 if all(m.ok for m in result.minds.values()) else 1
+
+
+#: CPU seconds of one mission per mind and of one NARS learning round, measured with
+#: ``robocog demo`` piped through ``cat`` on this project's 2-core machine (the rounds grow
+#: slower as the memory fills; this is their mean over 12)
+MISSION_SECONDS = {"BDI": 0.05, "NARS": 0.25, "ONA": 0.5}
+ROUND_SECONDS = 0.6
+#: how much slower the pure-Python NARS engine is than the compiled one
+PURE_FACTOR = 4.5
+
+
+def garbage_estimate(names: list[str], runs: int, rounds: int) -> tuple[float, str]:
+    """Seconds the garbage missions and the learning rounds are expected to take on an
+    idle machine, and a note on the NARS engine that runs them (the pure one is slower)."""
+    import robocog.nars
+
+    pure = robocog.nars.ENGINE != "compiled"
+    factor = PURE_FACTOR if pure else 1.0
+    seconds = 1.0 + rounds * ROUND_SECONDS * factor
+    for name in names:
+        cost = MISSION_SECONDS.get(name, 0.25)
+        seconds += runs * cost * (factor if name == "NARS" else 1.0)
+    note = ""
+    if pure and "NARS" in names:
+        note = "; NARS runs as pure Python: `robocog build` makes it about 4 times faster"
+    return seconds, note
 
 
 def run_garbage(
@@ -145,33 +181,36 @@ def run_garbage(
     (``watch`` hooks every loop, for ``--inspect``)."""
     from rich.console import Console
     from rich.markup import escape
-    from rich.progress import BarColumn, MofNCompleteColumn, Progress, TimeElapsedColumn
 
     from robocog.experiments.garbage import run_experiment
     from robocog.experiments.report import mind_status, summary_table, write_json, write_report
+    from robocog.experiments.tables import fit
+    from robocog.progress import Steps
     from robocog.worlds.garbage import GarbageConfig
 
     console = Console()
     config = GarbageConfig(light=light, **(config_overrides or {}))  # type: ignore[arg-type]
-    with Progress(
-        "[progress.description]{task.description}",
-        BarColumn(),
-        MofNCompleteColumn(),
-        TimeElapsedColumn(),
-        console=console,
-        transient=True,
-    ) as progress:
-        task = progress.add_task("garbage runs", total=runs * len(specs))
+    learner = next((s.name for s in specs if s.name in ("NARS", "ONA")), None)
+    with Steps(console) as steps:
+        missions = steps.add("garbage runs", runs * len(specs))
+        learning = steps.add(f"{learner} learning rounds", rounds) if rounds and learner else None
+
+        def advance() -> None:
+            steps.advance(missions)
+            if learning is not None and steps.done(missions):
+                steps.start(learning)  # the learning phase begins
+
         result = run_experiment(
             specs,
             runs=runs,
             seed=seed,
             config=config,
             rounds=rounds,
-            advance=lambda: progress.advance(task),
+            advance=advance,
             watch=watch,
+            on_round=None if learning is None else lambda _r: steps.advance(learning),
         )
-    console.print(summary_table(result))
+    console.print(fit(summary_table(result), console.width))
     for m in result.minds.values():
         console.print(escape(mind_status(m)))
     acc = result.accumulation
@@ -194,17 +233,49 @@ def run_garbage(
 
 def run_garbage_over_ros2(args: argparse.Namespace, specs: list[MindSpec]) -> int:
     """``--over ros2``: each mission in process and over DDS, the rates side by side."""
-    import json
+    from rich.console import Console
 
-    from robocog.experiments.garbage import mission_seeds, run_once
-    from robocog.experiments.over_ros2 import pooled, run_mission
+    from robocog.experiments.garbage import mission_seeds
+    from robocog.progress import Steps, duration, header
     from robocog.worlds.garbage import GarbageConfig
 
     config = GarbageConfig(light=args.light)
     seeds = mission_seeds(args.seed, args.runs)
     doc: dict[str, object] = {"experiment": "garbage", "over": "ros2", "seeds": seeds, "minds": {}}
     code = 0
-    print(f"{'mind':6} {'in process':>10} {'over ROS 2':>10} {'difference':>11}  missions")
+    console = Console()
+    ran = [s for s in specs if s.name.lower() in ("nars", "bdi")]
+    header(
+        console,
+        "robocog experiment garbage --over ros2",
+        f"{args.runs} missions per mind ({', '.join(s.name for s in ran)}) in this process, "
+        "then the same missions with the mind in a `robocog bridge ros2` process over DDS",
+        f"{duration(len(ran) * args.runs * ROS2_MISSION_SECONDS)} on an idle machine",
+    )
+    with Steps(console) as steps:
+        return _over_ros2(args, specs, config, seeds, doc, code, steps)
+
+
+#: wall seconds of one garbage mission in process and over ROS 2 together
+ROS2_MISSION_SECONDS = 3.0
+
+
+def _over_ros2(
+    args: argparse.Namespace,
+    specs: list[MindSpec],
+    config: Any,
+    seeds: list[int],
+    doc: dict[str, object],
+    code: int,
+    steps: Any,
+) -> int:
+    """``run_garbage_over_ros2`` once its header is out, ``steps`` showing the missions."""
+    import json
+
+    from robocog.experiments.garbage import run_once
+    from robocog.experiments.over_ros2 import pooled, run_mission
+
+    steps.say(f"{'mind':6} {'in process':>10} {'over ROS 2':>10} {'difference':>11}  missions")
     for spec in specs:
         key = spec.name.lower()
         if key not in ("nars", "bdi"):
@@ -215,8 +286,15 @@ def run_garbage_over_ros2(args: argparse.Namespace, specs: list[MindSpec]) -> in
             print(f"{spec.name:6} unavailable: {why}", file=sys.stderr)
             code = 1
             continue
-        local = [run_once(spec, config, seed) for seed in seeds]
+        here = steps.add(f"{spec.name} in process", len(seeds))
+        steps.start(here)
+        local = []
+        for seed in seeds:
+            local.append(run_once(spec, config, seed))
+            steps.advance(here)
         remote = []
+        there = steps.add(f"{spec.name} over ROS 2", len(seeds))
+        steps.start(there)
         for seed in seeds:
             record = None
             if args.record is not None:
@@ -227,11 +305,12 @@ def run_garbage_over_ros2(args: argparse.Namespace, specs: list[MindSpec]) -> in
                 print(f"{spec.name} seed {seed}: {run.error}", file=sys.stderr)
                 code = 1
             remote.append(run)
+            steps.advance(there)
         placed = sum(r.objects for r in local)
         rate_local = sum(r.collected for r in local) / placed if placed else 0.0
         rate_remote = pooled(remote) or 0.0
         same = sum(a.collected == b.collected for a, b in zip(local, remote, strict=True))
-        print(
+        steps.say(
             f"{spec.name:6} {rate_local:>10.1%} {rate_remote:>10.1%} "
             f"{(rate_remote - rate_local) * 100:>+10.1f}p  "
             f"{same}/{len(seeds)} collected the same"

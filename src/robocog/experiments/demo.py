@@ -37,14 +37,16 @@ def configure(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Run the demo; 0 when at least one mind ran (the demo says which could not, and why)."""
-    from robocog.experiments.cli import run_garbage
+    from robocog.experiments.cli import garbage_estimate, run_garbage
     from robocog.experiments.garbage import default_minds
+    from robocog.progress import duration
 
     runs = max(1, args.runs)
+    seconds, note = garbage_estimate(["BDI", "NARS"], runs, args.rounds)
     print(
         "robocog demo: the garbage field of Hammer et al., NARS and a BDI agent with the same "
         f"knowledge; {runs} runs per mind from seed {args.seed} in {args.light} light, then "
-        f"{args.rounds} learning rounds for NARS"
+        f"{args.rounds} learning rounds for NARS ({duration(seconds)} on an idle machine{note})"
     )
     from robocog.inspector.cli import session
 

@@ -357,6 +357,7 @@ def learn_accumulation(
     seed: int,
     rounds: int,
     watch: Watch | None = None,
+    on_round: Callable[[int], None] | None = None,
 ) -> Accumulation:
     """Let a NARS mind collect for several rounds of one field, then ask where trash is
     seen (the mind must offer ``ask``, ``trash_places`` and ``new_round``).
@@ -366,6 +367,7 @@ def learn_accumulation(
     keeps everything it has learned. The ranking is the mind's evidence for
     ``<<({SELF} * {p}) --> at> =/> <trash --> [see]>>`` per checkpoint, by expectation;
     the field's own count of arrivals with trash in view is returned beside it.
+    ``on_round`` is told each round's number as it ends.
     """
     from robocog.minds.nars_mind import TRASH_QUESTION
 
@@ -395,6 +397,8 @@ def learn_accumulation(
             for t in world.objects(world.rounds):
                 if t.times_seen:
                     seen[t.checkpoint] += 1
+            if on_round:
+                on_round(r + 1)
         answer = mind.ask(TRASH_QUESTION)
         ranking = mind.trash_places()
     finally:
@@ -442,12 +446,14 @@ def run_experiment(
     rounds: int = 0,
     advance: Callable[[], None] | None = None,
     watch: Watch | None = None,
+    on_round: Callable[[int], None] | None = None,
 ) -> ExperimentResult:
     """Every mind on the same ``runs`` seeds; then, if ``rounds``, NARS's learning phase.
 
     The result depends on the seeds and the configuration alone; only ``wall_seconds``
     and the cycle-time figures tell how long it took. ``watch`` hooks every loop (the
-    inspector's ``--inspect``).
+    inspector's ``--inspect``); ``advance`` is called after each run, ``on_round`` after
+    each learning round.
     """
     import time
 
@@ -460,7 +466,7 @@ def run_experiment(
     ready = [s for s in learners if minds[s.name].ok] or learners
     if rounds > 0 and ready:
         try:
-            accumulation = learn_accumulation(ready[0], config, seed, rounds, watch)
+            accumulation = learn_accumulation(ready[0], config, seed, rounds, watch, on_round)
         except Exception as exc:
             accumulation = Accumulation(
                 rounds, None, [], {}, [], unavailable=f"{type(exc).__name__}: {exc}"

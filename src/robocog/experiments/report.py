@@ -178,8 +178,6 @@ def markdown(result: ExperimentResult, images: dict[str, str]) -> str:
     ]
     lines += [f"| {a} | {b} | {c} | {d} |" for a, b, c, d in comparison_rows(result)]
     for name, m in result.minds.items():
-        for note in m.notes():
-            lines += ["", f"*{name}:* {note}"]
         if m.unavailable:
             lines += ["", f"**{name} did not run:** {m.unavailable}"]
         if m.error:
@@ -252,6 +250,12 @@ def markdown(result: ExperimentResult, images: dict[str, str]) -> str:
             "Hotspots ranked first: "
             + ("yes" if verdict else "no" if verdict is False else "not decided"),
         ]
+    notes = [(name, note) for name, m in result.minds.items() for note in m.notes()]
+    if notes:
+        lines += ["", "## How the paper's knowledge was read", ""]
+        for name, note in notes:
+            lines += [f"**{name}.** {note}", ""]
+        lines.pop()
     lines += ["", "## Configuration", "", "| setting | value |", "|---|---|"]
     settings = result.to_json()["config"]
     lines += [f"| {k} | {v} |" for k, v in settings.items()]

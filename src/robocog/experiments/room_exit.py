@@ -346,11 +346,19 @@ def configure(parser: argparse.ArgumentParser) -> None:
     add_arguments(parser)
 
 
+#: wall seconds of one room-exit run and of one convergence particle (the three
+#: scenarios together), on this project's 2-core machine
+RUN_SECONDS = 0.05
+PARTICLE_SECONDS = 0.002
+
+
 def run(args: argparse.Namespace) -> int:
     """Run the experiment, print the table, write the report (and JSON)."""
     from rich.console import Console
-    from rich.progress import Progress
     from rich.table import Table
+
+    from robocog.experiments.tables import fit
+    from robocog.progress import Steps, duration, header
 
     console = Console()
     if getattr(args, "train_svm", False):
@@ -371,13 +379,21 @@ def run(args: argparse.Namespace) -> int:
     unavailable: dict[str, str] = {}
     from robocog.inspector.cli import session
 
+    expected = RUN_SECONDS * args.runs * len(names) + PARTICLE_SECONDS * args.particles
+    header(
+        console,
+        "robocog experiment room-exit",
+        f"Fujita et al.'s Q.bo leaving a room, {args.runs} runs of {' and '.join(names)} from "
+        f"seed {args.seed}, then Section 4's convergence check with {args.particles} particles",
+        f"{duration(expected)} on an idle machine",
+    )
     with (
         session(args, "robocog experiment room-exit") as inspecting,
-        Progress(console=console, transient=True) as progress,
+        Steps(console) as steps,
     ):
         watch = inspecting.watcher() if inspecting else None
         for name in names:
-            task = progress.add_task(f"room-exit {name}", total=args.runs)
+            task = steps.add(f"room-exit {name}", args.runs)
             runs: list[RunResult] = []
             try:
                 for i in range(args.runs):
@@ -391,16 +407,17 @@ def run(args: argparse.Namespace) -> int:
                             world_kind=world_kind,
                         )
                     )
-                    progress.advance(task)
+                    steps.advance(task)
             except MindUnavailable as exc:
                 unavailable[name] = str(exc)
-                progress.remove_task(task)
                 continue
             results[name] = runs
-    conv = {
-        sc: convergence.simulate(sc, particles=args.particles, seed=args.seed, steps=30)
-        for sc in convergence.SCENARIOS
-    }
+        check = steps.add("convergence scenarios", len(convergence.SCENARIOS))
+        steps.start(check)
+        conv = {}
+        for sc in convergence.SCENARIOS:
+            conv[sc] = convergence.simulate(sc, particles=args.particles, seed=args.seed, steps=30)
+            steps.advance(check)
     conv_summaries = {sc: convergence.summary(records) for sc, records in conv.items()}
     summaries = {name: summarise(runs) for name, runs in results.items()}
     target = front_of_door(config)
@@ -419,7 +436,7 @@ def run(args: argparse.Namespace) -> int:
             *_outcome_cells(s),
             f"{s['through_doorway']}" if "through_doorway" in s else f"{s['success_rate']:.0%}",
         )
-    console.print(table)
+    console.print(fit(table, console.width))
     for name, reason in unavailable.items():
         console.print(f"[yellow]{name}: not run ({reason})[/yellow]")
     ctable = Table(title="Section 4: D after one step / D before, against alpha")
@@ -434,7 +451,7 @@ def run(args: argparse.Namespace) -> int:
             f"{info['steps_holding']}/{info['steps']}",
             where,
         )
-    console.print(ctable)
+    console.print(fit(ctable, console.width))
     for name, steps in room_steps.items():
         fails = [
             f"{st.step} ({st.mean_distance:.2f} m: {st.ratio:.2f})" for st in steps if not st.holds

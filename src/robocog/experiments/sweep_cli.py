@@ -14,7 +14,6 @@ from __future__ import annotations
 
 import argparse
 import os
-import sys
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -147,27 +146,53 @@ def run(args: argparse.Namespace) -> int:
 def _run_with_progress(
     spec: SweepSpec, table: Path, execute: Executor, fresh: bool, where: str, console: Console
 ) -> list[dict[str, Any]]:
-    """The sweep with a progress bar on the terminal (none when stderr is not one)."""
-    from rich.progress import (
-        BarColumn,
-        MofNCompleteColumn,
-        Progress,
-        TimeElapsedColumn,
-        TimeRemainingColumn,
-    )
-
+    """The sweep with a progress bar on the terminal, plain lines when stderr is not one;
+    a table that already holds missions is resumed, and says so."""
     from robocog.experiments.sweep import run_sweep
+    from robocog.progress import Steps, duration, header
 
-    console.print(f"robocog sweep {spec.experiment}: {spec.missions} missions on {where}; "
-                  f"table {table}")  # fmt: skip
-    with Progress(
-        "[progress.description]{task.description}",
-        BarColumn(),
-        MofNCompleteColumn(),
-        TimeElapsedColumn(),
-        TimeRemainingColumn(),
-        console=console,
-        disable=not sys.stderr.isatty(),
-    ) as progress:
-        task = progress.add_task("missions", total=spec.missions)
-        return run_sweep(spec, table, execute, fresh, lambda n: progress.advance(task, n))
+    expected = _expected_seconds(spec) / max(1, _workers(where))
+    header(
+        console,
+        f"robocog sweep {spec.experiment}",
+        f"{spec.missions} missions on {where}; table {table}",
+        f"{duration(expected)} for all of them on an idle machine",
+    )
+    with Steps(console) as steps:
+        task = steps.add("missions", spec.missions)
+        first = [True]
+
+        def advance(n: int) -> None:
+            if first[0]:  # run_sweep first says how many the table already holds
+                first[0] = False
+                if n == spec.missions:
+                    steps.say(f"resumed: all {n} missions are already in {table}; none to run")
+                elif n:
+                    steps.say(
+                        f"resuming: {n} of {spec.missions} missions are already in {table}; "
+                        f"running the other {spec.missions - n} (--fresh starts over)"
+                    )
+            steps.advance(task, n)
+
+        return run_sweep(spec, table, execute, fresh, advance)
+
+
+#: wall seconds of one room-exit or assembly mission in one worker (a garbage mission's
+#: depends on the mind and on the NARS engine: ``garbage_estimate``)
+MISSION_SECONDS = {"room-exit": 0.1, "assembly": 0.1}
+
+
+def _expected_seconds(spec: SweepSpec) -> float:
+    """CPU seconds of the whole sweep on one worker, roughly."""
+    per_mind = spec.missions // max(1, len(spec.minds))
+    if spec.experiment == "garbage":
+        from robocog.experiments.cli import garbage_estimate
+
+        return garbage_estimate([m.upper() for m in spec.minds], per_mind, 0)[0]
+    return spec.missions * MISSION_SECONDS.get(spec.experiment, 0.1)
+
+
+def _workers(where: str) -> int:
+    """The number of local processes ``where`` names (1 when it names none)."""
+    first = where.split()[0]
+    return int(first) if first.isdigit() else 1

@@ -79,6 +79,27 @@ BRACKETED_GOTO_RULE = (
     "<(<gripper --> [open]> &/ <({SELF} * (next * $P)) --> ^goto>) =/> <({SELF} * {$P}) --> at>>."
 )
 BRACKETED: dict[str, str] = {PRINTED_GOTO_RULE: BRACKETED_GOTO_RULE}
+#: what each rewritten rule says, in words, for the note a report shows
+MEANING: dict[str, str] = {
+    PRINTED_GOTO_RULE: "with the gripper open, going on to the next checkpoint, $P, brings the "
+    "robot to $P"
+}
+
+
+def rewrite_note(printed: str, reason: str) -> str:
+    """The note on a rule of the paper that the reasoner read in its bracketed form, for a
+    reader who has not seen Narsese: what happened, why, and that nothing changed."""
+    meaning = MEANING.get(printed)
+    said = f" It says: {meaning}." if meaning else ""
+    return (
+        "One rule of the robot's background knowledge was rewritten before the reasoner "
+        "read it, without changing its meaning. The paper prints it as "
+        f"`{printed}`, which this Narsese reader does not accept ({reason}): the statement "
+        "`gripper --> [open]` stands in round brackets where Narsese puts a statement in "
+        "angle brackets, and the two steps before `=/>` are not grouped. The mind gave the "
+        f"reasoner the same rule written out in full, `{BRACKETED[printed]}`.{said} "
+        "Nothing is wrong with the run: the note only records the rewriting."
+    )
 
 
 class NotReady(RuntimeError):
@@ -163,7 +184,7 @@ class NarsMind:
                 if line not in BRACKETED:
                     raise
                 self._input(BRACKETED[line])
-                self.notes.append(f"read {BRACKETED[line]!r} for the printed {line!r} ({exc})")
+                self.notes.append(rewrite_note(line, str(exc.__cause__ or exc)))
 
     def _callback(self, op: str):  # noqa: ANN202 - the reasoner's callback type
         def execute(args: Term | None = None) -> None:

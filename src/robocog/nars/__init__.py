@@ -4,8 +4,8 @@ Narsese terms, NAL truth functions, stamps, a bounded concept memory, declarativ
 sensorimotor inference, decisions, and ONA's shell protocol. Imports nothing from the
 robot side of robocog, so it can be used as a library by itself.
 
-The install may have compiled the engine's modules (see ``setup.py``); they are used
-only while the sources they were built from are unchanged. ``ENGINE`` says which engine
+``robocog build`` compiles the engine's modules (see ``build.py``); they are used only
+while the sources they were built from are unchanged. ``ENGINE`` says which engine
 runs and, for the pure-Python one, why.
 """
 
@@ -28,7 +28,7 @@ def _choose_engine(here: Path) -> tuple[str, Path | None]:
         sources = manifest["sources"]
         tag = manifest["cache_tag"]
     except (OSError, ValueError, KeyError, TypeError):
-        return "python (the engine was not compiled at install)", None
+        return "python (not compiled: `robocog build` compiles it)", None
     if tag != sys.implementation.cache_tag:
         return f"python (compiled for {tag}, this is {sys.implementation.cache_tag})", None
     for name, digest in sources.items():
@@ -37,7 +37,7 @@ def _choose_engine(here: Path) -> tuple[str, Path | None]:
         except OSError:
             now = None
         if now != digest:
-            return f"python ({name} changed since the engine was compiled; reinstall)", None
+            return f"python ({name} changed since the engine was compiled; `robocog build`)", None
     return "compiled", folder
 
 

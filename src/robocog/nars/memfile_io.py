@@ -58,7 +58,7 @@ def write_file(path: str | os.PathLike[str], data: bytes) -> None:
         raise MemoryFileError(f"{target}: exists and is not a robocog memory; not overwritten")
     _sweep_stale(target)
     try:
-        atomic.write_bytes(target, data)
+        atomic.write_bytes(target, data, mode=0o600)  # a memory is its owner's alone
     except OSError as exc:
         raise MemoryFileError(f"{target}: cannot be written: {exc.strerror or exc}") from None
 

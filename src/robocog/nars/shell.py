@@ -266,6 +266,14 @@ def run(args: argparse.Namespace) -> int:
     # million objects have been added net, which bounds whatever cycles there are.
     # (for the session only: a caller running the shell in its own process gets its
     # collector's thresholds back)
+    if sys.stdin.isatty():  # a person at the keyboard (never in a pipe, where ONA says nothing)
+        from robocog.nars import ENGINE
+
+        print(
+            f"robocog nar: a NARS shell speaking ONA's protocol ({ENGINE} engine); type Narsese, "
+            "a number to run that many cycles, Ctrl-D to end",
+            file=sys.stderr,
+        )
     before = gc.get_threshold()
     gc.set_threshold(1_000_000, 20, 100)
     try:

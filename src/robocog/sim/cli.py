@@ -164,9 +164,16 @@ def run(args: argparse.Namespace) -> int:
     def _terminate(_signum: int, _frame: object) -> None:
         robot.stop()
 
+    mission = world.config.mission_time
+    pace = (
+        "as fast as the controller answers (--lockstep)"
+        if args.lockstep
+        else f"about {mission / args.rate:.0f} s of wall time at --rate {args.rate:g}"
+    )
     print(
         f"robocog sim: garbage field (seed {args.seed}, {args.light}) on ROS 2 domain {domain}"
-        f"{' (loopback)' if args.loopback else ''}; {len(world.objects())} objects",
+        f"{' (loopback)' if args.loopback else ''}; {len(world.objects())} objects; serving "
+        f"until the mission's {mission:.0f} simulated seconds are over ({pace}) or Ctrl-C",
         file=sys.stderr,
         flush=True,
     )

@@ -31,7 +31,7 @@ import threading
 import time
 from typing import Any
 
-from robocog.bridges.ros1.node import vision_classes
+from robocog.bridges.ros1.node import odometry_class, vision_classes
 from robocog.robot.commands import Drop, Forward, GoTo, Pick, Turn
 from robocog.robot.percepts import Detection, Gripper, Pose
 from robocog.sim.field import BEAMS, RANGE_MAX, column_of, fence_ranges, target_place
@@ -52,7 +52,6 @@ class Ros1GarbageRobot:
         import rospy
         from geometry_msgs.msg import PoseWithCovarianceStamped, Twist
         from move_base_msgs.msg import MoveBaseAction
-        from nav_msgs.msg import Odometry
         from sensor_msgs.msg import LaserScan
         from std_msgs.msg import String
 
@@ -66,6 +65,7 @@ class Ros1GarbageRobot:
         self.goals = 0
         self.busy = 0  # goals playing back: their frames take no camera image
         self.twist = (0.0, 0.0, -math.inf)
+        Odometry = odometry_class()
         self.LaserScan, self.Odometry, self.String = LaserScan, Odometry, String
         self.PoseMsg = PoseWithCovarianceStamped
         self.vision = vision_classes()

@@ -43,6 +43,12 @@ def parse_script(text: str) -> list[Command]:
     return out
 
 
+#: wall seconds to build the scene and to run one command, on this project's 2-core
+#: machine (rendering the cameras and finding the tags take most of it)
+SETUP_SECONDS = 3.0
+COMMAND_SECONDS = 2.0
+
+
 def run_tabletop(args: argparse.Namespace) -> int:
     """Run the commands on the physical tabletop and film it."""
     if not args.physics:
@@ -60,18 +66,36 @@ def run_tabletop(args: argparse.Namespace) -> int:
     except ImportError as exc:
         print(f"robocog sim tabletop: needs the physics extra ({exc})", file=sys.stderr)
         return 2
+    from rich.console import Console
+
+    from robocog.progress import Steps, duration, header
+
+    console = Console()
+    header(
+        console,
+        "robocog sim tabletop --physics",
+        f"{len(commands)} operator commands run by the MuJoCo arm"
+        + (", a cube moved by hand halfway" if args.perturb else "")
+        + ("" if args.no_video else ", filmed to a GIF"),
+        f"{duration(SETUP_SECONDS + COMMAND_SECONDS * len(commands))} on an idle machine",
+    )
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
-    world = MujocoTabletop(seed=args.seed, record=not args.no_video)
-    world.frame_every = 0.5
-    start = time.perf_counter()
     failures = 0
-    for i, command in enumerate(commands):
-        if args.perturb and i == len(commands) // 2:
-            print(f"  by hand: {world.perturb()}")
-        outcome = world.execute(command)
-        failures += not outcome.ok
-        print(f"{world.time():6.1f} s  {command}: {'ok' if outcome.ok else outcome.reason}")
+    with Steps(console) as steps:
+        task = steps.add("commands", len(commands))
+        steps.note(task, "building the scene")
+        world = MujocoTabletop(seed=args.seed, record=not args.no_video)
+        world.frame_every = 0.5
+        start = time.perf_counter()
+        for i, command in enumerate(commands):
+            if args.perturb and i == len(commands) // 2:
+                steps.say(f"  by hand: {world.perturb()}")
+            steps.note(task, str(command))
+            outcome = world.execute(command)
+            failures += not outcome.ok
+            steps.say(f"{world.time():6.1f} s  {command}: {'ok' if outcome.ok else outcome.reason}")
+            steps.advance(task)
     seen = [p for p in world.percepts() if isinstance(p, Resting)]
     wall = time.perf_counter() - start
     print("the cameras see: " + ", ".join(f"{p.obj} on {p.on}" for p in seen))

@@ -23,6 +23,8 @@ From the parent (stdin)::
 ROS 1 detections are vision_msgs/Detection2DArray (the ROS 1 layout, integer class
 ids); Debian has no vision_msgs, so when it is missing the classes are generated from
 the message definitions below, which gives them the same checksum as the real package.
+nav_msgs/Odometry is generated the same way when nav_msgs is not installed (Debian's
+python3-nav-msgs brings the C++ message headers and Boost's with it).
 """
 
 import json
@@ -47,6 +49,14 @@ VISION_MSGS_ROS1 = {
     ),
     "vision_msgs/BoundingBox2D": "geometry_msgs/Pose2D center\nfloat64 size_x\nfloat64 size_y\n",
 }
+
+#: nav_msgs/Odometry as ROS 1 defines it (comments left out: they do not change its MD5)
+ODOMETRY_ROS1 = (
+    "Header header\n"
+    "string child_frame_id\n"
+    "geometry_msgs/PoseWithCovariance pose\n"
+    "geometry_msgs/TwistWithCovariance twist\n"
+)
 
 GOAL_STATUS = {
     2: "preempted",
@@ -88,6 +98,26 @@ def vision_classes() -> dict[str, type]:
     return {name: classes["vision_msgs/" + name] for name in names}
 
 
+def odometry_class() -> type:
+    """nav_msgs/Odometry: the installed class, else one generated from its definition
+    (the same MD5, so it talks to any ROS 1 node publishing odometry)."""
+    try:
+        from nav_msgs.msg import Odometry
+
+        return Odometry
+    except ImportError:
+        pass
+    import genpy.dynamic
+    from geometry_msgs.msg import PoseWithCovariance, TwistWithCovariance
+    from std_msgs.msg import Header
+
+    sections = [ODOMETRY_ROS1]
+    for cls in (Header, PoseWithCovariance, TwistWithCovariance):
+        sections.append("MSG: " + cls._type + "\n" + cls._full_text)
+    classes = genpy.dynamic.generate_dynamic("nav_msgs/Odometry", SEPARATOR.join(sections))
+    return classes["nav_msgs/Odometry"]
+
+
 class Node:
     """The rospy side: subscribers feed the parent, the parent's requests are published."""
 
@@ -96,7 +126,6 @@ class Node:
         import rospy
         from geometry_msgs.msg import PoseWithCovarianceStamped, Twist
         from move_base_msgs.msg import MoveBaseAction
-        from nav_msgs.msg import Odometry
         from sensor_msgs.msg import LaserScan
         from std_msgs.msg import String
 
@@ -122,7 +151,7 @@ class Node:
         if topics.get("mission"):
             rospy.Subscriber(topics["mission"], String, self.on_mission, queue_size=10)
         if settings.get("pose_source", "amcl") == "odom":
-            rospy.Subscriber(topics["odom"], Odometry, self.on_pose_message, queue_size=5)
+            rospy.Subscriber(topics["odom"], odometry_class(), self.on_pose_message, queue_size=5)
         else:
             rospy.Subscriber(
                 topics["amcl_pose"], PoseWithCovarianceStamped, self.on_pose_message, queue_size=5
