@@ -71,8 +71,11 @@ def test_a_missing_cython_is_named(monkeypatch: pytest.MonkeyPatch) -> None:
 
 @pytest.mark.parametrize("jobs", ["0", "-3", "65"])
 def test_bad_jobs_are_refused_before_anything_runs(jobs: str, capsys) -> None:  # noqa: ANN001
-    assert cli.main(["build", "--jobs", jobs]) == 2
-    assert capsys.readouterr().out.strip() == "robocog build: --jobs must be between 1 and 64"
+    with pytest.raises(SystemExit) as stop:
+        cli.main(["build", "--jobs", jobs])
+    assert stop.value.code == 2
+    err = capsys.readouterr().err.strip()
+    assert "--jobs" in err and "1 to 64" in err and len(err.splitlines()) == 1
 
 
 def test_a_current_build_is_not_built_again(

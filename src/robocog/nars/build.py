@@ -33,6 +33,8 @@ from collections.abc import Callable
 from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
 from pathlib import Path
 
+from robocog.argtypes import int_range
+
 #: the engine modules on the reasoning cycle's path (the Narsese reader and the shell
 #: spend their time in lark and in I/O, and gain nothing)
 ENGINE_MODULES = (
@@ -253,8 +255,8 @@ def configure(parser: argparse.ArgumentParser) -> None:
     """Declare ``robocog build``'s arguments."""
     parser.add_argument(
         "--jobs",
-        type=int,
-        default=os.cpu_count() or 1,
+        type=int_range(1, MAX_JOBS),
+        default=min(os.cpu_count() or 1, MAX_JOBS),
         help=f"modules compiled at once (default: the {os.cpu_count() or 1} cores)",
     )
     parser.add_argument(
@@ -269,9 +271,6 @@ def run(args: argparse.Namespace) -> int:
     from robocog.progress import Steps, duration, header
 
     console = Console()
-    if not 1 <= args.jobs <= MAX_JOBS:
-        console.print(f"robocog build: --jobs must be between 1 and {MAX_JOBS}", soft_wrap=True)
-        return 2
     here = package_dir()
     if is_current(here) and not args.force:
         console.print(
