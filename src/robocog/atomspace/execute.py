@@ -66,6 +66,13 @@ def call_grounded(space: AtomSpace, node: Atom, args: tuple[Atom, ...]) -> Any:
     try:
         fn = space.lookup_function(name)
     except KeyError:
+        if node[1].startswith("scm:"):
+            try:  # a Scheme interpreter over this space answers every scm: name
+                scm = space.lookup_function("scm:*")
+            except KeyError:
+                pass
+            else:
+                return scm(space, name, args)
         raise GroundedError(f"no Python function is registered under {name!r}") from None
     return fn(space, *args)
 

@@ -1,0 +1,491 @@
+"""OpenCog's Scheme API of 2021 over robocog's AtomSpace: ``(use-modules (opencog))``.
+
+Every atom type is a procedure that builds the atom and adds it to the current
+AtomSpace (``(Concept "a" (stv 0.9 0.8))``, ``(List a b)``; lists of atoms among a link's
+arguments are spliced in, as OpenCog's constructors do). The ``cog-`` procedures read and
+change the AtomSpace as their OpenCog namesakes do, and ``scm:`` grounded predicates and
+schemas call Scheme procedures. :func:`make_scheme` gives an interpreter with all of it.
+"""
+
+from __future__ import annotations
+
+import io
+from typing import Any
+
+from robocog.atomspace import schemelib
+from robocog.atomspace import types as _t
+from robocog.atomspace.atomese import dump, write_pretty
+from robocog.atomspace.atoms import Atom, Link, Node, atom_text
+from robocog.atomspace.scheme import (
+    UNSPECIFIED,
+    Primitive,
+    Procedure,
+    Scheme,
+    SchemeError,
+    Sym,
+    shorten,
+    sym,
+    to_text,
+)
+from robocog.atomspace.schemedata import PRINTERS
+from robocog.atomspace.space import TV_KEY, AtomSpace
+from robocog.atomspace.values import (
+    FloatValue,
+    LinkValue,
+    QueueValue,
+    StringValue,
+    TruthValue,
+    Value,
+    stv,
+)
+
+OPENCOG_MODULES = {
+    "opencog",
+    "opencog exec",
+    "opencog query",
+    "opencog logger",
+    "opencog type-utils",
+    "opencog atom-types",
+    "opencog persist",
+    "opencog python",
+}
+
+PRINTERS[Link] = atom_text
+PRINTERS[Node] = atom_text
+PRINTERS[Value] = lambda v: v.to_atomese()
+
+
+def _bad(who: str, x: Any, expecting: str) -> SchemeError:
+    return SchemeError(
+        "wrong-type-arg",
+        f"In procedure {who}: Wrong type argument (expecting {expecting}): "
+        f"{shorten(to_text(x), 100)}",
+    )
+
+
+def _atom(x: Any, who: str) -> Atom:
+    if not isinstance(x, Atom):
+        raise _bad(who, x, "an atom")
+    return x
+
+
+def _type_name(x: Any, who: str) -> str:
+    name = str.__str__(x) if isinstance(x, str) else None
+    if isinstance(x, Atom) and x[0] == "TypeNode":
+        name = x[1]
+    full = _t.resolve(name) if name else None
+    if full is None:
+        raise _bad(who, x, "an atom type")
+    return full
+
+
+def _node_name(x: Any, who: str) -> str:
+    if isinstance(x, bool):
+        raise _bad(who, x, "a string")
+    if isinstance(x, str):
+        return str.__str__(x)
+    if isinstance(x, int):
+        return str(x)
+    if isinstance(x, float):
+        return repr(x) if not x.is_integer() else str(int(x))
+    raise _bad(who, x, "a string")
+
+
+class CogAPI:
+    """The ``cog-`` procedures of one interpreter: they share its current AtomSpace."""
+
+    def __init__(self, scheme: Scheme, space: AtomSpace) -> None:
+        self.scheme = scheme
+        self.space = space
+        self.stack: list[AtomSpace] = []
+
+    # -- constructors
+    def node(self, full: str) -> Any:
+        def make(name: Any = None, *rest: Any) -> Atom:
+            if name is None:
+                raise SchemeError("wrong-number-of-args", f"{full} needs a name")
+            if isinstance(name, TruthValue):
+                name, rest = (rest[0] if rest else None), (name,)
+            text = _node_name(name, full)
+            tv = None
+            for r in rest:
+                if isinstance(r, TruthValue):
+                    tv = r
+                elif not isinstance(r, Value):
+                    raise _bad(full, r, "a truth value")
+            atom = Node(full, text)
+            return self._add(atom, tv)
+
+        return make
+
+    def link(self, full: str) -> Any:
+        def make(*args: Any) -> Any:
+            out: list[Atom] = []
+            tv = None
+            for a in args:
+                if isinstance(a, Atom):
+                    out.append(a)
+                elif isinstance(a, TruthValue):
+                    tv = a
+                elif isinstance(a, list):
+                    for b in a:
+                        out.append(_atom(b, full))
+                elif a is UNSPECIFIED:
+                    continue
+                else:
+                    raise _bad(full, a, "an atom")
+            return self._add(Link(full, *out), tv)
+
+        return make
+
+    def _add(self, atom: Atom, tv: TruthValue | None) -> Any:
+        try:
+            found = self.space.add(atom)
+        except ValueError as exc:
+            raise SchemeError("wrong-type-arg", str(exc)) from None
+        if found is None:
+            return atom  # a closed DeleteLink: it removed what it held
+        if tv is not None:
+            self.space.set_tv(found, tv)
+        return found
+
+    # -- execution
+    def execute(self, atom: Any) -> Any:
+        from robocog.atomspace.flow import execute_any
+
+        a = _atom(atom, "cog-execute!")
+        return _result(execute_any(self.space, a))
+
+    def evaluate(self, atom: Any) -> Any:
+        from robocog.atomspace.flow import evaluate_any
+
+        return evaluate_any(self.space, _atom(atom, "cog-evaluate!"))
+
+    # -- inspection
+    def incoming(self, atom: Any, *_as: Any) -> list:
+        return sorted(self.space.incoming(_atom(atom, "cog-incoming-set")))
+
+    def incoming_by_type(self, atom: Any, type: Any, *_as: Any) -> list:
+        t = _type_name(type, "cog-incoming-by-type")
+        a = _atom(atom, "cog-incoming-by-type")
+        return sorted(x for x in self.space.incoming(a) if _t.is_a(x[0], t))
+
+    def get_atoms(self, type: Any, subtypes: Any = False) -> list:
+        t = _type_name(type, "cog-get-atoms")
+        return sorted(self.space.get_by_type(t, subtypes=subtypes is not False))
+
+    def prt_atomspace(self, *_a: Any) -> Any:
+        self.scheme.out.write(dump(self.space))
+        return UNSPECIFIED
+
+    def node_lookup(self, type: Any, name: Any) -> Any:
+        atom = Node(_type_name(type, "cog-node"), _node_name(name, "cog-node"))
+        return atom if atom in self.space else []
+
+    def link_lookup(self, type: Any, *out: Any) -> Any:
+        flat: list[Atom] = []
+        for o in out:
+            flat.extend(o if isinstance(o, list) else [o])
+        atom = Link(_type_name(type, "cog-link"), *[_atom(a, "cog-link") for a in flat])
+        return atom if atom in self.space else []
+
+    def delete(self, atom: Any, *_a: Any) -> bool:
+        a = _atom(atom, "cog-delete!")
+        if a not in self.space or self.space.incoming(a):
+            return False
+        return self.space.remove(a)
+
+    def delete_recursive(self, atom: Any, *_a: Any) -> bool:
+        a = _atom(atom, "cog-delete-recursive!")
+        return self.space.remove(a, recursive=True) if a in self.space else False
+
+    # -- truth values and values
+    def tv(self, atom: Any) -> TruthValue:
+        return self.space.get_tv(_atom(atom, "cog-tv"))
+
+    def set_tv(self, atom: Any, tv: Any) -> Any:
+        a = _atom(atom, "cog-set-tv!")
+        if not isinstance(tv, TruthValue):
+            raise _bad("cog-set-tv!", tv, "a truth value")
+        return self.space.set_tv(a, tv)
+
+    def value(self, atom: Any, key: Any) -> Any:
+        v = self.space.get_value(_atom(atom, "cog-value"), _atom(key, "cog-value"))
+        return False if v is None else _result(v)
+
+    def set_value(self, atom: Any, key: Any, value: Any) -> Any:
+        a = _atom(atom, "cog-set-value!")
+        k = _atom(key, "cog-set-value!")
+        if isinstance(value, list):
+            value = LinkValue(value)
+        if value is False or value is None:
+            # OpenCog removes the key; robocog stores Values only, so an empty LinkValue
+            self.space.set_value(a, k, LinkValue([]))
+            return a
+        if isinstance(value, Atom):
+            value = LinkValue([value])
+        if not isinstance(value, Value):
+            raise _bad("cog-set-value!", value, "a Value")
+        return self.space.set_value(a, k, value)
+
+    def keys(self, atom: Any) -> list:
+        a = _atom(atom, "cog-keys")
+        keys = list(self.space.keys(a))
+        if self.space.get_tv_or_none(a) is not None and TV_KEY not in keys:
+            keys.append(TV_KEY)
+        return sorted(keys)
+
+    # -- atomspaces
+    def new_atomspace(self, parent: Any = None) -> AtomSpace:
+        if isinstance(parent, AtomSpace):
+            return parent.child()
+        return AtomSpace()
+
+    def set_atomspace(self, space: Any) -> AtomSpace:
+        if not isinstance(space, AtomSpace):
+            raise _bad("cog-set-atomspace!", space, "an AtomSpace")
+        old = self.space
+        self.space = space
+        return old
+
+    def push(self) -> Any:
+        self.stack.append(self.space)
+        self.space = self.space.child()
+        return UNSPECIFIED
+
+    def pop(self) -> Any:
+        if not self.stack:
+            raise SchemeError("misc-error", "cog-pop-atomspace: stack is empty")
+        self.space = self.stack.pop()
+        return UNSPECIFIED
+
+
+def _result(v: Any) -> Any:
+    """A value returned to Scheme (lists of atoms stay Python lists)."""
+    return UNSPECIFIED if v is None else v
+
+
+def _value_list(v: Any) -> list:
+    if isinstance(v, TruthValue):
+        return [v.strength, v.confidence]
+    if isinstance(v, Value):
+        return list(v.items)  # type: ignore[attr-defined]
+    if isinstance(v, Atom):
+        return list(v[1]) if isinstance(v, Link) else [v[1]]
+    raise _bad("cog-value->list", v, "a Value")
+
+
+def install(s: Scheme, space: AtomSpace | None = None) -> CogAPI:  # noqa: C901 - a table
+    """Give ``s`` OpenCog's modules, constructors and ``cog-`` procedures over ``space``."""
+    api = CogAPI(s, space if space is not None else AtomSpace())
+    s.known_modules |= OPENCOG_MODULES
+    d = s.define
+    for full in _t.all_types():
+        if full in ("Atom", "Node", "Link", "OrderedLink", "UnorderedLink"):
+            continue
+        maker = api.node(full) if full in _t.NODE_TYPES else api.link(full)
+        d(full, maker)
+    for short in list(_t._ALIASES):  # noqa: SLF001 - the table of short names
+        full = _t.resolve(short)
+        if full is not None and sym(full) in s.globals.vars:
+            d(short, s.globals.vars[sym(full)])
+
+    # values
+    def stv_(s_: Any, c: Any) -> TruthValue:
+        try:
+            return stv(s_, c)
+        except (TypeError, ValueError) as exc:
+            raise SchemeError("wrong-type-arg", f"In procedure stv: {exc}") from None
+
+    d("stv", stv_)
+    d("cog-new-stv", stv_)
+    d("SimpleTruthValue", stv_)
+    d("TruthValue", stv_)
+    d("FloatValue", lambda *a: FloatValue(_flatten(a)))
+    d("StringValue", lambda *a: StringValue(_flatten(a)))
+    d("LinkValue", lambda *a: LinkValue(_flatten(a)))
+    d("QueueValue", lambda *a: QueueValue(_flatten(a)))
+    d("cog-new-value", lambda t, *a: s.apply(s.lookup(str(t)), list(a)))
+
+    d("cog-execute!", api.execute)
+    d("cog-evaluate!", api.evaluate)
+    d("cog-incoming-set", api.incoming)
+    d("cog-incoming-by-type", api.incoming_by_type)
+    d(
+        "cog-outgoing-set",
+        lambda a: list(_atom(a, "cog-outgoing-set")[1]) if isinstance(a, Link) else [],
+    )
+    d("cog-outgoing-atom", lambda a, i: _atom(a, "cog-outgoing-atom")[1][i])
+    d(
+        "cog-outgoing-by-type",
+        lambda a, t: [x for x in a[1] if _t.is_a(x[0], _type_name(t, "cog-outgoing-by-type"))],
+    )
+    d("gar", lambda a: _atom(a, "gar")[1][0])
+    d("gdr", lambda a: _atom(a, "gdr")[1][1])
+    d("gadr", lambda a: _atom(a, "gadr")[1][1][1][0])
+    d("gddr", lambda a: _atom(a, "gddr")[1][1][1][1])
+    d("cog-node", api.node_lookup)
+    d("cog-link", api.link_lookup)
+    d("cog-atom", lambda a, *_: _atom(a, "cog-atom"))
+    d("cog-name", lambda a: _atom(a, "cog-name")[1] if isinstance(a, Node) else "")
+    d("cog-type", lambda a: sym(a[0]) if isinstance(a, Atom) else sym(_value_type(a)))
+    d("cog-arity", lambda a: len(a[1]) if isinstance(_atom(a, "cog-arity"), Link) else 0)
+    d("cog-atom?", lambda a: isinstance(a, Atom))
+    d("cog-node?", lambda a: isinstance(a, Node))
+    d("cog-link?", lambda a: isinstance(a, Link))
+    d("cog-value?", lambda a: isinstance(a, Value))
+    d("cog-tv?", lambda a: isinstance(a, TruthValue))
+    d(
+        "cog-subtype?",
+        lambda a, b: _t.is_a(_type_name(b, "cog-subtype?"), _type_name(a, "cog-subtype?")),
+    )
+    d("cog-get-types", lambda: [sym(t) for t in _t.all_types()])
+    d("cog-get-atoms", api.get_atoms)
+    d("cog-get-all-roots", lambda: sorted(a for a in api.space if not api.space.incoming(a)))
+    d("cog-map-type", lambda f, t: _map_type(s, api, f, t))
+    d("cog-count-atoms", lambda t: len(api.space.get_by_type(_type_name(t, "cog-count-atoms"))))
+    d("cog-chase-link", lambda lt, et, a: _chase(api, lt, et, a))
+    d("cog-prt-atomspace", api.prt_atomspace)
+    d("cog-delete!", api.delete)
+    d("cog-delete", api.delete)
+    d("cog-extract!", api.delete)
+    d("cog-extract", api.delete)
+    d("cog-delete-recursive!", api.delete_recursive)
+    d("cog-extract-recursive!", api.delete_recursive)
+    d("cog-equal?", lambda a, b: a == b)
+    d("cog-tv", api.tv)
+    d("cog-set-tv!", api.set_tv)
+    d("cog-mean", lambda a: api.tv(a).strength)
+    d("cog-confidence", lambda a: api.tv(a).confidence)
+    d("cog-tv-mean", lambda tv: _tv(tv, "cog-tv-mean").strength)
+    d("cog-tv-confidence", lambda tv: _tv(tv, "cog-tv-confidence").confidence)
+    d("cog-tv-count", lambda tv: 0.0)
+    d("cog-tv->alist", lambda tv: [[sym("mean"), tv.strength], [sym("confidence"), tv.confidence]])
+    d("cog-value", api.value)
+    d("cog-set-value!", api.set_value)
+    d("cog-keys", api.keys)
+    d("cog-value->list", _value_list)
+    d("cog-value-ref", lambda v, i: _value_list(v)[i])
+    d("cog-value-type", lambda v: sym(_value_type(v)))
+    d(
+        "cog-value-is-type?",
+        lambda v, t: _value_type(v) == str(t) or (isinstance(v, Atom) and _t.is_a(v[0], str(t))),
+    )
+    d("cog-new-atomspace", api.new_atomspace)
+    d("cog-set-atomspace!", api.set_atomspace)
+    d("cog-atomspace", lambda *a: api.space)
+    d("cog-atomspace?", lambda x: isinstance(x, AtomSpace))
+    d("cog-atomspace-env", lambda *a: api.space.parent or False)
+    d("cog-atomspace-clear", lambda *a: api.space.clear() or UNSPECIFIED)
+    d("cog-push-atomspace", api.push)
+    d("cog-pop-atomspace", api.pop)
+    d("cog-atomspace-ro!", lambda *a: UNSPECIFIED)
+    d("cog-atomspace-rw!", lambda *a: UNSPECIFIED)
+    d("cog-atomspace-cow!", lambda *a: UNSPECIFIED)
+    d("cog-report-counts", lambda: [])
+    for level in ("error", "warn", "info", "debug", "fine"):
+        d(f"cog-logger-{level}", lambda *a: UNSPECIFIED)
+    for what in ("level", "filename", "stdout", "sync", "timestamp", "component"):
+        d(f"cog-logger-set-{what}!", lambda *a: UNSPECIFIED)
+    d("cog-av", lambda a: [0, 0, 0])
+    d("cog-set-av!", lambda a, av: a)
+    d("cog-new-av", lambda *a: list(a))
+    d("av", lambda *a: list(a))
+
+    # scm: grounded procedures call back into this interpreter
+    def grounded(space: AtomSpace, name: str, args: tuple) -> Any:
+        try:
+            f = s.lookup(name)
+        except SchemeError:
+            raise SchemeError("unbound-variable", f"Unbound variable: {shorten(name)}") from None
+        old = api.space
+        api.space = space
+        try:
+            return s.apply(f, list(args))
+        finally:
+            api.space = old
+
+    api.space.register("scm:*", grounded)
+    s.cog = api  # type: ignore[attr-defined]
+    return api
+
+
+def _tv(x: Any, who: str) -> TruthValue:
+    if not isinstance(x, TruthValue):
+        raise _bad(who, x, "a truth value")
+    return x
+
+
+def _value_type(v: Any) -> str:
+    if isinstance(v, TruthValue):
+        return "SimpleTruthValue"
+    if isinstance(v, Value):
+        return type(v).__name__
+    if isinstance(v, Atom):
+        return v[0]
+    raise _bad("cog-value-type", v, "a Value")
+
+
+def _flatten(args: tuple) -> list:
+    out: list = []
+    for a in args:
+        if isinstance(a, list):
+            out.extend(a)
+        else:
+            out.append(a)
+    return out
+
+
+def _map_type(s: Scheme, api: CogAPI, f: Any, t: Any) -> Any:
+    for a in sorted(api.space.get_by_type(_type_name(t, "cog-map-type"))):
+        if s.apply(f, [a]) is not False:
+            return True
+    return False
+
+
+def _chase(api: CogAPI, link_type: Any, end_type: Any, anchor: Any) -> list:
+    lt = _type_name(link_type, "cog-chase-link")
+    et = _type_name(end_type, "cog-chase-link")
+    a = _atom(anchor, "cog-chase-link")
+    out = []
+    for link in api.space.incoming(a):
+        if not _t.is_a(link[0], lt):
+            continue
+        for x in link[1]:
+            if x != a and _t.is_a(x[0], et):
+                out.append(x)
+    return sorted(set(out))
+
+
+def make_scheme(space: AtomSpace | None = None, out: Any = None) -> Scheme:
+    """A Scheme interpreter with OpenCog's modules over ``space`` (a new one if None)."""
+    s = Scheme()
+    schemelib.install(s)
+    if out is not None:
+        s.out = out
+    install(s, space)
+    return s
+
+
+def run_text(text: str, space: AtomSpace | None = None, source: str = "<string>") -> str:
+    """Run a Scheme text and return what it printed (for tests and the fuzz harness)."""
+    buf = io.StringIO()
+    s = make_scheme(space, out=buf)
+    s.eval_text(text, source=source)
+    return buf.getvalue()
+
+
+def pretty(x: Any) -> str:
+    """A value as the REPL prints it (atoms indented as OpenCog prints them)."""
+    if isinstance(x, Atom | Value):
+        return write_pretty(x)
+    if isinstance(x, AtomSpace):
+        return f"#<atomspace {id(x):x}>"
+    return to_text(x)
+
+
+PRINTERS[AtomSpace] = lambda sp: f"#<atomspace {id(sp):x}>"
+
+__all__ = ["CogAPI", "install", "make_scheme", "pretty", "run_text"]
+
+_ = (Primitive, Procedure, Sym)

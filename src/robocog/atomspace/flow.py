@@ -1,0 +1,451 @@
+"""Executing the rest of OpenCog 2021's executable atoms: arithmetic, value flows,
+formulas, defined schemas, DualLink and MapLink.
+
+``execute_any`` is what ``cog-execute!`` does with any atom: queries and grounded
+schemas go to :func:`robocog.atomspace.execute.execute`; arithmetic links (PlusLink,
+MinusLink, TimesLink, DivideLink) compute over NumberNodes (giving a NumberNode) or over
+FloatValues and truth values (giving a FloatValue, element by element); ValueOfLink and
+its kin read Values; SetValueLink and SetTVLink write them; a PredicateFormulaLink gives
+a truth value from two numeric formulas; an evaluatable atom gives its truth value; a
+DefinedSchemaNode runs its definition; anything else is added and returned.
+"""
+
+from __future__ import annotations
+
+import operator
+from typing import TYPE_CHECKING, Any
+
+from robocog.atomspace import types as _t
+from robocog.atomspace.atoms import Atom, Link, Node, variables_of
+from robocog.atomspace.execute import GroundedError, evaluate, execute
+from robocog.atomspace.matcher import PatternError, parse_variables, substitute
+from robocog.atomspace.values import FALSE_TV, TRUE_TV, FloatValue, LinkValue, TruthValue, Value
+
+if TYPE_CHECKING:
+    from robocog.atomspace.space import AtomSpace
+
+_ARITH = {
+    "PlusLink": operator.add,
+    "MinusLink": operator.sub,
+    "TimesLink": operator.mul,
+    "DivideLink": operator.truediv,
+}
+_EVALUATABLE = frozenset(
+    {
+        "EvaluationLink",
+        "NotLink",
+        "AndLink",
+        "OrLink",
+        "EqualLink",
+        "IdenticalLink",
+        "PresentLink",
+        "AbsentLink",
+        "GreaterThanLink",
+        "SatisfactionLink",
+        "TrueLink",
+        "FalseLink",
+        "PredicateFormulaLink",
+        "DefinedPredicateNode",
+        "SequentialAndLink",
+        "SequentialOrLink",
+    }
+)
+#: how deep definitions may call one another while executing
+MAX_CALLS = 200
+
+
+class FlowError(PatternError):
+    """An atom that cannot be executed as written (wrong kinds of arguments)."""
+
+
+def number_text(x: float) -> str:
+    """A number as OpenCog 2021 names a NumberNode (six decimals, zeros trimmed)."""
+    if float(x).is_integer() and abs(x) < 1e15:
+        return str(int(x))
+    text = f"{x:.6f}".rstrip("0").rstrip(".")
+    return text if float(text) != 0 or x == 0 else repr(x)
+
+
+def _numbers(space: AtomSpace, v: Any, depth: int) -> tuple[list[float], bool]:
+    """(the numbers of an operand, whether it was a NumberNode)."""
+    if isinstance(v, Atom) and _executes(v):
+        v = execute_any(space, v, depth + 1)
+    if isinstance(v, Node) and v[0] == "NumberNode":
+        try:
+            return [float(p) for p in v[1].split()], True
+        except ValueError:
+            raise FlowError(f"not a number: {v}") from None
+    if isinstance(v, TruthValue):
+        return [v.strength, v.confidence], False
+    if isinstance(v, FloatValue):
+        return list(v.items), False
+    raise FlowError(f"arithmetic over a non-number: {str(v)[:200]}")
+
+
+def _executes(a: Atom) -> bool:
+    t = a[0]
+    return (
+        t in _ARITH
+        or t in _t.QUERY_TYPES
+        or t == "ExecutionOutputLink"
+        or t == "PutLink"
+        or t == "DefinedSchemaNode"
+        or _t.is_a(t, "ValueOfLink")
+        or t in ("SetValueLink", "SetTVLink", "MapLink", "DualLink", "RandomChoiceLink")
+    )
+
+
+def _arith(space: AtomSpace, atom: Atom, depth: int) -> Any:
+    op = _ARITH[atom[0]]
+    if any(variables_of(a) for a in atom[1]):
+        return space.add(atom)  # not closed: OpenCog returns it as it is
+    acc: list[float] | None = None
+    all_nodes = True
+    for a in atom[1]:
+        nums, is_node = _numbers(space, a, depth)
+        all_nodes = all_nodes and is_node
+        if acc is None:
+            acc = nums
+            continue
+        n = max(len(acc), len(nums))
+        if len(acc) == 1:
+            acc = acc * n
+        if len(nums) == 1:
+            nums = nums * n
+        try:
+            acc = [op(x, y) for x, y in zip(acc, nums, strict=False)]
+        except ZeroDivisionError:
+            raise FlowError(f"division by zero in {str(atom)[:200]}") from None
+    if acc is None:
+        acc = [0.0 if atom[0] in ("PlusLink", "MinusLink") else 1.0]
+    if all_nodes:
+        return space.add(Node("NumberNode", " ".join(number_text(x) for x in acc)))
+    return FloatValue(acc)
+
+
+def _definition(space: AtomSpace, node: Atom) -> Atom:
+    for d in space.incoming(node, "DefineLink"):
+        if d[1][0] == node:
+            return d[1][1]
+    raise FlowError(f"{node} is not defined")
+
+
+def _apply_lambda(space: AtomSpace, fn: Atom, args: Atom | Value | None) -> Atom:
+    """Beta-reduce a LambdaLink (or a formula with free variables) over ``args``."""
+    if fn[0] == "LambdaLink":
+        parts = fn[1]
+        decl = parts[0] if len(parts) == 2 else None
+        body = parts[-1]
+        variables, _allowed = parse_variables(decl, body)
+    else:
+        body = fn
+        variables = variables_of(fn)
+    if not variables:
+        return body
+    if isinstance(args, LinkValue):
+        given = tuple(args.items)
+    elif isinstance(args, Atom) and args[0] == "ListLink" and len(variables) != 1:
+        given = args[1]
+    elif isinstance(args, Atom) and args[0] == "ListLink" and len(args[1]) == 1:
+        given = args[1]
+    elif args is None:
+        given = ()
+    else:
+        given = (args,)
+    if len(given) != len(variables):
+        raise FlowError(f"{len(variables)} variables but {len(given)} arguments")
+    return substitute(body, dict(zip(variables, given, strict=True)))
+
+
+def execute_any(space: AtomSpace, atom: Atom, depth: int = 0) -> Any:  # noqa: C901
+    """Execute ``atom`` as OpenCog 2021's ``cog-execute!`` does."""
+    if depth > MAX_CALLS:
+        raise FlowError(f"execution nested more than {MAX_CALLS} deep")
+    t = atom[0]
+    out = atom[1]
+    if t in _ARITH:
+        return _arith(space, atom, depth)
+    if t == "DefinedSchemaNode":
+        return execute_any(space, _definition(space, atom), depth + 1)
+    if t in ("TruthValueOfLink", "StrengthOfLink", "ConfidenceOfLink", "CountOfLink"):
+        if not out:
+            raise FlowError(f"{t} needs an atom")
+        target = out[0]
+        if _executes(target):
+            target = execute_any(space, target, depth + 1)
+        if not isinstance(target, Atom):
+            raise FlowError(f"{t} of a non-atom")
+        tv = space.get_tv(target)
+        if t == "TruthValueOfLink":
+            return tv
+        if t == "StrengthOfLink":
+            return FloatValue([tv.strength])
+        if t == "ConfidenceOfLink":
+            return FloatValue([tv.confidence])
+        return FloatValue([0.0])
+    if t in ("ValueOfLink", "FloatValueOfLink", "StreamValueOfLink"):
+        if len(out) != 2:
+            raise FlowError("ValueOfLink takes an atom and a key")
+        v = space.get_value(out[0], out[1])
+        if v is None:
+            raise FlowError(f"no value at key {out[1]} on {str(out[0])[:200]}")
+        return v
+    if t == "SetValueLink":
+        if len(out) < 3:
+            raise FlowError("SetValueLink takes an atom, a key and a value")
+        value = _flow_value(space, out[2:], depth)
+        space.set_value(out[0], out[1], value)
+        return value
+    if t == "SetTVLink":
+        if len(out) < 2:
+            raise FlowError("SetTVLink takes an atom and a truth value")
+        value = _flow_value(space, out[1:], depth, want_tv=True)
+        if not isinstance(value, TruthValue):
+            nums = list(value.items) if isinstance(value, FloatValue) else []
+            if len(nums) < 2:
+                raise FlowError(f"SetTVLink: not a truth value: {value}")
+            value = TruthValue(min(1.0, max(0.0, nums[0])), min(1.0, max(0.0, nums[1])))
+        space.set_tv(out[0], value)
+        return value
+    if t in _EVALUATABLE:
+        return evaluate_any(space, atom, depth + 1)
+    if t == "ExecutionOutputLink" and out and out[0][0] in ("DefinedSchemaNode", "LambdaLink"):
+        fn = _definition(space, out[0]) if out[0][0] == "DefinedSchemaNode" else out[0]
+        args = out[1] if len(out) > 1 else None
+        return execute_any(space, _apply_lambda(space, fn, args), depth + 1)
+    if t == "DualLink":
+        return space.add(_dual(space, atom))
+    if t == "MapLink":
+        return _map(space, atom, depth)
+    if t == "PutLink":
+        r = execute(space, atom)
+        if isinstance(r, Atom) and _executes(r) and r[0] not in _t.QUERY_TYPES:
+            return execute_any(space, r, depth + 1)
+        return r
+    if t == "QueryLink":
+        # OpenCog 2021: a QueryLink gives the QueueValue of its rewrites
+        from robocog.atomspace.values import QueueValue
+
+        res = execute(space, atom)
+        return QueueValue(res[1]) if isinstance(res, Atom) else res
+    return execute(space, atom)
+
+
+def _flow_value(space: AtomSpace, parts: tuple, depth: int, want_tv: bool = False) -> Any:
+    """The value a SetValueLink/SetTVLink stores: one expression, or a function and
+    its arguments."""
+    if len(parts) == 1:
+        v = parts[0]
+        if isinstance(v, Atom) and (v[0] in _EVALUATABLE or v[0] == "DefinedPredicateNode"):
+            if want_tv:
+                return evaluate_any(space, v, depth + 1)
+        if isinstance(v, Atom) and _executes(v):
+            return execute_any(space, v, depth + 1)
+        if isinstance(v, Atom) and v[0] == "PredicateFormulaLink":
+            return evaluate_any(space, v, depth + 1)
+        if isinstance(v, Atom):
+            return LinkValue([v])
+        return v
+    fn, args = parts[0], parts[1]
+    if fn[0] in ("DefinedSchemaNode", "DefinedPredicateNode"):
+        fn = _definition(space, fn)
+    if fn[0] == "PredicateFormulaLink" or want_tv:
+        return evaluate_any(
+            space,
+            Link("EvaluationLink", fn, args)
+            if fn[0] != "LambdaLink"
+            else _apply_lambda(space, fn, args),
+            depth + 1,
+        )
+    if isinstance(args, Atom) and _executes(args):
+        args = execute_any(space, args, depth + 1)
+    return execute_any(space, _apply_lambda(space, fn, args), depth + 1)
+
+
+def evaluate_any(space: AtomSpace, atom: Atom, depth: int = 0) -> TruthValue:  # noqa: C901
+    """The truth value of ``atom``, as ``cog-evaluate!`` gives it."""
+    if depth > MAX_CALLS:
+        raise FlowError(f"evaluation nested more than {MAX_CALLS} deep")
+    t = atom[0]
+    out = atom[1]
+    if t == "PredicateFormulaLink":
+        if len(out) < 2:
+            raise FlowError("PredicateFormulaLink takes two formulas")
+        nums = []
+        for f in out[-2:]:
+            v, _is_node = _numbers(space, f, depth)
+            if not v:
+                raise FlowError("a formula gave no number")
+            nums.append(min(1.0, max(0.0, v[0])))
+        return TruthValue(nums[0], nums[1])
+    if t == "TrueLink":
+        return TRUE_TV
+    if t == "FalseLink":
+        return FALSE_TV
+    if (
+        t == "EvaluationLink"
+        and out
+        and out[0][0] in ("DefinedPredicateNode", "PredicateFormulaLink", "LambdaLink")
+    ):
+        fn = _definition(space, out[0]) if out[0][0] == "DefinedPredicateNode" else out[0]
+        args = out[1] if len(out) > 1 else None
+        return evaluate_any(space, _apply_lambda(space, fn, args), depth + 1)
+    if t == "DefinedPredicateNode":
+        return evaluate_any(space, _definition(space, atom), depth + 1)
+    if t == "NotLink" and len(out) == 1:
+        tv = evaluate_any(space, out[0], depth + 1)
+        return TruthValue(1.0 - tv.strength, tv.confidence)
+    if t in ("AndLink", "SequentialAndLink"):
+        for a in out:
+            if not evaluate_any(space, a, depth + 1).is_true():
+                return FALSE_TV
+        return TRUE_TV
+    if t in ("OrLink", "SequentialOrLink"):
+        for a in out:
+            if evaluate_any(space, a, depth + 1).is_true():
+                return TRUE_TV
+        return FALSE_TV
+    if t == "GreaterThanLink" and len(out) == 2:
+        x, _ = _numbers(space, out[0], depth)
+        y, _ = _numbers(space, out[1], depth)
+        return TRUE_TV if x and y and x[0] > y[0] else FALSE_TV
+    if t in ("TruthValueOfLink", "StrengthOfLink", "ConfidenceOfLink"):
+        v = execute_any(space, atom, depth + 1)
+        return v if isinstance(v, TruthValue) else TRUE_TV
+    if _t.is_a(t, "SetValueLink") or t in _ARITH:
+        v = execute_any(space, atom, depth + 1)
+        if isinstance(v, TruthValue):
+            return v
+        if isinstance(v, FloatValue) and len(v.items) >= 2:
+            return TruthValue(min(1.0, max(0.0, v.items[0])), min(1.0, max(0.0, v.items[1])))
+        return TRUE_TV
+    if t == "EqualLink":
+        vals = [execute_any(space, a, depth + 1) if _executes(a) else a for a in out]
+        return TRUE_TV if all(v == vals[0] for v in vals[1:]) else FALSE_TV
+    try:
+        return evaluate(space, atom)
+    except GroundedError:
+        raise
+
+
+def _match(pattern: Atom, term: Atom, variables: set, allowed: dict, b: dict) -> bool:
+    """Does ``term`` match ``pattern`` (binding ``variables`` in ``b``)?"""
+    if pattern in variables:
+        if pattern in b:
+            return b[pattern] == term
+        ok = allowed.get(pattern)
+        if ok is not None and not ok(term):
+            return False
+        b[pattern] = term
+        return True
+    if pattern.__class__ is Node or term.__class__ is Node:
+        return pattern == term
+    if pattern[0] != term[0] or len(pattern[1]) != len(term[1]):
+        return False
+    if pattern[0] in _t.UNORDERED:
+        return _match_unordered(list(pattern[1]), list(term[1]), variables, allowed, b)
+    return all(
+        _match(p, x, variables, allowed, b) for p, x in zip(pattern[1], term[1], strict=True)
+    )
+
+
+def _match_unordered(ps: list, ts: list, variables: set, allowed: dict, b: dict) -> bool:
+    if not ps:
+        return True
+    p = ps[0]
+    for i, x in enumerate(ts):
+        trial = dict(b)
+        if _match(p, x, variables, allowed, trial) and _match_unordered(
+            ps[1:], ts[:i] + ts[i + 1 :], variables, allowed, trial
+        ):
+            b.clear()
+            b.update(trial)
+            return True
+    return False
+
+
+def _type_check(allowed: Any) -> Any:
+    if allowed is None:
+        return None
+
+    def check(term: Atom) -> bool:
+        try:
+            return bool(allowed(term))
+        except TypeError:
+            return term[0] in allowed or any(_t.is_a(term[0], a) for a in allowed)
+
+    return check
+
+
+def _map(space: AtomSpace, atom: Atom, depth: int) -> Any:
+    """MapLink: the pattern (a LambdaLink, a ScopeLink or a term with variables) matched
+    against each member of the arguments; each match gives the groundings (one atom, or
+    a ListLink for several variables; with an ImplicationLink body, its rewrite)."""
+    out = atom[1]
+    if len(out) != 2:
+        raise FlowError("MapLink takes a pattern and arguments")
+    fn, args = out
+    if _executes(args):
+        args = execute_any(space, args, depth + 1)
+    if fn[0] in ("LambdaLink", "ScopeLink"):
+        parts = fn[1]
+        decl = parts[0] if len(parts) == 2 else None
+        body = parts[-1]
+        variables, allowed = parse_variables(decl, body)
+    else:
+        body = fn
+        variables, allowed = variables_of(fn), {}
+    rewrite = None
+    if body[0] == "ImplicationLink" and len(body[1]) == 2:
+        body, rewrite = body[1]
+    checks = (
+        {v: _type_check(a) for v, a in (allowed or {}).items()} if isinstance(allowed, dict) else {}
+    )
+    members = (
+        args[1]
+        if isinstance(args, Atom) and args[0] in ("SetLink", "ListLink")
+        else (tuple(args.items) if isinstance(args, LinkValue) else (args,))
+    )
+    results = []
+    vs = set(variables)
+    for m in members:
+        b: dict = {}
+        if not _match(body, m, vs, checks, b):
+            continue
+        if rewrite is not None:
+            results.append(substitute(rewrite, b))
+        elif len(variables) == 1:
+            results.append(b[variables[0]])
+        else:
+            results.append(Link("ListLink", *[b[v] for v in variables]))
+    if isinstance(args, LinkValue):
+        return LinkValue(results)
+    kind = args[0] if isinstance(args, Atom) and args[0] in ("SetLink", "ListLink") else "SetLink"
+    return space.add(Link(kind, *results))
+
+
+def _dual(space: AtomSpace, atom: Atom) -> Atom:
+    """DualLink: the patterns in the space (atoms with free variables) that the given
+    ground term matches; a SetLink of them."""
+    out = atom[1]
+    if len(out) != 1:
+        raise FlowError("DualLink takes one term")
+    term = out[0]
+    found = []
+    seen = set()
+    stack = [a for a in space if a.__class__ is Link and a[0] == term[0]]
+    for cand in stack:
+        if cand in seen or cand == term:
+            continue
+        seen.add(cand)
+        vs = variables_of(cand)
+        if not vs:
+            continue
+        if _match(cand, term, set(vs), {}, {}):
+            found.append(cand)
+    return Link("SetLink", *found)
+
+
+__all__ = ["FlowError", "evaluate_any", "execute_any", "number_text"]
+
+_ = Value
