@@ -45,7 +45,9 @@ _GUILE_DRIVER = r"""
                    (lambda () (call-with-values
                                 (lambda () (eval form (interaction-environment)))
                                 (lambda vals (if (null? vals) *unspecified* (car vals)))))
-                   (lambda (key . args) (list '@@error key)))))
+                   (lambda (key . args)
+                     (format (current-error-port) "@@ERROR ~a: ~a ~s\n" (+ 1 line) key args)
+                     (list '@@error key)))))
           (display "\n@@RESULT ") (display (+ 1 line)) (newline)
           (if (unspecified? result) (display "@@unspecified") (write result))
           (display "\n@@END\n")
@@ -184,7 +186,7 @@ def one(path: str) -> int:
     from robocog.atomspace.cogscm import make_scheme
     from robocog.atomspace.scheme import UNSPECIFIED, SchemeError, read, to_text
 
-    scheme = make_scheme(out=sys.stdout)
+    scheme = make_scheme(out=sys.stdout, preload=False)
     text = Path(path).read_text(encoding="utf-8")
     try:
         forms = list(read(text, path))
@@ -234,12 +236,14 @@ def compare(path: Path, prefix: Path | None, verbose: bool) -> tuple[bool, int, 
         if errors:
             notes.append(f"{errors} forms raised errors: {err.strip().splitlines()[:1]}")
         return errors == 0, len(mine), len(mine) - errors, notes
-    theirs, _oerr = run_opencog(prefix, path)
+    theirs, oerr = run_opencog(prefix, path)
+    if verbose:
+        notes.extend(ln[:300] for ln in oerr.splitlines() if ln.startswith("@@ERROR"))
     text = path.read_text(encoding="utf-8", errors="replace").split("\n")
     n = ok = 0
     for line, got in sorted(theirs.items()):
         src = text[line - 1].strip() if 0 < line <= len(text) else ""
-        if got.strip() == "@@unspecified" or src.startswith(_SKIP_HEADS):
+        if line <= 0 or got.strip() == "@@unspecified" or src.startswith(_SKIP_HEADS):
             continue
         n += 1
         want_c = canon_result(got)

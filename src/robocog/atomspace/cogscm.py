@@ -275,10 +275,28 @@ def _value_list(v: Any) -> list:
     raise _bad("cog-value->list", v, "a Value")
 
 
-def install(s: Scheme, space: AtomSpace | None = None) -> CogAPI:  # noqa: C901 - a table
-    """Give ``s`` OpenCog's modules, constructors and ``cog-`` procedures over ``space``."""
+def install(s: Scheme, space: AtomSpace | None = None, preload: bool = True) -> CogAPI:
+    """Give ``s`` OpenCog's modules, constructors and ``cog-`` procedures over ``space``:
+    bound at once (``preload``, as the REPL and ``robocog atomese`` have them), or only
+    after ``(use-modules (opencog))``, as in a bare Guile."""
+    before = set(s.globals.vars)
+    api = _install(s, space)
+    bindings = {k: v for k, v in s.globals.vars.items() if k not in before}
+    for m in OPENCOG_MODULES:
+        s.known_modules.setdefault(m, {})
+    s.known_modules["opencog exec"] = {
+        k: bindings.pop(k) for k in (sym("cog-execute!"), sym("cog-evaluate!"))
+    }
+    s.known_modules["opencog"] = bindings
+    if not preload:
+        for m in ("opencog", "opencog exec"):
+            for k in s.known_modules[m]:
+                del s.globals.vars[k]
+    return api
+
+
+def _install(s: Scheme, space: AtomSpace | None) -> CogAPI:  # noqa: C901 - a table
     api = CogAPI(s, space if space is not None else AtomSpace())
-    s.known_modules |= OPENCOG_MODULES
     d = s.define
     for full in _t.all_types():
         if full in ("Atom", "Node", "Link", "OrderedLink", "UnorderedLink"):
@@ -379,9 +397,9 @@ def install(s: Scheme, space: AtomSpace | None = None) -> CogAPI:  # noqa: C901 
     d("cog-atomspace-clear", lambda *a: api.space.clear() or UNSPECIFIED)
     d("cog-push-atomspace", api.push)
     d("cog-pop-atomspace", api.pop)
-    d("cog-atomspace-ro!", lambda *a: UNSPECIFIED)
-    d("cog-atomspace-rw!", lambda *a: UNSPECIFIED)
-    d("cog-atomspace-cow!", lambda *a: UNSPECIFIED)
+    d("cog-atomspace-ro!", lambda *a: True)
+    d("cog-atomspace-rw!", lambda *a: True)
+    d("cog-atomspace-cow!", lambda *a: True)
     d("cog-report-counts", lambda: [])
     for level in ("error", "warn", "info", "debug", "fine"):
         d(f"cog-logger-{level}", lambda *a: UNSPECIFIED)
@@ -457,13 +475,14 @@ def _chase(api: CogAPI, link_type: Any, end_type: Any, anchor: Any) -> list:
     return sorted(set(out))
 
 
-def make_scheme(space: AtomSpace | None = None, out: Any = None) -> Scheme:
-    """A Scheme interpreter with OpenCog's modules over ``space`` (a new one if None)."""
+def make_scheme(space: AtomSpace | None = None, out: Any = None, preload: bool = True) -> Scheme:
+    """A Scheme interpreter with OpenCog's modules over ``space`` (a new one if None);
+    without ``preload``, OpenCog's procedures come with ``(use-modules (opencog))``."""
     s = Scheme()
     schemelib.install(s)
     if out is not None:
         s.out = out
-    install(s, space)
+    install(s, space, preload=preload)
     return s
 
 

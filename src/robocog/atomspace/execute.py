@@ -129,6 +129,15 @@ def _put(space: AtomSpace, atom: Atom) -> Any:
     if len(out) != 2:
         raise PatternError(f"PutLink needs a body and arguments: {atom}")
     body, args = out
+    if body[0] in ("DefinedSchemaNode", "DefinedPredicateNode"):
+        for d in space.incoming(body, "DefineLink"):
+            if d[1][0] == body:
+                body = d[1][1]
+                break
+    if _executable(args):
+        args = _run(space, args)  # (Put body (Get ...)): the query's groundings
+        if not isinstance(args, Atom):
+            raise PatternError(f"PutLink: its arguments gave {args!r}, not atoms")
     if body[0] == "LambdaLink":
         parts = body[1]
         decl = parts[0] if len(parts) == 2 else None

@@ -59,11 +59,10 @@ class FlowError(PatternError):
 
 
 def number_text(x: float) -> str:
-    """A number as OpenCog 2021 names a NumberNode (six decimals, zeros trimmed)."""
+    """A number as OpenCog 2021 names a NumberNode (ten significant digits)."""
     if float(x).is_integer() and abs(x) < 1e15:
         return str(int(x))
-    text = f"{x:.6f}".rstrip("0").rstrip(".")
-    return text if float(text) != 0 or x == 0 else repr(x)
+    return f"{x:.10g}"
 
 
 def _numbers(space: AtomSpace, v: Any, depth: int) -> tuple[list[float], bool]:
@@ -219,6 +218,8 @@ def execute_any(space: AtomSpace, atom: Atom, depth: int = 0) -> Any:  # noqa: C
         return _map(space, atom, depth)
     if t == "PutLink":
         r = execute(space, atom)
+        if r is None:
+            return False  # a DeleteLink reduced: OpenCog gives no atom
         if isinstance(r, Atom) and _executes(r) and r[0] not in _t.QUERY_TYPES:
             return execute_any(space, r, depth + 1)
         return r
@@ -387,7 +388,13 @@ def _map(space: AtomSpace, atom: Atom, depth: int) -> Any:
     fn, args = out
     if _executes(args):
         args = execute_any(space, args, depth + 1)
-    if fn[0] in ("LambdaLink", "ScopeLink"):
+    rewrite = None
+    if fn[0] == "ImplicationScopeLink":
+        parts = fn[1]
+        decl = parts[0] if len(parts) == 3 else None
+        body, rewrite = parts[-2], parts[-1]
+        variables, allowed = parse_variables(decl, body)
+    elif fn[0] in ("LambdaLink", "ScopeLink"):
         parts = fn[1]
         decl = parts[0] if len(parts) == 2 else None
         body = parts[-1]
@@ -395,7 +402,6 @@ def _map(space: AtomSpace, atom: Atom, depth: int) -> Any:
     else:
         body = fn
         variables, allowed = variables_of(fn), {}
-    rewrite = None
     if body[0] == "ImplicationLink" and len(body[1]) == 2:
         body, rewrite = body[1]
     checks = (
@@ -406,6 +412,11 @@ def _map(space: AtomSpace, atom: Atom, depth: int) -> Any:
         if isinstance(args, Atom) and args[0] in ("SetLink", "ListLink")
         else (tuple(args.items) if isinstance(args, LinkValue) else (args,))
     )
+    single = not (
+        isinstance(args, LinkValue)
+        or (isinstance(args, Atom) and args[0] in ("SetLink", "ListLink"))
+    )
+    members = tuple(_ground(space, m, depth) for m in members)
     results = []
     vs = set(variables)
     for m in members:
@@ -413,15 +424,30 @@ def _map(space: AtomSpace, atom: Atom, depth: int) -> Any:
         if not _match(body, m, vs, checks, b):
             continue
         if rewrite is not None:
-            results.append(substitute(rewrite, b))
+            r = substitute(rewrite, b)
+            results.append(execute_any(space, r, depth + 1) if _executes(r) else space.add(r))
         elif len(variables) == 1:
             results.append(b[variables[0]])
         else:
             results.append(Link("ListLink", *[b[v] for v in variables]))
+    if single:
+        return results[0] if results else space.add(Link("SetLink"))
     if isinstance(args, LinkValue):
         return LinkValue(results)
     kind = args[0] if isinstance(args, Atom) and args[0] in ("SetLink", "ListLink") else "SetLink"
     return space.add(Link(kind, *results))
+
+
+def _ground(space: AtomSpace, atom: Any, depth: int) -> Any:
+    """An argument with its arithmetic done (``(Times (Number 3) (Number 2))`` is 6)."""
+    if not isinstance(atom, Atom) or atom.__class__ is Node:
+        return atom
+    if atom[0] in _ARITH and not variables_of(atom):
+        return execute_any(space, atom, depth + 1)
+    new = tuple(_ground(space, a, depth) for a in atom[1])
+    if all(x is y for x, y in zip(new, atom[1], strict=True)):
+        return atom
+    return Link(atom[0], *new)
 
 
 def _dual(space: AtomSpace, atom: Atom) -> Atom:

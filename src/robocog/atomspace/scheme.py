@@ -143,7 +143,8 @@ class Scheme:
         self.globals = Env({}, None)
         self.source = "<string>"
         self.out = sys.stdout
-        self.known_modules: set[str] = set()
+        #: module name -> the bindings ``use-modules`` brings into the globals
+        self.known_modules: dict[str, dict] = {}
 
     # -- public entry points
     def define(self, name: str, value: Any) -> None:
@@ -639,6 +640,7 @@ class Scheme:
                 raise SchemeError(
                     "misc-error", f"no code for module ({shorten(name)})", args=[name]
                 )
+            self.globals.vars.update(self.known_modules[name])
         return UNSPECIFIED
 
 

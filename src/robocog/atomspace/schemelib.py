@@ -223,7 +223,8 @@ def _format(dest: Any, fmt: Any = None, *args: Any) -> Any:
 
 def install(s: Scheme) -> None:  # noqa: C901 - one table of procedures
     """Bind the standard procedures in ``s``'s global environment."""
-    s.known_modules |= _MODULES
+    for m in _MODULES:
+        s.known_modules.setdefault(m, {})
     d = s.define
 
     def write_out(text: str, port: Any = None) -> Any:
