@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Any
 
 from robocog.atomspace import types as _t
 from robocog.atomspace.atoms import Atom, Link, Node, variables_of
-from robocog.atomspace.execute import GroundedError, evaluate, execute
+from robocog.atomspace.execute import GroundedError, evaluate, execute, set_flow
 from robocog.atomspace.matcher import PatternError, parse_variables, substitute
 from robocog.atomspace.values import FALSE_TV, TRUE_TV, FloatValue, LinkValue, TruthValue, Value
 
@@ -471,6 +471,12 @@ def _dual(space: AtomSpace, atom: Atom) -> Atom:
             found.append(cand)
     return Link("SetLink", *found)
 
+
+def _flow_operand(space: AtomSpace, atom: Atom) -> Any:
+    return execute_any(space, atom) if _executes(atom) else atom
+
+
+set_flow(_flow_operand)
 
 __all__ = ["FlowError", "evaluate_any", "execute_any", "number_text"]
 

@@ -18,6 +18,7 @@ from robocog.atomspace.matcher.clauses import (
 )
 from robocog.atomspace.matcher.terms import (
     Bindings,
+    _self_ground,
     drop_self_groundings,
     has_var_in,
     match,
@@ -186,6 +187,9 @@ class _CompiledAlt:
             if i >= 0:
                 atom, vs = self.evals[i]
                 if all(v in b for v in vs):
+                    mine = frozenset(b)
+                    if any(_self_ground(b[v], mine) for v in vs):
+                        return False, rest  # the pattern found itself: never evaluated
                     if not _eval_clause(space, substitute(atom, b)):
                         return False, rest
                     continue
