@@ -42,6 +42,10 @@ if TYPE_CHECKING:
     from robocog.atomspace.space import AtomSpace
 
 
+class MissingValue(PatternError):
+    """A ValueOfLink asked for a key the atom has no Value under."""
+
+
 class GroundedError(RuntimeError):
     """A grounded name that is not registered, or malformed."""
 
@@ -275,6 +279,13 @@ def run_query(space: AtomSpace, link: Atom) -> Any:
     if space.count_type("DefineLink"):
         body = _expand_defined(space, body)
     t = link[0]
+    if decl is None and body[0] == "AbsentLink" and t in ("BindLink", "QueryLink"):
+        # nothing to ground, only an absence to check: the rewrite once, or nothing
+        if any(query(space, a, limit=1) for a in body[1]):
+            return Link("SetLink")
+        _d, _b, rewrite = _split(link)
+        r = instantiate(space, rewrite) if rewrite is not None else None
+        return Link("SetLink", *([r] if isinstance(r, Atom) else []))
     if _split_or(body):
         return _boolean_query(space, link, decl, body)
     if decl is None and t != "SatisfactionLink":
@@ -439,7 +450,10 @@ def evaluate(space: AtomSpace, atom: Atom) -> TruthValue:
     if t == "GreaterThanLink":
         if len(out) != 2:
             raise PatternError("GreaterThanLink takes two numbers")
-        x, y = (_operand(space, a) for a in out)
+        try:
+            x, y = (_operand(space, a) for a in out)
+        except MissingValue:
+            return FALSE_TV  # a value that is not there compares as false
         return TRUE_TV if _number(x) > _number(y) else FALSE_TV
     if t == "SatisfactionLink":
         return run_query(space, atom)

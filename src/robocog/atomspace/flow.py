@@ -17,7 +17,13 @@ from typing import TYPE_CHECKING, Any
 
 from robocog.atomspace import types as _t
 from robocog.atomspace.atoms import Atom, Link, Node, variables_of
-from robocog.atomspace.execute import GroundedError, evaluate, execute, set_flow
+from robocog.atomspace.execute import (
+    GroundedError,
+    MissingValue,
+    evaluate,
+    execute,
+    set_flow,
+)
 from robocog.atomspace.matcher import PatternError, parse_variables, substitute
 from robocog.atomspace.values import FALSE_TV, TRUE_TV, FloatValue, LinkValue, TruthValue, Value
 
@@ -187,7 +193,7 @@ def execute_any(space: AtomSpace, atom: Atom, depth: int = 0) -> Any:  # noqa: C
             raise FlowError("ValueOfLink takes an atom and a key")
         v = space.get_value(out[0], out[1])
         if v is None:
-            raise FlowError(f"no value at key {out[1]} on {str(out[0])[:200]}")
+            raise MissingValue(f"no value at key {out[1]} on {str(out[0])[:200]}")
         return v
     if t == "SetValueLink":
         if len(out) < 3:
