@@ -129,7 +129,19 @@ def canon_result(text: str) -> str:
     if text.startswith("#<atomspace") or text.startswith("#<procedure"):
         return text.split()[0].rstrip(">") + ">"
     data = read_sexprs(text)
+    if (
+        len(data) == 1
+        and isinstance(data[0], list)
+        and data[0]
+        and all(isinstance(x, list) and x and _is_atom_head(x[0]) for x in data[0])
+    ):
+        # a Scheme list of atoms (cog-incoming-set, cog-keys...): OpenCog gives no order
+        return "(" + " ".join(sorted(canon(x) for x in data[0])) + ")"
     return " ".join(canon(d) for d in data)
+
+
+def _is_atom_head(x: object) -> bool:
+    return isinstance(x, str) and (x.endswith("Node") or x.endswith("Link"))
 
 
 # ---------------------------------------------------------------------- running
@@ -202,6 +214,9 @@ def one(path: str) -> int:
         except SchemeError as exc:
             print(str(exc), file=sys.stderr)
             shown = f"(@@error {exc.key})"
+        except (TypeError, ValueError, RecursionError) as exc:  # a value that cannot print
+            print(f"{path}:{line}: cannot print the result: {exc}", file=sys.stderr)
+            shown = "(@@error print)"
         sys.stdout.write(f"\n@@RESULT {line}\n{shown}\n@@END\n")
         sys.stdout.flush()
     _ = to_text

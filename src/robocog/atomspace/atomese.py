@@ -20,17 +20,41 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
 from robocog.atomspace import types as _t
-from robocog.atomspace.atoms import Atom, Node, _raw_link, _raw_node, atom_text, bulk, quote
+from robocog.atomspace.atoms import (
+    Atom,
+    Node,
+    _raw_link,
+    _raw_node,
+    atom_text,
+    bulk,
+    deep,
+    quote,
+)
 from robocog.atomspace.values import TruthValue, Value
 
 if TYPE_CHECKING:
     from robocog.atomspace.space import AtomSpace
 
 
+#: deepest nesting of parentheses the reader accepts
+MAX_NESTING = 1000
+#: most atoms one link may hold when read from text (adding a link costs time in
+#: proportion to its arity for each atom it holds, so arity is bounded)
+MAX_ARITY = 4096
+#: longest text read at once (characters)
+MAX_TEXT = 64 * 1024 * 1024
+#: longest error message (a 10 MB symbol is not echoed whole)
+MAX_MESSAGE = 400
+
+
 class AtomeseError(ValueError):
     """Malformed Atomese, with the place where it was found."""
 
     def __init__(self, message: str, line: int, column: int, source: str = "<string>") -> None:
+        if len(message) > MAX_MESSAGE:
+            message = message[: MAX_MESSAGE - 3] + "..."
+        if len(source) > 200:
+            source = source[:197] + "..."
         super().__init__(f"{source}:{line}:{column}: {message}")
         self.message = message
         self.line = line
@@ -113,6 +137,8 @@ def parse(text: str, source: str = "<string>", env: dict[str, Atom] | None = Non
     """
     if not isinstance(text, str):
         raise TypeError("Atomese text must be a str")
+    if len(text) > MAX_TEXT:
+        raise AtomeseError(f"text longer than {MAX_TEXT} characters", 1, 1, source)
     names: dict[str, Atom] = dict(env or {})
     result = Parsed(names=names)
     tvs = result.tvs
@@ -135,6 +161,8 @@ def parse(text: str, source: str = "<string>", env: dict[str, Atom] | None = Non
             line_start = m.end()
             continue
         if kind == "open":
+            if len(stack) >= MAX_NESTING:
+                raise err(f"nesting deeper than {MAX_NESTING} levels", line, col)
             stack.append([[], line, col])
             continue
         if kind == "close":
@@ -143,6 +171,10 @@ def parse(text: str, source: str = "<string>", env: dict[str, Atom] | None = Non
             items, fl, fc = stack.pop()
             value = _reduce(items, fl, fc, names, tvs, err, bool(stack), memo)
             if stack:
+                if len(stack[-1][0]) > MAX_ARITY:
+                    raise err(
+                        f"a link holding more than {MAX_ARITY} atoms", stack[-1][1], stack[-1][2]
+                    )
                 stack[-1][0].append(value)
             elif isinstance(value, _Exec):
                 result.forms.append(Form(value.atom, True, fl, fc))
@@ -171,6 +203,8 @@ def parse(text: str, source: str = "<string>", env: dict[str, Atom] | None = Non
             tok = _Tok(_NUM if _NUMBER.match(s) else _SYM, s, line, col)
         else:
             raise err(f"unexpected character {m.group()!r}", line, col)
+        if stack and len(stack[-1][0]) > MAX_ARITY:
+            raise err(f"a link holding more than {MAX_ARITY} atoms", stack[-1][1], stack[-1][2])
         if not stack:
             if tok.kind == _SYM and tok.text in names:
                 continue  # a bare reference at top level evaluates to itself: no-op
@@ -278,14 +312,47 @@ def load(
     The whole text is parsed first, so a malformed text leaves ``space`` unchanged.
     Returns the top-level atoms (as added to the space).
     """
-    with bulk():
+    with bulk(), deep():
         parsed = parse(text, source=source, env=env)
-        return add_parsed(parsed, space)
+        return add_parsed(parsed, space, source)
 
 
-def add_parsed(parsed: Parsed, space: AtomSpace) -> list[Atom]:
-    """Add what :func:`parse` read to ``space``; returns the top-level atoms."""
-    added = [space.add(f.atom) for f in parsed.forms]
+def _check_defines(parsed: Parsed, space: AtomSpace, source: str) -> None:
+    """A name a DefineLink defines may be defined once (OpenCog refuses a second
+    definition): refuse the text before anything is added."""
+    seen: dict[Atom, Atom] = {}
+    for f in parsed.forms:
+        atom = f.atom
+        if atom[0] != "DefineLink" or len(atom[1]) != 2:
+            continue
+        key = atom[1][0]
+        earlier = seen.get(key)
+        if earlier is None and key in space:
+            for d in space.incoming(key, "DefineLink"):
+                if d[1] and d[1][0] == key:
+                    earlier = d
+        if earlier is not None and earlier != atom:
+            raise AtomeseError(
+                f"{str(key)[:200]} is already defined (a DefineLink defines a name once)",
+                f.line,
+                f.column,
+                source,
+            )
+        seen[key] = atom
+
+
+def add_parsed(parsed: Parsed, space: AtomSpace, source: str = "<string>") -> list[Atom]:
+    """Add what :func:`parse` read to ``space``; returns the top-level atoms.
+
+    A second DefineLink of a name is an :class:`AtomeseError` and adds nothing."""
+    _check_defines(parsed, space, source)
+    added = []
+    with deep():
+        for f in parsed.forms:
+            try:
+                added.append(space.add(f.atom))
+            except ValueError as exc:
+                raise AtomeseError(str(exc), f.line, f.column, source) from None
     out = [a for a in added if a is not None]  # a closed DeleteLink removes, adds nothing
     for atom, tv in parsed.tvs:
         space.set_tv(atom, tv)
@@ -347,6 +414,9 @@ def dump(space: AtomSpace) -> str:
 
 
 __all__ = [
+    "MAX_ARITY",
+    "MAX_NESTING",
+    "MAX_TEXT",
     "AtomeseError",
     "Form",
     "Parsed",

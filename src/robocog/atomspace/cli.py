@@ -18,7 +18,7 @@ from typing import Any
 
 from robocog.atomspace import types as _t
 from robocog.atomspace.atomese import dump
-from robocog.atomspace.atoms import Atom
+from robocog.atomspace.atoms import Atom, deep
 from robocog.atomspace.scheme import (
     UNSPECIFIED,
     Form,
@@ -93,6 +93,11 @@ def _label(inner: Any, head: Any) -> str:
 
 def run(args: argparse.Namespace) -> int:
     """Run the files (or a REPL), print the results of their queries."""
+    with deep():  # deep atoms are added and printed by recursion
+        return _run(args)
+
+
+def _run(args: argparse.Namespace) -> int:
     from robocog.atomspace.cogscm import make_scheme
 
     space = AtomSpace()

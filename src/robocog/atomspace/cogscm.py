@@ -14,7 +14,7 @@ from typing import Any
 
 from robocog.atomspace import schemelib
 from robocog.atomspace import types as _t
-from robocog.atomspace.atomese import dump, write_pretty
+from robocog.atomspace.atomese import MAX_ARITY, dump, write_pretty
 from robocog.atomspace.atoms import Atom, Link, Node, atom_text
 from robocog.atomspace.scheme import (
     UNSPECIFIED,
@@ -91,6 +91,10 @@ def _node_name(x: Any, who: str) -> str:
     raise _bad(who, x, "a string")
 
 
+#: what a key holds once ``(cog-set-value! atom key #f)`` removed its value
+_REMOVED = LinkValue([])
+
+
 class CogAPI:
     """The ``cog-`` procedures of one interpreter: they share its current AtomSpace."""
 
@@ -98,6 +102,8 @@ class CogAPI:
         self.scheme = scheme
         self.space = space
         self.stack: list[AtomSpace] = []
+        #: ids of the spaces marked read-only (their truth values cannot change)
+        self.readonly: set[int] = set()
 
     # -- constructors
     def node(self, full: str) -> Any:
@@ -134,6 +140,10 @@ class CogAPI:
                     continue
                 else:
                     raise _bad(full, a, "an atom")
+            if len(out) > MAX_ARITY:
+                raise SchemeError(
+                    "wrong-number-of-args", f"{full}: more than {MAX_ARITY} atoms in one link"
+                )
             return self._add(Link(full, *out), tv)
 
         return make
@@ -205,13 +215,15 @@ class CogAPI:
 
     def set_tv(self, atom: Any, tv: Any) -> Any:
         a = _atom(atom, "cog-set-tv!")
+        if id(self.space) in self.readonly:
+            raise SchemeError("misc-error", "TruthValue not changed; AtomSpace is readonly")
         if not isinstance(tv, TruthValue):
             raise _bad("cog-set-tv!", tv, "a truth value")
         return self.space.set_tv(a, tv)
 
     def value(self, atom: Any, key: Any) -> Any:
         v = self.space.get_value(_atom(atom, "cog-value"), _atom(key, "cog-value"))
-        return False if v is None else _result(v)
+        return False if v is None or v is _REMOVED else _result(v)
 
     def set_value(self, atom: Any, key: Any, value: Any) -> Any:
         a = _atom(atom, "cog-set-value!")
@@ -220,7 +232,7 @@ class CogAPI:
             value = LinkValue(value)
         if value is False or value is None:
             # OpenCog removes the key; robocog stores Values only, so an empty LinkValue
-            self.space.set_value(a, k, LinkValue([]))
+            self.space.set_value(a, k, _REMOVED)
             return a
         if isinstance(value, Atom):
             value = LinkValue([value])
@@ -230,7 +242,7 @@ class CogAPI:
 
     def keys(self, atom: Any) -> list:
         a = _atom(atom, "cog-keys")
-        keys = list(self.space.keys(a))
+        keys = [k for k in self.space.keys(a) if self.space.get_value(a, k) is not _REMOVED]
         if self.space.get_tv_or_none(a) is not None and TV_KEY not in keys:
             keys.append(TV_KEY)
         return sorted(keys)
@@ -299,7 +311,7 @@ def _install(s: Scheme, space: AtomSpace | None) -> CogAPI:  # noqa: C901 - a ta
     api = CogAPI(s, space if space is not None else AtomSpace())
     d = s.define
     for full in _t.all_types():
-        if full in ("Atom", "Node", "Link", "OrderedLink", "UnorderedLink"):
+        if full in ("Atom", "Node", "Link"):
             continue
         maker = api.node(full) if full in _t.NODE_TYPES else api.link(full)
         d(full, maker)
@@ -321,8 +333,8 @@ def _install(s: Scheme, space: AtomSpace | None) -> CogAPI:  # noqa: C901 - a ta
     d("TruthValue", stv_)
     d("FloatValue", lambda *a: FloatValue(_flatten(a)))
     d("StringValue", lambda *a: StringValue(_flatten(a)))
-    d("LinkValue", lambda *a: LinkValue(_flatten(a)))
-    d("QueueValue", lambda *a: QueueValue(_flatten(a)))
+    d("LinkValue", lambda *a: LinkValue(_members(_flatten(a), "LinkValue")))
+    d("QueueValue", lambda *a: QueueValue(_members(_flatten(a), "QueueValue")))
     d("cog-new-value", lambda t, *a: s.apply(s.lookup(str(t)), list(a)))
 
     d("cog-execute!", api.execute)
@@ -385,30 +397,45 @@ def _install(s: Scheme, space: AtomSpace | None) -> CogAPI:  # noqa: C901 - a ta
     d("cog-value->list", _value_list)
     d("cog-value-ref", lambda v, i: _value_list(v)[i])
     d("cog-value-type", lambda v: sym(_value_type(v)))
-    d(
-        "cog-value-is-type?",
-        lambda v, t: _value_type(v) == str(t) or (isinstance(v, Atom) and _t.is_a(v[0], str(t))),
-    )
     d("cog-new-atomspace", api.new_atomspace)
     d("cog-set-atomspace!", api.set_atomspace)
     d("cog-atomspace", lambda *a: api.space)
     d("cog-atomspace?", lambda x: isinstance(x, AtomSpace))
     d("cog-atomspace-env", lambda *a: api.space.parent or False)
-    d("cog-atomspace-clear", lambda *a: api.space.clear() or UNSPECIFIED)
+    d("cog-atomspace-clear", lambda *a: api.space.clear() or True)
     d("cog-push-atomspace", api.push)
     d("cog-pop-atomspace", api.pop)
-    d("cog-atomspace-ro!", lambda *a: True)
-    d("cog-atomspace-rw!", lambda *a: True)
+    d("cog-atomspace-ro!", lambda *a: api.readonly.add(id(a[0] if a else api.space)) or True)
+    d("cog-atomspace-rw!", lambda *a: api.readonly.discard(id(a[0] if a else api.space)) or True)
     d("cog-atomspace-cow!", lambda *a: True)
     d("cog-report-counts", lambda: [])
     for level in ("error", "warn", "info", "debug", "fine"):
         d(f"cog-logger-{level}", lambda *a: UNSPECIFIED)
-    for what in ("level", "filename", "stdout", "sync", "timestamp", "component"):
-        d(f"cog-logger-set-{what}!", lambda *a: UNSPECIFIED)
-    d("cog-av", lambda a: [0, 0, 0])
+    logger: dict[str, Any] = {
+        "level": "INFO",
+        "filename": "opencog.log",
+        "stdout": True,
+        "sync": True,
+        "timestamp": True,
+        "component": "",
+    }
+
+    def setter(what: str) -> Any:
+        def set_(*a: Any) -> Any:
+            old = logger[what]
+            if a:
+                v = a[-1]
+                logger[what] = v.upper() if what == "level" and isinstance(v, str) else v
+            return old if what in ("level", "filename", "component") else True
+
+        return set_
+
+    for what in list(logger):
+        d(f"cog-logger-set-{what}!", setter(what))
+        d(f"cog-logger-get-{what}", lambda what=what: logger[what])
     d("cog-set-av!", lambda a, av: a)
-    d("cog-new-av", lambda *a: list(a))
-    d("av", lambda *a: list(a))
+    d("cog-new-av", lambda *a: AttentionValue(a))
+    d("av", lambda *a: AttentionValue(a))
 
     # scm: grounded procedures call back into this interpreter
     def grounded(space: AtomSpace, name: str, args: tuple) -> Any:
@@ -426,6 +453,20 @@ def _install(s: Scheme, space: AtomSpace | None) -> CogAPI:  # noqa: C901 - a ta
     api.space.register("scm:*", grounded)
     s.cog = api  # type: ignore[attr-defined]
     return api
+
+
+class AttentionValue(FloatValue):
+    """``(av sti lti vlti)``: kept and printed, not used (no attention allocation)."""
+
+    __slots__ = ()
+    _name = "av"
+
+
+def _members(items: list, who: str) -> list:
+    for x in items:
+        if not isinstance(x, Atom | Value):
+            raise _bad(who, x, "atoms or Values")
+    return items
 
 
 def _tv(x: Any, who: str) -> TruthValue:

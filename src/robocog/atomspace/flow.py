@@ -25,7 +25,15 @@ from robocog.atomspace.execute import (
     set_flow,
 )
 from robocog.atomspace.matcher import PatternError, parse_variables, substitute
-from robocog.atomspace.values import FALSE_TV, TRUE_TV, FloatValue, LinkValue, TruthValue, Value
+from robocog.atomspace.values import (
+    FALSE_TV,
+    TRUE_TV,
+    FloatValue,
+    LinkValue,
+    QueueValue,
+    TruthValue,
+    Value,
+)
 
 if TYPE_CHECKING:
     from robocog.atomspace.space import AtomSpace
@@ -54,6 +62,8 @@ _EVALUATABLE = frozenset(
         "DefinedPredicateNode",
         "SequentialAndLink",
         "SequentialOrLink",
+        "ParallelLink",
+        "ThreadJoinLink",
     }
 )
 #: how deep definitions may call one another while executing
@@ -71,9 +81,16 @@ def number_text(x: float) -> str:
     return f"{x:.10g}"
 
 
-def _numbers(space: AtomSpace, v: Any, depth: int) -> tuple[list[float], bool]:
-    """(the numbers of an operand, whether it was a NumberNode)."""
-    if isinstance(v, Atom) and _executes(v):
+def _numbers(
+    space: AtomSpace, v: Any, depth: int, env: dict | None = None
+) -> tuple[list[float], bool]:
+    """(the numbers of an operand, whether it was a NumberNode); ``env`` gives the
+    Values that variables stand for (a schema applied to a FloatValue)."""
+    if env and v in env:
+        v = env[v]
+    elif env and isinstance(v, Atom) and v[0] in _ARITH:
+        v = _arith(space, v, depth + 1, env)
+    elif isinstance(v, Atom) and _executes(v):
         v = execute_any(space, v, depth + 1)
     if isinstance(v, Node) and v[0] == "NumberNode":
         try:
@@ -96,18 +113,18 @@ def _executes(a: Atom) -> bool:
         or t == "PutLink"
         or t == "DefinedSchemaNode"
         or _t.is_a(t, "ValueOfLink")
-        or t in ("SetValueLink", "SetTVLink", "MapLink", "DualLink", "RandomChoiceLink")
+        or t in ("SetValueLink", "SetTVLink", "MapLink", "DualLink", "ExecuteThreadedLink")
     )
 
 
-def _arith(space: AtomSpace, atom: Atom, depth: int) -> Any:
+def _arith(space: AtomSpace, atom: Atom, depth: int, env: dict | None = None) -> Any:
     op = _ARITH[atom[0]]
-    if any(variables_of(a) for a in atom[1]):
+    if not env and any(variables_of(a) for a in atom[1]):
         return space.add(atom)  # not closed: OpenCog returns it as it is
     acc: list[float] | None = None
     all_nodes = True
     for a in atom[1]:
-        nums, is_node = _numbers(space, a, depth)
+        nums, is_node = _numbers(space, a, depth, env)
         all_nodes = all_nodes and is_node
         if acc is None:
             acc = nums
@@ -194,6 +211,8 @@ def execute_any(space: AtomSpace, atom: Atom, depth: int = 0) -> Any:  # noqa: C
         v = space.get_value(out[0], out[1])
         if v is None:
             raise MissingValue(f"no value at key {out[1]} on {str(out[0])[:200]}")
+        if t == "StreamValueOfLink" and isinstance(v, QueueValue):
+            return LinkValue(v.items)  # a queue read as a stream gives what it holds
         return v
     if t == "SetValueLink":
         if len(out) < 3:
@@ -218,6 +237,14 @@ def execute_any(space: AtomSpace, atom: Atom, depth: int = 0) -> Any:  # noqa: C
         fn = _definition(space, out[0]) if out[0][0] == "DefinedSchemaNode" else out[0]
         args = out[1] if len(out) > 1 else None
         return execute_any(space, _apply_lambda(space, fn, args), depth + 1)
+    if t == "ExecuteThreadedLink":
+        # the threads run one after the other here; each result in its own queue
+        items = out[-1][1] if out and out[-1][0] in ("SetLink", "ListLink") else out
+        return QueueValue(
+            [_queued(execute_any(space, a, depth + 1)) for a in items if a[0] != "NumberNode"]
+        )
+    if t in ("ParallelLink", "ThreadJoinLink", "SleepLink"):
+        return evaluate_any(space, atom, depth + 1)
     if t == "DualLink":
         return space.add(_dual(space, atom))
     if t == "MapLink":
@@ -231,7 +258,6 @@ def execute_any(space: AtomSpace, atom: Atom, depth: int = 0) -> Any:  # noqa: C
         return r
     if t == "QueryLink":
         # OpenCog 2021: a QueryLink gives the QueueValue of its rewrites
-        from robocog.atomspace.values import QueueValue
 
         res = execute(space, atom)
         return QueueValue(res[1]) if isinstance(res, Atom) else res
@@ -266,6 +292,13 @@ def _flow_value(space: AtomSpace, parts: tuple, depth: int, want_tv: bool = Fals
         )
     if isinstance(args, Atom) and _executes(args):
         args = execute_any(space, args, depth + 1)
+    if isinstance(args, Value) and not isinstance(args, LinkValue) and fn[0] == "LambdaLink":
+        # a schema over a Value: its variable stands for the Value in the arithmetic
+        parts = fn[1]
+        variables, _allowed = parse_variables(parts[0] if len(parts) == 2 else None, parts[-1])
+        body = parts[-1]
+        if len(variables) == 1 and body[0] in _ARITH:
+            return _arith(space, body, depth + 1, {variables[0]: args})
     return execute_any(space, _apply_lambda(space, fn, args), depth + 1)
 
 
@@ -285,10 +318,17 @@ def evaluate_any(space: AtomSpace, atom: Atom, depth: int = 0) -> TruthValue:  #
                 raise FlowError("a formula gave no number")
             nums.append(min(1.0, max(0.0, v[0])))
         return TruthValue(nums[0], nums[1])
-    if t == "TrueLink":
+    if t in ("TrueLink", "FalseLink", "SleepLink"):
+        for a in out:  # what they wrap is run, its value ignored
+            if a.__class__ is Link:
+                _run_for_effect(space, a, depth)
+        return FALSE_TV if t == "FalseLink" else TRUE_TV
+    if t in ("ParallelLink", "ThreadJoinLink"):
+        # the threads run one after the other here
+        results = [_run_for_effect(space, a, depth) for a in out]
+        if t == "ThreadJoinLink":
+            return TRUE_TV if all(r is not False for r in results) else FALSE_TV
         return TRUE_TV
-    if t == "FalseLink":
-        return FALSE_TV
     if (
         t == "EvaluationLink"
         and out
@@ -476,6 +516,22 @@ def _dual(space: AtomSpace, atom: Atom) -> Atom:
         if _match(cand, term, set(vs), {}, {}):
             found.append(cand)
     return Link("SetLink", *found)
+
+
+def _queued(r: Any) -> Any:
+    """A thread's result as ExecuteThreadedLink collects it (a QueueValue)."""
+    if isinstance(r, QueueValue):
+        return r
+    return QueueValue([r] if r is not None else [])
+
+
+def _run_for_effect(space: AtomSpace, a: Atom, depth: int) -> Any:
+    """Run what a TrueLink, ParallelLink... holds; False if it evaluated false."""
+    if a[0] in _EVALUATABLE or a[0] in ("ParallelLink", "ThreadJoinLink", "SleepLink"):
+        return evaluate_any(space, a, depth + 1).is_true() or False
+    if _executes(a):
+        return execute_any(space, a, depth + 1)
+    return a
 
 
 def _flow_operand(space: AtomSpace, atom: Atom) -> Any:

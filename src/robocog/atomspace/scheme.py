@@ -632,6 +632,7 @@ class Scheme:
         return out
 
     def _use_modules(self, x: list) -> Any:
+        found = []
         for spec in x[1:]:
             if isinstance(spec, list) and spec and spec[0].__class__ is not Sym:
                 spec = spec[0]  # ((ice-9 readline) #:select ...)
@@ -640,7 +641,9 @@ class Scheme:
                 raise SchemeError(
                     "misc-error", f"no code for module ({shorten(name)})", args=[name]
                 )
-            self.globals.vars.update(self.known_modules[name])
+            found.append(self.known_modules[name])
+        for bindings in found:  # all or nothing, as Guile's use-modules
+            self.globals.vars.update(bindings)
         return UNSPECIFIED
 
 

@@ -200,6 +200,7 @@ _TOKEN = re.compile(
   | (?P<nl>\n)
   | (?P<comment>;[^\n]*)
   | (?P<block>\#\|(?:.|\n)*?\|\#)
+  | (?P<block2>\#!(?:.|\n)*?!\#)
   | (?P<datumc>\#;)
   | (?P<open>[(\[])
   | (?P<close>[)\]])
@@ -309,7 +310,7 @@ def read(text: str, source: str = "<string>") -> Iterator[Any]:
             line += 1
             line_start = m.end()
             continue
-        if kind == "block":
+        if kind == "block" or kind == "block2":
             raw = m.group()
             nls = raw.count("\n")
             if nls:

@@ -602,6 +602,9 @@ def install(s: Scheme) -> None:  # noqa: C901 - one table of procedures
 
     # time and the rest of Guile's core the examples touch
     d("current-time", lambda: int(_time.time()))
+    d("localtime", lambda t, *_: _time.localtime(t))
+    d("gmtime", lambda t: _time.gmtime(t))
+    d("strftime", lambda fmt, tm: _time.strftime(str(fmt), tm))
     d("get-internal-real-time", lambda: int(_time.perf_counter() * 1e9))
     d("internal-time-units-per-second", 1_000_000_000)
     d("usleep", lambda n: UNSPECIFIED)
@@ -626,3 +629,12 @@ def install(s: Scheme) -> None:  # noqa: C901 - one table of procedures
     d("hash-ref", lambda h, k, default=False: h.get(_hkey(k), default))
     d("hash-remove!", lambda h, k: h.pop(_hkey(k), None) and UNSPECIFIED)
     d("hash-count", lambda f, h: len(h))
+
+    # srfi-19 time objects (seconds as a float)
+    srfi19 = {
+        sym("current-time"): Primitive(lambda *a: _time.time(), "current-time"),
+        sym("time-difference"): Primitive(lambda a, b: a - b, "time-difference"),
+        sym("time-second"): Primitive(lambda t: int(t), "time-second"),
+        sym("time-nanosecond"): Primitive(lambda t: int((t - int(t)) * 1e9), "time-nanosecond"),
+    }
+    s.known_modules["srfi srfi-19"] = srfi19
