@@ -139,6 +139,11 @@ def parse(text: str, source: str = "<string>", env: dict[str, Atom] | None = Non
         raise TypeError("Atomese text must be a str")
     if len(text) > MAX_TEXT:
         raise AtomeseError(f"text longer than {MAX_TEXT} characters", 1, 1, source)
+    with deep():  # equal deep atoms compare by recursion
+        return _parse(text, source, env)
+
+
+def _parse(text: str, source: str, env: dict[str, Atom] | None) -> Parsed:
     names: dict[str, Atom] = dict(env or {})
     result = Parsed(names=names)
     tvs = result.tvs
