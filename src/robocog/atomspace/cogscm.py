@@ -527,10 +527,20 @@ def make_scheme(space: AtomSpace | None = None, out: Any = None, preload: bool =
     return s
 
 
-def run_text(text: str, space: AtomSpace | None = None, source: str = "<string>") -> str:
-    """Run a Scheme text and return what it printed (for tests and the fuzz harness)."""
+def run_text(
+    text: str,
+    space: AtomSpace | None = None,
+    source: str = "<string>",
+    max_steps: int | None = None,
+) -> str:
+    """Run a Scheme text with OpenCog's modules and return what it printed.
+
+    Every failure is a :class:`~robocog.atomspace.scheme.SchemeError` (an
+    :class:`~robocog.atomspace.atomese.AtomeseError`) with file, line and column;
+    ``max_steps`` bounds the evaluation steps (for text from an untrusted source)."""
     buf = io.StringIO()
     s = make_scheme(space, out=buf)
+    s.budget = max_steps
     s.eval_text(text, source=source)
     return buf.getvalue()
 

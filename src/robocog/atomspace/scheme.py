@@ -143,6 +143,9 @@ class Scheme:
         self.globals = Env({}, None)
         self.source = "<string>"
         self.out = sys.stdout
+        #: evaluation steps left (None: no limit); a program that runs past it ends with
+        #: a ``step-limit`` error (for untrusted text: a loop cannot run forever)
+        self.budget: int | None = None
         #: module name -> the bindings ``use-modules`` brings into the globals
         self.known_modules: dict[str, dict] = {}
 
@@ -278,6 +281,11 @@ class Scheme:
     def eval(self, x: Any, env: Env) -> Any:  # noqa: C901 - one loop for tail calls
         """Evaluate ``x`` in ``env`` (tail positions loop instead of recursing)."""
         while True:
+            if self.budget is not None:
+                self.budget -= 1
+                if self.budget < 0:
+                    self.budget = None
+                    raise SchemeError("step-limit", "evaluation took more steps than allowed")
             cls = x.__class__
             if cls is Sym:
                 e = env
@@ -665,9 +673,14 @@ def _body(body: list) -> list:
 
 
 def _datum(x: Any) -> Any:
-    """A quoted datum: read lists become plain lists (dotted ones pairs)."""
+    """A quoted datum: read dotted lists become pairs, at any depth."""
     if isinstance(x, DottedForm):
-        return x.pair
+        value: Any = _datum(x.tail)
+        for y in reversed(x):
+            value = Pair(_datum(y), value)
+        return value
+    if isinstance(x, Form) and any(isinstance(y, Form) for y in x):
+        return [_datum(y) for y in x]
     return x
 
 

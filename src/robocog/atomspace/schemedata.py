@@ -453,7 +453,14 @@ def _text(x: Any, write: bool, parts: list[str], depth: int) -> None:  # noqa: C
         parts.append("#:" + str.__str__(x))
     elif isinstance(x, str):
         if write:
-            parts.append('"' + x.replace("\\", "\\\\").replace('"', '\\"') + '"')
+            parts.append(
+                '"'
+                + x.replace("\\", "\\\\")
+                .replace('"', '\\"')
+                .replace("\n", "\\n")
+                .replace("\t", "\\t")
+                + '"'
+            )
         else:
             parts.append(x)
     elif isinstance(x, float):
