@@ -10,6 +10,7 @@ schemas call Scheme procedures. :func:`make_scheme` gives an interpreter with al
 from __future__ import annotations
 
 import io
+import random as _random
 from typing import Any
 
 from robocog.atomspace import schemelib
@@ -296,6 +297,13 @@ def install(s: Scheme, space: AtomSpace | None = None, preload: bool = True) -> 
     bindings = {k: v for k, v in s.globals.vars.items() if k not in before}
     for m in OPENCOG_MODULES:
         s.known_modules.setdefault(m, {})
+
+    def no_bank(*_a: Any) -> Any:
+        raise SchemeError("misc-error", "attention values need an AttentionBank (not modelled)")
+
+    s.known_modules["opencog attentionbank"] = {
+        sym(n): Primitive(no_bank, n) for n in ("cog-av", "cog-set-av!", "cog-new-av", "av")
+    }
     s.known_modules["opencog exec"] = {
         k: bindings.pop(k) for k in (sym("cog-execute!"), sym("cog-evaluate!"))
     }
@@ -433,9 +441,7 @@ def _install(s: Scheme, space: AtomSpace | None) -> CogAPI:  # noqa: C901 - a ta
     for what in list(logger):
         d(f"cog-logger-set-{what}!", setter(what))
         d(f"cog-logger-get-{what}", lambda what=what: logger[what])
-    d("cog-set-av!", lambda a, av: a)
-    d("cog-new-av", lambda *a: AttentionValue(a))
-    d("av", lambda *a: AttentionValue(a))
+    d("RandomStream", lambda n=1: RandomStream(n))
 
     # scm: grounded procedures call back into this interpreter
     def grounded(space: AtomSpace, name: str, args: tuple) -> Any:
@@ -455,11 +461,27 @@ def _install(s: Scheme, space: AtomSpace | None) -> CogAPI:  # noqa: C901 - a ta
     return api
 
 
-class AttentionValue(FloatValue):
-    """``(av sti lti vlti)``: kept and printed, not used (no attention allocation)."""
+class RandomStream(FloatValue):
+    """``(RandomStream n)``: each read gives ``n`` new random numbers in [0, 1)."""
 
-    __slots__ = ()
-    _name = "av"
+    __slots__ = ("_n",)
+    _name = "RandomStream"
+
+    def __init__(self, n: Any = 1) -> None:
+        if isinstance(n, bool) or not isinstance(n, int) or not 0 < n <= 1_000_000:
+            raise _bad("RandomStream", n, "a count from 1 to 10^6")
+        object.__setattr__(self, "_n", n)
+
+    @property
+    def items(self) -> tuple[float, ...]:  # type: ignore[override]
+        """Fresh samples at each read."""
+        return tuple(_random.random() for _ in range(self._n))
+
+    def __eq__(self, other: object) -> bool:
+        return self is other
+
+    def __hash__(self) -> int:
+        return id(self)
 
 
 def _members(items: list, who: str) -> list:

@@ -176,7 +176,28 @@ def _apply_lambda(space: AtomSpace, fn: Atom, args: Atom | Value | None) -> Atom
         given = (args,)
     if len(given) != len(variables):
         raise FlowError(f"{len(variables)} variables but {len(given)} arguments")
-    return substitute(body, dict(zip(variables, given, strict=True)))
+    return _beta(body, dict(zip(variables, given, strict=True)))
+
+
+def _beta(atom: Atom, mapping: dict) -> Atom:
+    """``atom`` with the variables of ``mapping`` replaced, also inside nested scopes
+    (a GetLink in a LambdaLink's body) that do not declare them again."""
+    if atom.__class__ is Node:
+        return mapping.get(atom, atom)
+    out = atom[1]
+    if atom[0] in _t.QUERY_TYPES or atom[0] == "LambdaLink":
+        first = out[0] if out else None
+        if first is not None and (first in mapping or first[0] in _t.VARIABLE_DECLS):
+            bound = set(variables_of(first)) if first[0] in _t.VARIABLE_DECLS else {first}
+            if first[0] == "TypedVariableLink":
+                bound = {first[1][0]}
+            mapping = {k: v for k, v in mapping.items() if k not in bound}
+            if not mapping:
+                return atom
+    new = tuple(_beta(a, mapping) for a in out)
+    if all(x is y for x, y in zip(new, out, strict=True)):
+        return atom
+    return Link(atom[0], *new)
 
 
 def execute_any(space: AtomSpace, atom: Atom, depth: int = 0) -> Any:  # noqa: C901
@@ -231,6 +252,8 @@ def execute_any(space: AtomSpace, atom: Atom, depth: int = 0) -> Any:  # noqa: C
             value = TruthValue(min(1.0, max(0.0, nums[0])), min(1.0, max(0.0, nums[1])))
         space.set_tv(out[0], value)
         return value
+    if t == "PredicateFormulaLink" and variables_of(atom):
+        return space.add(atom)  # a formula with free variables is its own value
     if t in _EVALUATABLE:
         return evaluate_any(space, atom, depth + 1)
     if t == "ExecutionOutputLink" and out and out[0][0] in ("DefinedSchemaNode", "LambdaLink"):
@@ -336,6 +359,10 @@ def evaluate_any(space: AtomSpace, atom: Atom, depth: int = 0) -> TruthValue:  #
     ):
         fn = _definition(space, out[0]) if out[0][0] == "DefinedPredicateNode" else out[0]
         args = out[1] if len(out) > 1 else None
+        if fn[0] == "PredicateFormulaLink" and any(f[0] == "LambdaLink" for f in fn[1]):
+            # formulas wrapped in LambdaLinks: each is applied to the arguments
+            parts = [_apply_lambda(space, f, args) if f[0] == "LambdaLink" else f for f in fn[1]]
+            return evaluate_any(space, Link("PredicateFormulaLink", *parts), depth + 1)
         return evaluate_any(space, _apply_lambda(space, fn, args), depth + 1)
     if t == "DefinedPredicateNode":
         return evaluate_any(space, _definition(space, atom), depth + 1)
