@@ -30,7 +30,7 @@ from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
 SRC = HERE.parent / "src"
-TIMEOUT = 120
+TIMEOUT = 300  # gperf.scm builds 10^6 atoms
 
 _GUILE_DRIVER = r"""
 (use-modules (ice-9 rdelim))

@@ -36,6 +36,7 @@ from robocog.atomspace.matcher import (
     query,
     substitute,
 )
+from robocog.atomspace.matcher.variables import type_admits
 from robocog.atomspace.values import FALSE_TV, TRUE_TV, FloatValue, QueueValue, TruthValue, Value
 
 if TYPE_CHECKING:
@@ -164,7 +165,7 @@ def _put(space: AtomSpace, atom: Atom) -> Any:
         given = (values,) if len(variables) == 1 else _arguments(values)
         for v, x in zip(variables, given, strict=False):
             ok = allowed.get(v)
-            if isinstance(ok, frozenset) and x[0] not in ok:
+            if isinstance(ok, frozenset) and not type_admits(ok, x):
                 return False
         return True
 

@@ -25,6 +25,7 @@ from robocog.atomspace.execute import (
     set_flow,
 )
 from robocog.atomspace.matcher import PatternError, parse_variables, substitute
+from robocog.atomspace.matcher.variables import type_admits
 from robocog.atomspace.values import (
     FALSE_TV,
     TRUE_TV,
@@ -443,10 +444,7 @@ def _type_check(allowed: Any) -> Any:
         return None
 
     def check(term: Atom) -> bool:
-        try:
-            return bool(allowed(term))
-        except TypeError:
-            return term[0] in allowed or any(_t.is_a(term[0], a) for a in allowed)
+        return type_admits(allowed, term)
 
     return check
 

@@ -574,6 +574,12 @@ def install(s: Scheme) -> None:  # noqa: C901 - one table of procedures
     d("format", fmt)
     d("simple-format", fmt)
 
+    def ice9_format(dest: Any, fmtstr: Any = None, *args: Any) -> Any:
+        r = fmt(dest, fmtstr, *args)
+        return True if dest is True else r  # (ice-9 format)'s format answers #t
+
+    s.known_modules["ice-9 format"] = {sym("format"): Primitive(ice9_format, "format")}
+
     # errors
     def throw(key: Any, *args: Any) -> Any:
         raise Throw(key, list(args))
