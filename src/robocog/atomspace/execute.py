@@ -274,10 +274,26 @@ def _expand_defined(space: AtomSpace, atom: Atom, depth: int = 0) -> Atom:
     return Link(atom[0], *new)
 
 
+def _definition_variables(space: AtomSpace, body: Atom) -> list[Atom] | None:
+    """OpenCog 2021 lists the variables of a GetLink whose clauses are defined
+    predicates clause by clause, each definition's own (a variable shared by three
+    definitions is listed three times); None when no definition stands as a clause."""
+    clauses = body[1] if body[0] == "AndLink" else (body,)
+    if not any(c[0] == "DefinedPredicateNode" for c in clauses):
+        return None
+    seq: list[Atom] = []
+    for c in clauses:
+        seq.extend(variables_of(_expand_defined(space, c)))
+    return seq if len(seq) != len(set(seq)) else None
+
+
 def run_query(space: AtomSpace, link: Atom) -> Any:
     """Run a GetLink, BindLink, QueryLink, MeetLink or SatisfactionLink."""
     decl, body, rewrite = _split(link)
+    per_definition: list[Atom] | None = None
     if space.count_type("DefineLink"):
+        if decl is None and link[0] == "GetLink":
+            per_definition = _definition_variables(space, body)
         body = _expand_defined(space, body)
     t = link[0]
     if decl is None and body[0] == "AbsentLink" and t in ("BindLink", "QueryLink"):
@@ -303,6 +319,8 @@ def run_query(space: AtomSpace, link: Atom) -> Any:
             return TRUE_TV if pattern.groundings(space, limit=1) else FALSE_TV
         found = pattern.groundings(space)
         vs = pattern.variables
+    if t == "GetLink" and per_definition is not None:
+        return _raw_link("SetLink", tuple(grounding_atom(per_definition, b) for b in found))
     if t == "GetLink":
         # grounding_atom, inlined for one and two variables (a ListLink is ordered)
         if len(vs) == 1:
