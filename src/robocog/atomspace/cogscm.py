@@ -10,7 +10,9 @@ schemas call Scheme procedures. :func:`make_scheme` gives an interpreter with al
 from __future__ import annotations
 
 import io
+import math
 import random as _random
+from dataclasses import dataclass
 from typing import Any
 
 from robocog.atomspace import schemelib
@@ -335,6 +337,15 @@ def _install(s: Scheme, space: AtomSpace | None) -> CogAPI:  # noqa: C901 - a ta
         except (TypeError, ValueError) as exc:
             raise SchemeError("wrong-type-arg", f"In procedure stv: {exc}") from None
 
+    def ctv(m: Any, c: Any, n: Any) -> CountTruthValue:
+        try:
+            return CountTruthValue(m, c, n)
+        except ValueError as exc:
+            raise SchemeError("wrong-type-arg", f"In procedure ctv: {exc}") from None
+
+    d("ctv", ctv)
+    d("CountTruthValue", ctv)
+    d("cog-new-ctv", ctv)
     d("stv", stv_)
     d("cog-new-stv", stv_)
     d("SimpleTruthValue", stv_)
@@ -459,6 +470,25 @@ def _install(s: Scheme, space: AtomSpace | None) -> CogAPI:  # noqa: C901 - a ta
     api.space.register("scm:*", grounded)
     s.cog = api  # type: ignore[attr-defined]
     return api
+
+
+@dataclass(frozen=True, slots=True, repr=False)
+class CountTruthValue(TruthValue):
+    """``(ctv mean confidence count)``: kept and printed as given (OpenCog does not check
+    its range either); the matcher reads its mean as any truth value's."""
+
+    count: float = 0.0
+
+    def __post_init__(self) -> None:
+        for x in (self.strength, self.confidence, self.count):
+            if isinstance(x, bool) or not isinstance(x, int | float) or not math.isfinite(x):
+                raise ValueError(f"CountTruthValue takes three finite numbers, not {x!r}")
+
+    def to_atomese(self) -> str:
+        """``(ctv mean confidence count)``."""
+        return f"(ctv {to_text(float(self.strength))} {to_text(float(self.confidence))} " + (
+            f"{to_text(float(self.count))})"
+        )
 
 
 class RandomStream(FloatValue):
