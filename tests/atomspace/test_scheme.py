@@ -312,3 +312,19 @@ def test_repl_session_through_a_terminal() -> None:
             proc.kill()
             proc.wait()
         os.close(master)
+
+
+def test_shared_parts_cannot_blow_up_an_atom() -> None:
+    # each level holds the previous one twice: 2^n atoms once unfolded; atoms are hashed
+    # by content, so this is refused early, with a clear error, instead of hanging
+    tree = "(define (tree a n) (if (> n 0) (tree (List a a) (- n 1)) a))"
+    assert ev(tree + ' (cog-arity (tree (Concept "nil") 12))') == "2"
+    with pytest.raises(SchemeError, match="unfolded"):
+        run_text(tree + ' (tree (Concept "nil") 250000)')
+    text = '(define a0 (Concept "x"))' + "".join(
+        f"(define a{i + 1} (List a{i} a{i}))" for i in range(40)
+    )
+    from robocog.atomspace import parse
+
+    with pytest.raises(AtomeseError, match="unfolded"):
+        parse(text)

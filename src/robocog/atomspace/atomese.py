@@ -41,6 +41,10 @@ MAX_NESTING = 1000
 #: most atoms one link may hold when read from text (adding a link costs time in
 #: proportion to its arity for each atom it holds, so arity is bounded)
 MAX_ARITY = 4096
+#: most atoms an atom may hold once the named atoms it repeats are unfolded: atoms are
+#: hashed and compared by content, so ``(define a (List x x)) (define b (List a a))``...
+#: doubles the work at each level
+MAX_UNFOLDED = 1_000_000
 #: longest text read at once (characters)
 MAX_TEXT = 64 * 1024 * 1024
 #: longest error message (a 10 MB symbol is not echoed whole)
@@ -148,6 +152,7 @@ def _parse(text: str, source: str, env: dict[str, Atom] | None) -> Parsed:
     result = Parsed(names=names)
     tvs = result.tvs
     memo: dict[Atom, Atom] = {}
+    sizes: dict[int, int] = {}  # id of a link read here -> its size with shared parts unfolded
     # a frame: [items, line, col]; items hold Atom | TruthValue | _Tok | _Exec
     stack: list[list] = []
     line, line_start = 1, 0
@@ -174,7 +179,7 @@ def _parse(text: str, source: str, env: dict[str, Atom] | None) -> Parsed:
             if not stack:
                 raise err("unexpected ')'", line, col)
             items, fl, fc = stack.pop()
-            value = _reduce(items, fl, fc, names, tvs, err, bool(stack), memo)
+            value = _reduce(items, fl, fc, names, tvs, err, bool(stack), memo, sizes)
             if stack:
                 if len(stack[-1][0]) > MAX_ARITY:
                     raise err(
@@ -221,7 +226,7 @@ def _parse(text: str, source: str, env: dict[str, Atom] | None) -> Parsed:
     return result
 
 
-def _reduce(items: list, fl: int, fc: int, names, tvs, err, nested: bool, memo: dict):  # noqa: ANN001, ANN202, C901
+def _reduce(items: list, fl: int, fc: int, names, tvs, err, nested: bool, memo: dict, sizes: dict):  # noqa: ANN001, ANN202, C901
     """Turn one parenthesised frame into an Atom, a TruthValue or a special form."""
     if not items:
         raise err("empty expression '()'", fl, fc)
@@ -284,8 +289,17 @@ def _reduce(items: list, fl: int, fc: int, names, tvs, err, nested: bool, memo: 
         atom: Atom = _raw_node(full, rest[0].text)
     else:
         out = tuple(_arg_atom(a, names, err, fl, fc) for a in rest)
+        size = 1 + sum(sizes.get(id(x), 1) for x in out)
+        if size > MAX_UNFOLDED:
+            raise err(
+                f"an atom of more than {MAX_UNFOLDED} atoms once its named parts are unfolded",
+                fl,
+                fc,
+            )
         atom = _raw_link(full, out)
     atom = memo.setdefault(atom, atom)  # one object per distinct atom: less memory
+    if atom.__class__ is not Node:
+        sizes[id(atom)] = size  # memo keeps the atom alive, so its id stays its own
     if tv is not None:
         tvs.append((atom, tv))
     return atom
@@ -422,6 +436,7 @@ __all__ = [
     "MAX_ARITY",
     "MAX_NESTING",
     "MAX_TEXT",
+    "MAX_UNFOLDED",
     "AtomeseError",
     "Form",
     "Parsed",

@@ -17,7 +17,7 @@ from typing import Any
 
 from robocog.atomspace import schemelib
 from robocog.atomspace import types as _t
-from robocog.atomspace.atomese import MAX_ARITY, dump, write_pretty
+from robocog.atomspace.atomese import MAX_ARITY, MAX_UNFOLDED, dump, write_pretty
 from robocog.atomspace.atoms import Atom, Link, Node, atom_text
 from robocog.atomspace.scheme import (
     UNSPECIFIED,
@@ -105,6 +105,9 @@ class CogAPI:
         self.scheme = scheme
         self.space = space
         self.stack: list[AtomSpace] = []
+        #: id of a link built here -> (its unfolded size, the link: kept alive so the id
+        #: stays its own)
+        self.sizes: dict[int, tuple[int, Link]] = {}
         #: ids of the spaces marked read-only (their truth values cannot change)
         self.readonly: set[int] = set()
 
@@ -147,9 +150,29 @@ class CogAPI:
                 raise SchemeError(
                     "wrong-number-of-args", f"{full}: more than {MAX_ARITY} atoms in one link"
                 )
-            return self._add(Link(full, *out), tv)
+            size = 1 + sum(self._size(x) for x in out)
+            if size > MAX_UNFOLDED:
+                raise SchemeError(
+                    "out-of-range",
+                    f"{full}: an atom of more than {MAX_UNFOLDED} atoms with its shared parts "
+                    "unfolded (atoms are hashed by content)",
+                )
+            made = self._add(Link(full, *out), tv)
+            if size > 1 + len(out) and isinstance(made, Link):
+                self.sizes[id(made)] = (size, made)
+            return made
 
         return make
+
+    def _size(self, x: Atom) -> int:
+        """The atoms ``x`` holds with shared parts unfolded (known for links built here
+        with nested links; a link of nodes counts its own arity)."""
+        if x.__class__ is Node:
+            return 1
+        known = self.sizes.get(id(x))
+        if known is not None and known[1] is x:
+            return known[0]
+        return 1 + sum(1 if y.__class__ is Node else self._size(y) for y in x[1])
 
     def _add(self, atom: Atom, tv: TruthValue | None) -> Any:
         try:
