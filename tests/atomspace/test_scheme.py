@@ -328,3 +328,18 @@ def test_shared_parts_cannot_blow_up_an_atom() -> None:
 
     with pytest.raises(AtomeseError, match="unfolded"):
         parse(text)
+
+
+def test_programs_export_and_load_atoms_but_untrusted_text_touches_no_file(
+    tmp_path: Path,
+) -> None:
+    path = tmp_path / "x.scm"
+    s = make_scheme(out=io.StringIO())
+    s.eval_text(f'(List (Concept "cat") (Concept "dog")) (export-all-atoms "{path}") (clear)')
+    assert s.eval_text('(cog-node \'ConceptNode "cat")') == []
+    assert to_text(s.eval_text(f'(primitive-load "{path}")')) == (
+        '(ListLink (ConceptNode "cat") (ConceptNode "dog"))'
+    )
+    with pytest.raises(SchemeError, match="files are not available"):
+        run_text(f'(export-all-atoms "{tmp_path / "y.scm"}")')
+    assert not (tmp_path / "y.scm").exists()

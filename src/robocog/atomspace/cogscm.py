@@ -17,7 +17,7 @@ from typing import Any
 
 from robocog.atomspace import schemelib
 from robocog.atomspace import types as _t
-from robocog.atomspace.atomese import MAX_ARITY, MAX_UNFOLDED, dump, write_pretty
+from robocog.atomspace.atomese import MAX_ARITY, MAX_TEXT, MAX_UNFOLDED, dump, write_pretty
 from robocog.atomspace.atoms import Atom, Link, Node, atom_text
 from robocog.atomspace.scheme import (
     UNSPECIFIED,
@@ -418,6 +418,28 @@ def _install(s: Scheme, space: AtomSpace | None) -> CogAPI:  # noqa: C901 - a ta
     d("cog-count-atoms", lambda t: len(api.space.get_by_type(_type_name(t, "cog-count-atoms"))))
     d("cog-chase-link", lambda lt, et, a: _chase(api, lt, et, a))
     d("cog-prt-atomspace", api.prt_atomspace)
+    d("clear", lambda *a: api.space.clear() or True)
+
+    def export_all(path: Any) -> bool:
+        with _file(s, path, "export-all-atoms", "w") as f:
+            f.write(dump(api.space))
+        return True
+
+    def load_file(path: Any, last: bool = True) -> Any:
+        with _file(s, path, "load", "r") as f:
+            text = f.read(MAX_TEXT + 1)
+        if len(text) > MAX_TEXT:
+            raise SchemeError("misc-error", f"load: {shorten(str(path))}: file too large")
+        old = s.source
+        try:
+            value = s.eval_text(text, source=str(path))
+        finally:
+            s.source = old
+        return value if last else UNSPECIFIED
+
+    d("export-all-atoms", export_all)
+    d("load", lambda path: load_file(path, last=False))
+    d("primitive-load", load_file)
     d("cog-delete!", api.delete)
     d("cog-delete", api.delete)
     d("cog-extract!", api.delete)
@@ -544,6 +566,18 @@ def _members(items: list, who: str) -> list:
     return items
 
 
+def _file(s: Scheme, path: Any, who: str, mode: str) -> Any:
+    """Open a file the program names (when the interpreter allows files)."""
+    if not getattr(s, "files", False):
+        raise SchemeError("misc-error", f"{who}: files are not available to this program")
+    if not isinstance(path, str):
+        raise _bad(who, path, "a file name")
+    try:
+        return open(path, mode, encoding="utf-8")  # noqa: SIM115 - the caller's with
+    except OSError as exc:
+        raise SchemeError("system-error", f"{who}: {shorten(str(exc), 200)}") from None
+
+
 def _tv(x: Any, who: str) -> TruthValue:
     if not isinstance(x, TruthValue):
         raise _bad(who, x, "a truth value")
@@ -616,6 +650,7 @@ def run_text(
     buf = io.StringIO()
     s = make_scheme(space, out=buf)
     s.budget = max_steps
+    s.files = False  # text from elsewhere reads and writes no files
     s.eval_text(text, source=source)
     return buf.getvalue()
 

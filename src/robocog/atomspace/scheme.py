@@ -146,6 +146,9 @@ class Scheme:
         #: evaluation steps left (None: no limit); a program that runs past it ends with
         #: a ``step-limit`` error (for untrusted text: a loop cannot run forever)
         self.budget: int | None = None
+        #: whether the program may read and write files (``load``, ``export-all-atoms``):
+        #: yes for a user's own program, no for text from elsewhere (``run_text``)
+        self.files = True
         #: module name -> the bindings ``use-modules`` brings into the globals
         self.known_modules: dict[str, dict] = {}
 
