@@ -121,8 +121,15 @@ def _run(args: argparse.Namespace) -> int:
                 print(f"robocog atomese: {name}: larger than {MAX_FILE} bytes", file=sys.stderr)
                 status = 1
                 continue
-            text = path.read_text(encoding="utf-8")
-        except (OSError, UnicodeDecodeError) as exc:
+            data = path.read_bytes()
+            text = data.decode("utf-8")
+        except UnicodeDecodeError as exc:
+            line = data.count(b"\n", 0, exc.start) + 1
+            col = exc.start - (data.rfind(b"\n", 0, exc.start) + 1) + 1
+            print(f"robocog atomese: {name}:{line}:{col}: not UTF-8 text", file=sys.stderr)
+            status = 1
+            continue
+        except OSError as exc:
             print(f"robocog atomese: {name}: {exc}", file=sys.stderr)
             status = 1
             continue

@@ -177,8 +177,8 @@ class CogAPI:
     def _add(self, atom: Atom, tv: TruthValue | None) -> Any:
         try:
             found = self.space.add(atom)
-        except ValueError as exc:
-            raise SchemeError("wrong-type-arg", str(exc)) from None
+        except ValueError as exc:  # a second definition of a name, a held DeleteLink
+            raise SchemeError("misc-error", str(exc)) from None
         if found is None:
             return atom  # a closed DeleteLink: it removed what it held
         if tv is not None:
