@@ -86,6 +86,9 @@ def test_errors_name_the_place_and_the_name() -> None:
         run_text("(let loop () (loop))", max_steps=10_000)
     with pytest.raises(AtomeseError, match="nesting deeper"):
         run_text("(" * 5000)
+    with pytest.raises(AtomeseError, match="unterminated block comment"):
+        run_text("#| (display 1)\n" * 20000)  # refused at once, not backtracked over
+    assert run_text("#| a\n b |# (display 1) #!x\n!# (display 2)") == "12"
 
 
 def test_constructors_and_the_cog_api() -> None:

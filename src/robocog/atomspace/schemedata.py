@@ -199,8 +199,9 @@ _TOKEN = re.compile(
     (?P<ws>[ \t\r\f\v]+)
   | (?P<nl>\n)
   | (?P<comment>;[^\n]*)
-  | (?P<block>\#\|(?:.|\n)*?\|\#)
-  | (?P<block2>\#!(?:.|\n)*?!\#)
+  | (?P<block>\#\|.*?\|\#)
+  | (?P<block2>\#!.*?!\#)
+  | (?P<badblock>\#\||\#!)
   | (?P<datumc>\#;)
   | (?P<open>[(\[])
   | (?P<close>[)\]])
@@ -317,6 +318,8 @@ def read(text: str, source: str = "<string>") -> Iterator[Any]:
                 line += nls
                 line_start = start + raw.rfind("\n") + 1
             continue
+        if kind == "badblock":
+            raise err("unterminated block comment", line, col)
         if kind == "datumc":
             prefixes.append(("#;", line, col))
             continue
