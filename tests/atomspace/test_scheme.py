@@ -346,3 +346,51 @@ def test_programs_export_and_load_atoms_but_untrusted_text_touches_no_file(
     with pytest.raises(SchemeError, match="files are not available"):
         run_text(f'(export-all-atoms "{tmp_path / "y.scm"}")')
     assert not (tmp_path / "y.scm").exists()
+
+
+def test_map_dual_threads_and_missing_values() -> None:
+    # MapLink: one argument gives its grounding; a set gives the set of them, typed
+    assert (
+        ev(
+            '(cog-execute! (Map (Lambda (Variable "$x") (Evaluation (Predicate "k") (Variable "$x")))'
+            ' (Evaluation (Predicate "k") (Concept "v"))))'
+        )
+        == '(ConceptNode "v")'
+    )
+    assert (
+        ev(
+            '(cog-execute! (Map (ImplicationScope (VariableList (TypedVariable (Variable "$x")'
+            ' (Type "NumberNode")) (TypedVariable (Variable "$y") (Type "NumberNode")))'
+            ' (List (Variable "$x") (Variable "$y")) (Plus (Variable "$x") (Variable "$y")))'
+            ' (Set (List (Number 2) (Number 3)) (List (Concept "a") (Number 1))'
+            " (List (Number 10) (Times (Number 3) (Number 2))))))"
+        )
+        == '(SetLink (NumberNode "16") (NumberNode "5"))'
+    )
+    # DualLink: the stored patterns a ground term matches
+    assert (
+        ev(
+            '(Get (Inheritance (Variable "$x") (Concept "animal")))'
+            '(cog-execute! (Dual (Inheritance (Concept "cat") (Concept "animal"))))'
+        )
+        == '(SetLink (InheritanceLink (VariableNode "$x") (ConceptNode "animal")))'
+    )
+    # ExecuteThreadedLink: each result in its own queue
+    assert (
+        ev(
+            '(Inheritance (Concept "rock") (Concept "thing"))'
+            '(cog-execute! (ExecuteThreaded (Set (Meet (Inheritance (Variable "$x") (Concept "thing"))))))'
+        )
+        == '(QueueValue (QueueValue (ConceptNode "rock")))'
+    )
+    # a comparison over a value that is not there is false, not an error
+    assert (
+        ev(
+            '(define k (Predicate "k")) (cog-set-value! (Concept "a") k (FloatValue 42))'
+            '(Concept "b")'
+            '(cog-execute! (Bind (TypedVariable (Variable "$X") (Type "ConceptNode"))'
+            ' (And (Present (Variable "$X")) (GreaterThan (Divide (ValueOf (Variable "$X") k)'
+            ' (Number 12)) (Number 3))) (Variable "$X")))'
+        )
+        == '(SetLink (ConceptNode "a"))'
+    )
