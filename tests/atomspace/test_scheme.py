@@ -394,3 +394,14 @@ def test_map_dual_threads_and_missing_values() -> None:
         )
         == '(SetLink (ConceptNode "a"))'
     )
+
+
+def test_recursive_defined_schema_with_cond() -> None:
+    # OpenCog's factorial.scm, run: OpenCog 2021 answers (NumberNode "120") and 9
+    text = Path(__file__).with_name("data").joinpath("factorial.scm").read_text()
+    assert ev(text + '(cog-execute! (ExecutionOutput (DefinedSchema "factorial") (Number 5)))') == (
+        '(NumberNode "120")'
+    )
+    assert ev(
+        "(cog-execute! (Cond (GreaterThan (Number 1) (Number 2)) (Number 7) (Number 9)))"
+    ) == ('(NumberNode "9")')

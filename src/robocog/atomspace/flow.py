@@ -115,6 +115,7 @@ def _executes(a: Atom) -> bool:
         or t == "DefinedSchemaNode"
         or _t.is_a(t, "ValueOfLink")
         or t in ("SetValueLink", "SetTVLink", "MapLink", "DualLink", "ExecuteThreadedLink")
+        or t == "CondLink"
     )
 
 
@@ -257,9 +258,17 @@ def execute_any(space: AtomSpace, atom: Atom, depth: int = 0) -> Any:  # noqa: C
         return space.add(atom)  # a formula with free variables is its own value
     if t in _EVALUATABLE:
         return evaluate_any(space, atom, depth + 1)
+    if t == "CondLink":
+        # (Cond test1 expr1 test2 expr2 ... [default]): the first true test's expression
+        for i in range(0, len(out) - 1, 2):
+            if evaluate_any(space, out[i], depth + 1).is_true():
+                return _value_of(space, out[i + 1], depth)
+        if len(out) % 2 == 1:
+            return _value_of(space, out[-1], depth)
+        return space.add(Link("SetLink"))
     if t == "ExecutionOutputLink" and out and out[0][0] in ("DefinedSchemaNode", "LambdaLink"):
         fn = _definition(space, out[0]) if out[0][0] == "DefinedSchemaNode" else out[0]
-        args = out[1] if len(out) > 1 else None
+        args = _ground(space, out[1], depth) if len(out) > 1 else None
         return execute_any(space, _apply_lambda(space, fn, args), depth + 1)
     if t == "ExecuteThreadedLink":
         # the threads run one after the other here; each result in its own queue
@@ -541,6 +550,13 @@ def _dual(space: AtomSpace, atom: Atom) -> Atom:
         if _match(cand, term, set(vs), {}, {}):
             found.append(cand)
     return Link("SetLink", *found)
+
+
+def _value_of(space: AtomSpace, a: Atom, depth: int) -> Any:
+    """An expression's value: executed when executable, else the atom (added)."""
+    if _executes(a) or a[0] == "CondLink":
+        return execute_any(space, a, depth + 1)
+    return space.add(a)
 
 
 def _queued(r: Any) -> Any:
