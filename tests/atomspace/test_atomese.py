@@ -155,11 +155,46 @@ def test_truncated_thesis_text_errors_with_a_place(cut: int) -> None:
 
 
 def test_deep_nesting_is_an_error_or_an_atom_never_a_crash() -> None:
-    deep = "(List " * 5000 + '(Concept "x")' + ")" * 5000
+    from robocog.atomspace import AtomSpace, load
+    from robocog.atomspace.atomese import MAX_NESTING
+    from robocog.atomspace.atoms import deep as deep_limit
+
+    n = MAX_NESTING - 1
+    deep = "(List " * n + '(Concept "x")' + ")" * n
     atom = read_atom(deep)
     assert atom.type == "ListLink"
+    space = AtomSpace()
+    with deep_limit():  # comparing two deep atoms recurses in C
+        assert load(deep, space)[0] == atom and atom in space  # added (by recursion) too
+    with pytest.raises(AtomeseError, match="nesting deeper than"):
+        parse("(List " * 30000 + '(Concept "x")' + ")" * 30000)
     with pytest.raises(AtomeseError):
         parse("(List " * 5000)
+
+
+def test_arity_text_and_messages_are_bounded() -> None:
+    from robocog.atomspace.atomese import MAX_ARITY, MAX_MESSAGE
+
+    wide = "(List " + " ".join(f'(Concept "{i}")' for i in range(MAX_ARITY + 1)) + ")"
+    with pytest.raises(AtomeseError, match="more than"):
+        parse(wide)
+    with pytest.raises(AtomeseError) as info:
+        parse("(" + "x" * 10**6 + " 1)")
+    assert len(info.value.message) <= MAX_MESSAGE
+
+
+def test_a_second_definition_is_refused_and_nothing_is_added() -> None:
+    from robocog.atomspace import AtomSpace, load
+
+    space = AtomSpace()
+    text = '(Concept "a")\n(Define (DefinedSchema "f") (Concept "x"))\n(Define (DefinedSchema "f") (Concept "y"))'
+    with pytest.raises(AtomeseError) as info:
+        load(text, space)
+    assert info.value.line == 3 and "already defined" in info.value.message
+    assert len(space) == 0
+    load('(Define (DefinedSchema "f") (Concept "x"))', space)
+    with pytest.raises(AtomeseError, match="already defined"):
+        load('(Define (DefinedSchema "f") (Concept "z"))', space)
 
 
 def test_names_with_quotes_and_backslashes() -> None:

@@ -16,6 +16,7 @@ from robocog.atomspace.atomese import (
 )
 from robocog.atomspace.atoms import Atom, Link, Node, bulk, constructor, has_variables, variables_of
 from robocog.atomspace.execute import GroundedError, evaluate, execute, instantiate
+from robocog.atomspace.flow import evaluate_any, execute_any
 from robocog.atomspace.matcher import Pattern, PatternError, compile_pattern, query, substitute
 from robocog.atomspace.space import TV_KEY, AtomSpace, register_function
 from robocog.atomspace.types import declare_type, is_a, subtypes
@@ -57,7 +58,9 @@ __all__ = [
     "declare_type",
     "dump",
     "evaluate",
+    "evaluate_any",
     "execute",
+    "execute_any",
     "has_variables",
     "instantiate",
     "is_a",

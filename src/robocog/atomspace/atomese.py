@@ -20,17 +20,45 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
 from robocog.atomspace import types as _t
-from robocog.atomspace.atoms import Atom, Node, _raw_link, _raw_node, atom_text, bulk, quote
+from robocog.atomspace.atoms import (
+    Atom,
+    Node,
+    _raw_link,
+    _raw_node,
+    atom_text,
+    bulk,
+    deep,
+    quote,
+)
 from robocog.atomspace.values import TruthValue, Value
 
 if TYPE_CHECKING:
     from robocog.atomspace.space import AtomSpace
 
 
+#: deepest nesting of parentheses the reader accepts
+MAX_NESTING = 1000
+#: most atoms one link may hold when read from text (adding a link costs time in
+#: proportion to its arity for each atom it holds, so arity is bounded)
+MAX_ARITY = 4096
+#: most atoms an atom may hold once the named atoms it repeats are unfolded: atoms are
+#: hashed and compared by content, so ``(define a (List x x)) (define b (List a a))``...
+#: doubles the work at each level
+MAX_UNFOLDED = 1_000_000
+#: longest text read at once (characters)
+MAX_TEXT = 64 * 1024 * 1024
+#: longest error message (a 10 MB symbol is not echoed whole)
+MAX_MESSAGE = 400
+
+
 class AtomeseError(ValueError):
     """Malformed Atomese, with the place where it was found."""
 
     def __init__(self, message: str, line: int, column: int, source: str = "<string>") -> None:
+        if len(message) > MAX_MESSAGE:
+            message = message[: MAX_MESSAGE - 3] + "..."
+        if len(source) > 200:
+            source = source[:197] + "..."
         super().__init__(f"{source}:{line}:{column}: {message}")
         self.message = message
         self.line = line
@@ -113,10 +141,18 @@ def parse(text: str, source: str = "<string>", env: dict[str, Atom] | None = Non
     """
     if not isinstance(text, str):
         raise TypeError("Atomese text must be a str")
+    if len(text) > MAX_TEXT:
+        raise AtomeseError(f"text longer than {MAX_TEXT} characters", 1, 1, source)
+    with deep():  # equal deep atoms compare by recursion
+        return _parse(text, source, env)
+
+
+def _parse(text: str, source: str, env: dict[str, Atom] | None) -> Parsed:
     names: dict[str, Atom] = dict(env or {})
     result = Parsed(names=names)
     tvs = result.tvs
     memo: dict[Atom, Atom] = {}
+    sizes: dict[int, int] = {}  # id of a link read here -> its size with shared parts unfolded
     # a frame: [items, line, col]; items hold Atom | TruthValue | _Tok | _Exec
     stack: list[list] = []
     line, line_start = 1, 0
@@ -135,14 +171,20 @@ def parse(text: str, source: str = "<string>", env: dict[str, Atom] | None = Non
             line_start = m.end()
             continue
         if kind == "open":
+            if len(stack) >= MAX_NESTING:
+                raise err(f"nesting deeper than {MAX_NESTING} levels", line, col)
             stack.append([[], line, col])
             continue
         if kind == "close":
             if not stack:
                 raise err("unexpected ')'", line, col)
             items, fl, fc = stack.pop()
-            value = _reduce(items, fl, fc, names, tvs, err, bool(stack), memo)
+            value = _reduce(items, fl, fc, names, tvs, err, bool(stack), memo, sizes)
             if stack:
+                if len(stack[-1][0]) > MAX_ARITY:
+                    raise err(
+                        f"a link holding more than {MAX_ARITY} atoms", stack[-1][1], stack[-1][2]
+                    )
                 stack[-1][0].append(value)
             elif isinstance(value, _Exec):
                 result.forms.append(Form(value.atom, True, fl, fc))
@@ -171,6 +213,8 @@ def parse(text: str, source: str = "<string>", env: dict[str, Atom] | None = Non
             tok = _Tok(_NUM if _NUMBER.match(s) else _SYM, s, line, col)
         else:
             raise err(f"unexpected character {m.group()!r}", line, col)
+        if stack and len(stack[-1][0]) > MAX_ARITY:
+            raise err(f"a link holding more than {MAX_ARITY} atoms", stack[-1][1], stack[-1][2])
         if not stack:
             if tok.kind == _SYM and tok.text in names:
                 continue  # a bare reference at top level evaluates to itself: no-op
@@ -182,7 +226,7 @@ def parse(text: str, source: str = "<string>", env: dict[str, Atom] | None = Non
     return result
 
 
-def _reduce(items: list, fl: int, fc: int, names, tvs, err, nested: bool, memo: dict):  # noqa: ANN001, ANN202, C901
+def _reduce(items: list, fl: int, fc: int, names, tvs, err, nested: bool, memo: dict, sizes: dict):  # noqa: ANN001, ANN202, C901
     """Turn one parenthesised frame into an Atom, a TruthValue or a special form."""
     if not items:
         raise err("empty expression '()'", fl, fc)
@@ -245,8 +289,17 @@ def _reduce(items: list, fl: int, fc: int, names, tvs, err, nested: bool, memo: 
         atom: Atom = _raw_node(full, rest[0].text)
     else:
         out = tuple(_arg_atom(a, names, err, fl, fc) for a in rest)
+        size = 1 + sum(sizes.get(id(x), 1) for x in out)
+        if size > MAX_UNFOLDED:
+            raise err(
+                f"an atom of more than {MAX_UNFOLDED} atoms once its named parts are unfolded",
+                fl,
+                fc,
+            )
         atom = _raw_link(full, out)
     atom = memo.setdefault(atom, atom)  # one object per distinct atom: less memory
+    if atom.__class__ is not Node:
+        sizes[id(atom)] = size  # memo keeps the atom alive, so its id stays its own
     if tv is not None:
         tvs.append((atom, tv))
     return atom
@@ -278,14 +331,47 @@ def load(
     The whole text is parsed first, so a malformed text leaves ``space`` unchanged.
     Returns the top-level atoms (as added to the space).
     """
-    with bulk():
+    with bulk(), deep():
         parsed = parse(text, source=source, env=env)
-        return add_parsed(parsed, space)
+        return add_parsed(parsed, space, source)
 
 
-def add_parsed(parsed: Parsed, space: AtomSpace) -> list[Atom]:
-    """Add what :func:`parse` read to ``space``; returns the top-level atoms."""
-    added = [space.add(f.atom) for f in parsed.forms]
+def _check_defines(parsed: Parsed, space: AtomSpace, source: str) -> None:
+    """A name a DefineLink defines may be defined once (OpenCog refuses a second
+    definition): refuse the text before anything is added."""
+    seen: dict[Atom, Atom] = {}
+    for f in parsed.forms:
+        atom = f.atom
+        if atom[0] != "DefineLink" or len(atom[1]) != 2:
+            continue
+        key = atom[1][0]
+        earlier = seen.get(key)
+        if earlier is None and key in space:
+            for d in space.incoming(key, "DefineLink"):
+                if d[1] and d[1][0] == key:
+                    earlier = d
+        if earlier is not None and earlier != atom:
+            raise AtomeseError(
+                f"{str(key)[:200]} is already defined (a DefineLink defines a name once)",
+                f.line,
+                f.column,
+                source,
+            )
+        seen[key] = atom
+
+
+def add_parsed(parsed: Parsed, space: AtomSpace, source: str = "<string>") -> list[Atom]:
+    """Add what :func:`parse` read to ``space``; returns the top-level atoms.
+
+    A second DefineLink of a name is an :class:`AtomeseError` and adds nothing."""
+    _check_defines(parsed, space, source)
+    added = []
+    with deep():
+        for f in parsed.forms:
+            try:
+                added.append(space.add(f.atom))
+            except ValueError as exc:
+                raise AtomeseError(str(exc), f.line, f.column, source) from None
     out = [a for a in added if a is not None]  # a closed DeleteLink removes, adds nothing
     for atom, tv in parsed.tvs:
         space.set_tv(atom, tv)
@@ -347,6 +433,10 @@ def dump(space: AtomSpace) -> str:
 
 
 __all__ = [
+    "MAX_ARITY",
+    "MAX_NESTING",
+    "MAX_TEXT",
+    "MAX_UNFOLDED",
     "AtomeseError",
     "Form",
     "Parsed",

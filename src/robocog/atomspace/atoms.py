@@ -232,3 +232,24 @@ def bulk() -> Iterator[None]:
     finally:
         if was:
             gc.enable()
+
+
+#: the Python recursion limit while adding, printing or matching deep atoms: an atom
+#: nested :data:`robocog.atomspace.atomese.MAX_NESTING` deep needs a few frames a level
+DEEP_LIMIT = 12000
+
+
+@contextmanager
+def deep() -> Iterator[None]:
+    """Raise Python's recursion limit for work on deeply nested atoms (adding, hashing,
+    printing recurse once per level); restored afterwards."""
+    import sys
+
+    old = sys.getrecursionlimit()
+    if old < DEEP_LIMIT:
+        sys.setrecursionlimit(DEEP_LIMIT)
+    try:
+        yield
+    finally:
+        if old < DEEP_LIMIT:
+            sys.setrecursionlimit(old)

@@ -21,6 +21,7 @@ it; ``query()`` and ``space.groundings`` only answer and leave the space as it w
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
 from robocog.atomspace import types as _t
@@ -35,10 +36,15 @@ from robocog.atomspace.matcher import (
     query,
     substitute,
 )
-from robocog.atomspace.values import FALSE_TV, TRUE_TV, QueueValue, TruthValue, Value
+from robocog.atomspace.matcher.variables import type_admits
+from robocog.atomspace.values import FALSE_TV, TRUE_TV, FloatValue, QueueValue, TruthValue, Value
 
 if TYPE_CHECKING:
     from robocog.atomspace.space import AtomSpace
+
+
+class MissingValue(PatternError):
+    """A ValueOfLink asked for a key the atom has no Value under."""
 
 
 class GroundedError(RuntimeError):
@@ -66,6 +72,13 @@ def call_grounded(space: AtomSpace, node: Atom, args: tuple[Atom, ...]) -> Any:
     try:
         fn = space.lookup_function(name)
     except KeyError:
+        if node[1].startswith("scm:"):
+            try:  # a Scheme interpreter over this space answers every scm: name
+                scm = space.lookup_function("scm:*")
+            except KeyError:
+                pass
+            else:
+                return scm(space, name, args)
         raise GroundedError(f"no Python function is registered under {name!r}") from None
     return fn(space, *args)
 
@@ -119,18 +132,42 @@ def _put(space: AtomSpace, atom: Atom) -> Any:
     one reduction each), and the result made real in the space: a closed DeleteLink
     then removes what it names and leaves nothing."""
     out = atom[1]
-    if len(out) != 2:
-        raise PatternError(f"PutLink needs a body and arguments: {atom}")
-    body, args = out
+    decl = None
+    if len(out) == 3 and is_variable_decl(out[0]):
+        decl, body, args = out  # (Put (TypedVariable ...) body args): a typed filter
+    elif len(out) == 2:
+        body, args = out
+    else:
+        raise PatternError(f"PutLink needs a body and arguments: {str(atom)[:300]}")
+    if body[0] in ("DefinedSchemaNode", "DefinedPredicateNode"):
+        for d in space.incoming(body, "DefineLink"):
+            if d[1][0] == body:
+                body = d[1][1]
+                break
+    if _executable(args):
+        args = _run(space, args)  # (Put body (Get ...)): the query's groundings
+        if not isinstance(args, Atom):
+            raise PatternError(f"PutLink: its arguments gave {args!r}, not atoms")
+    allowed: dict = {}
     if body[0] == "LambdaLink":
         parts = body[1]
         decl = parts[0] if len(parts) == 2 else None
         body = parts[-1]
-        variables, _allowed = parse_variables(decl, body)
+        variables, allowed = parse_variables(decl, body)
+    elif decl is not None:
+        variables, allowed = parse_variables(decl, body)
     else:
         variables = variables_of(body)
     if not variables:
         return instantiate(space, body)
+
+    def fits(values: Atom) -> bool:
+        given = (values,) if len(variables) == 1 else _arguments(values)
+        for v, x in zip(variables, given, strict=False):
+            ok = allowed.get(v)
+            if isinstance(ok, frozenset) and not type_admits(ok, x):
+                return False
+        return True
 
     def reduce(values: Atom) -> Any:
         given = (values,) if len(variables) == 1 else _arguments(values)
@@ -139,7 +176,7 @@ def _put(space: AtomSpace, atom: Atom) -> Any:
         return instantiate(space, substitute(body, dict(zip(variables, given, strict=True))))
 
     if args[0] == "SetLink":
-        results = [r for r in (reduce(a) for a in args[1]) if isinstance(r, Atom)]
+        results = [r for r in (reduce(a) for a in args[1] if fits(a)) if isinstance(r, Atom)]
         return space.add(Link("SetLink", *results))
     return reduce(args)
 
@@ -237,12 +274,37 @@ def _expand_defined(space: AtomSpace, atom: Atom, depth: int = 0) -> Atom:
     return Link(atom[0], *new)
 
 
+def _definition_variables(space: AtomSpace, body: Atom) -> list[Atom] | None:
+    """OpenCog 2021 lists the variables of a GetLink whose clauses are defined
+    predicates clause by clause, each definition's own (a variable shared by three
+    definitions is listed three times); None when no definition stands as a clause."""
+    clauses = body[1] if body[0] == "AndLink" else (body,)
+    if not any(c[0] == "DefinedPredicateNode" for c in clauses):
+        return None
+    seq: list[Atom] = []
+    for c in clauses:
+        seq.extend(variables_of(_expand_defined(space, c)))
+    return seq if len(seq) != len(set(seq)) else None
+
+
 def run_query(space: AtomSpace, link: Atom) -> Any:
     """Run a GetLink, BindLink, QueryLink, MeetLink or SatisfactionLink."""
     decl, body, rewrite = _split(link)
+    per_definition: list[Atom] | None = None
     if space.count_type("DefineLink"):
+        if decl is None and link[0] == "GetLink":
+            per_definition = _definition_variables(space, body)
         body = _expand_defined(space, body)
     t = link[0]
+    if decl is None and body[0] == "AbsentLink" and t in ("BindLink", "QueryLink"):
+        # nothing to ground, only an absence to check: the rewrite once, or nothing
+        if any(query(space, a, limit=1) for a in body[1]):
+            return Link("SetLink")
+        _d, _b, rewrite = _split(link)
+        r = instantiate(space, rewrite) if rewrite is not None else None
+        return Link("SetLink", *([r] if isinstance(r, Atom) else []))
+    if _split_or(body):
+        return _boolean_query(space, link, decl, body)
     if decl is None and t != "SatisfactionLink":
         # no declaration: every variable of the body, in order, free; query() takes the
         # fast path for the plain relation queries, which need no compiled pattern
@@ -257,6 +319,8 @@ def run_query(space: AtomSpace, link: Atom) -> Any:
             return TRUE_TV if pattern.groundings(space, limit=1) else FALSE_TV
         found = pattern.groundings(space)
         vs = pattern.variables
+    if t == "GetLink" and per_definition is not None:
+        return _raw_link("SetLink", tuple(grounding_atom(per_definition, b) for b in found))
     if t == "GetLink":
         # grounding_atom, inlined for one and two variables (a ListLink is ordered)
         if len(vs) == 1:
@@ -282,7 +346,99 @@ def run_query(space: AtomSpace, link: Atom) -> Any:
     return Link("SetLink", *results)
 
 
-def _number(atom: Atom) -> float:
+_BOOL = frozenset({"AndLink", "OrLink", "NotLink"})
+
+
+def _split_or(body: Atom) -> bool:
+    """Is ``body`` a classical boolean pattern with an OrLink whose branches mention
+    different variables (the groundings of one branch leave the others' unbound)?"""
+    stack = [body]
+    while stack:
+        a = stack.pop()
+        if a.__class__ is not Link or a[0] not in _BOOL:
+            continue
+        if a[0] == "OrLink":
+            sets = {frozenset(variables_of(b)) for b in a[1]}
+            if len(sets) > 1:
+                return True
+        stack.extend(a[1])
+    return False
+
+
+def _boolean_clauses(atom: Atom, negated: bool, present: list, absent: list) -> None:
+    """Sort the Present/Absent clauses of an And/Or/Not tree: present ones (not under a
+    NotLink) must be found, absent ones (AbsentLink, or PresentLink under a NotLink)
+    must not be, whichever branch of an OrLink they stand in."""
+    t = atom[0]
+    if t in ("AndLink", "OrLink"):
+        for a in atom[1]:
+            _boolean_clauses(a, negated, present, absent)
+    elif t == "NotLink":
+        for a in atom[1]:
+            _boolean_clauses(a, not negated, present, absent)
+    elif t == "PresentLink":
+        (absent if negated else present).extend(atom[1])
+    elif t == "AbsentLink":
+        (present if negated else absent).extend(atom[1])
+    elif not negated and atom.__class__ is Link and t not in _t.QUERY_TYPES:
+        present.append(atom)
+
+
+def _boolean_query(space: AtomSpace, link: Atom, decl: Atom | None, body: Atom) -> Any:
+    """OpenCog 2021's answer to a pattern that is an And/Or/Not of Present and Absent
+    clauses whose OrLink branches mention different variables: every present clause
+    is grounded (wherever it stands), no absent clause may be found, every variable
+    must be ground, and the whole body must then evaluate true."""
+    present: list[Atom] = []
+    absent: list[Atom] = []
+    _boolean_clauses(body, False, present, absent)
+    variables, _allowed = parse_variables(decl, body)
+    found: list[dict[Atom, Atom]] = []
+    if present:
+        pattern = compile_pattern(Link("AndLink", *present), decl)
+        found = [b for b in pattern.groundings(space) if all(v in b for v in variables)]
+    kept = []
+    for b in found:
+        if any(substitute(a, b) in space for a in absent):
+            continue
+        if evaluate(space, substitute(body, b)).is_true():
+            kept.append(b)
+    t = link[0]
+    if t == "SatisfactionLink":
+        return TRUE_TV if kept else FALSE_TV
+    if t == "GetLink":
+        return _raw_link("SetLink", tuple(grounding_atom(variables, b) for b in kept))
+    if t == "MeetLink":
+        return QueueValue(grounding_atom(variables, b) for b in kept)
+    _d, _b, rewrite = _split(link)
+    assert rewrite is not None
+    results = [instantiate(space, substitute(rewrite, b)) for b in kept]
+    return Link("SetLink", *[r for r in results if isinstance(r, Atom)])
+
+
+#: executes the atoms this module does not (arithmetic, value flows); installed by
+#: :mod:`robocog.atomspace.flow`
+_FLOW: list[Callable[[AtomSpace, Atom], Any]] = []
+
+
+def set_flow(fn: Callable[[AtomSpace, Atom], Any]) -> None:
+    """Let ``fn`` compute the operands of comparisons that are arithmetic or value links."""
+    _FLOW[:] = [fn]
+
+
+def _operand(space: AtomSpace, a: Atom) -> Any:
+    if _executable(a):
+        return _run(space, a)
+    if _FLOW and a.__class__ is Link and a[0] not in _t.QUERY_TYPES and not variables_of(a):
+        return _FLOW[0](space, a)
+    return a
+
+
+def _number(atom: Any) -> float:
+    if isinstance(atom, FloatValue) and atom.items:
+        return atom.items[0]
+    if isinstance(atom, TruthValue):
+        return atom.strength
     if atom[0] != "NumberNode":
         raise PatternError(f"not a number: {atom}")
     try:
@@ -313,7 +469,10 @@ def evaluate(space: AtomSpace, atom: Atom) -> TruthValue:
     if t == "GreaterThanLink":
         if len(out) != 2:
             raise PatternError("GreaterThanLink takes two numbers")
-        x, y = (_run(space, a) if _executable(a) else a for a in out)
+        try:
+            x, y = (_operand(space, a) for a in out)
+        except MissingValue:
+            return FALSE_TV  # a value that is not there compares as false
         return TRUE_TV if _number(x) > _number(y) else FALSE_TV
     if t == "SatisfactionLink":
         return run_query(space, atom)

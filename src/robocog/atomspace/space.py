@@ -317,7 +317,12 @@ class AtomSpace:
         key = atom[1][0]
         if key not in self:
             return
+        state = atom[0] == "StateLink"
+        if state and not is_closed(atom):
+            return  # a StateLink with variables (in a pattern) is no state, as in OpenCog
         for old in list(self.incoming(key, atom[0])):
+            if state and not is_closed(old):
+                continue
             if old[1] and old[1][0] == key:
                 if atom[0] == "DefineLink":
                     raise ValueError(f"{key} is already defined")

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from robocog.atomspace.atoms import Atom
+from robocog.atomspace.atoms import Atom, has_variables
 from robocog.atomspace.matcher.clauses import (
     Alternative,
     Clause,
@@ -18,6 +18,7 @@ from robocog.atomspace.matcher.clauses import (
 )
 from robocog.atomspace.matcher.terms import (
     Bindings,
+    _self_ground,
     drop_self_groundings,
     has_var_in,
     match,
@@ -186,6 +187,11 @@ class _CompiledAlt:
             if i >= 0:
                 atom, vs = self.evals[i]
                 if all(v in b for v in vs):
+                    mine = frozenset(b)
+                    if any(_self_ground(b[v], mine) for v in vs):
+                        return False, rest  # the pattern found itself: never evaluated
+                    if _grounded_call(atom) and any(has_variables(b[v]) for v in vs):
+                        return False, rest  # user code is never handed another pattern's variables
                     if not _eval_clause(space, substitute(atom, b)):
                         return False, rest
                     continue
@@ -425,6 +431,13 @@ def _exists(space: AtomSpace, clause: Clause, b: Bindings) -> bool:
 
 
 # ---------------------------------------------------------------------- evaluation
+def _grounded_call(atom: Atom) -> bool:
+    """Is ``atom`` an EvaluationLink over a GroundedPredicateNode (a call into user code)?"""
+    return (
+        atom[0] == "EvaluationLink" and bool(atom[1]) and atom[1][0][0] == "GroundedPredicateNode"
+    )
+
+
 def _eval_clause(space: AtomSpace, atom: Atom) -> bool:
     # through the space, which knows its evaluator: the matcher sits below execution.
     # A grounded predicate runs in a scratch space above the queried one, as OpenCog

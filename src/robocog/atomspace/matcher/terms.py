@@ -237,7 +237,25 @@ def substitute(atom: Atom, b: Bindings) -> Atom:
     if atom.__class__ is Node:
         return b.get(atom, atom)
     if atom[0] in _t.QUERY_TYPES:
-        return atom
+        # a nested query binds what it declares; the outer groundings reach the rest
+        # (without a declaration every variable in it is its own)
+        decl = atom[1][0] if atom[1] else None
+        if decl is None or not (
+            decl[0] in _t.VARIABLE_DECLS or (decl.__class__ is Node and decl[0] == "VariableNode")
+        ):
+            return atom
+        own = set(variables_of(decl)) if decl.__class__ is not Node else {decl}
+        if decl[0] == "TypedVariableLink":
+            own = {decl[1][0]}
+        elif decl[0] in ("VariableList", "VariableSet"):
+            own = {d[1][0] if d[0] == "TypedVariableLink" else d for d in decl[1]}
+        inner = {k: v for k, v in b.items() if k not in own}
+        if not inner:
+            return atom
+        new = (decl, *[substitute(x, inner) for x in atom[1][1:]])
+        if all(x is y for x, y in zip(new, atom[1], strict=True)):
+            return atom
+        return tuple.__new__(Link, (atom[0], tuple(new)))
     if atom[0] == "PutLink" and len(atom[1]) == 2:
         # the PutLink binds its body's variables itself: only the arguments take ours
         body, args = atom[1]
