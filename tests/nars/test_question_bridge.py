@@ -55,42 +55,36 @@ def _plain_bridge(s: NAR, question) -> None:  # type: ignore[no-untyped-def]
 
 
 LINES = [
-    # the subject and the predicate share two middle names (m and k) through compounds,
-    # so the same pair of concepts is met more than once; the beliefs derived from
-    # them share evidence, so many pairs are refused for overlapping stamps
-    "<(s * m) --> (k * r)>.",
-    "<(m * k) --> p>.",
-    "<s --> m>.",
-    "<m --> p>.",
-    "<s --> k>.",
-    "<k --> p>.",
-    "<(s & m) --> k>.",
-    "<(m | k) --> p>.",
-    "<s --> (m * k)>.",
-    "<(m * k) --> (p * r)>.",
-    "5",
-    "<(s * m) --> r>.",
-    "<r --> (p & k)>.",
-    "10",
+    # the subject and the predicate share two middle names through several concepts,
+    # so the same pair of concepts is met more than once; the beliefs derived in the
+    # cycles share evidence, so most pairs are refused for overlapping stamps (about
+    # 23,000 of 28,000 here), the others inferred from
+    "<a --> m1>.",
+    "<a --> m2>.",
+    "<(a * m1) --> m2>.",
+    "<m1 --> p>.",
+    "<m2 --> p>.",
+    "<(m1 * m2) --> p>.",
+    "<a --> (m1 * m2)>.",
+    "<(m1 & m2) --> p>.",
+    "3",
 ]
 
 
-@pytest.mark.parametrize("ona", ["0.9.2", "0.9.3"])
-def test_the_bridge_infers_what_the_plain_loop_infers(
-    ona: str, monkeypatch: pytest.MonkeyPatch
-) -> None:
+def test_the_bridge_infers_what_the_plain_loop_infers(monkeypatch: pytest.MonkeyPatch) -> None:
     def session(bridge) -> list[str]:  # type: ignore[no-untyped-def]
         monkeypatch.setattr(questions, "_bridge", bridge)
         out: list[str] = []
-        nar = NAR(ona=ona, seed=5)
+        nar = NAR(seed=5)
         nar.output = out.append
         nar.config.print_derivations = True
-        for line in [*LINES, "<s --> p>?", "<(s * m) --> p>?", "<k --> s>?", "3"]:
+        for line in [*LINES, "<p --> a>?", "<(p * m1) --> a>?", "2"]:
             nar.add_input(line)
         return out
 
     mine = session(questions._bridge)
     plain = session(_plain_bridge)
     assert mine == plain
-    # the questions were open, and the bridge inferred from pairs of their beliefs
-    assert sum(1 for line in mine if line.startswith("Derived:")) > 20
+    # the second question stays open: the bridge inferred from pairs of its beliefs
+    assert "Answer: None." in mine
+    assert sum(1 for line in mine if line.startswith("Derived:")) > 50
