@@ -1,15 +1,19 @@
-"""Declarative workload: robocog's NARS against ONA 0.9.2 on the same generated taxonomy.
+"""Declarative workload: robocog's NARS in both modes against ONA on the same taxonomy.
 
 A random tree of ``--statements`` inheritance links ``<child --> parent>`` is fed in
 top-down order, then ``--questions`` questions each ask for an ancestor ``--depth``
 links up (``<n17 --> n3>?``). Both reasoners run as child processes reading the same
 text on stdin (``robocog nar`` and ``NAR shell``), so wall time and peak resident memory
-are measured the same way (``wait4``). Prints both, the answers each found and the ratio.
+are measured the same way (``wait4``). robocog runs once per mode (``--ona 0.9.2``, the
+papers' behaviour, and ``--ona 0.9.3``, the shell's default), ONA 0.9.2's binary (the
+``ona`` package's ``NAR``) beside them; prints each, the answers each found and the
+ratios of every system to each robocog mode.
 
     python benchmarks/nars_core.py                        # 1,000 links, 100 questions
     python benchmarks/nars_core.py --statements 10000 --depth 2 --capacity 30000
     python benchmarks/nars_core.py --stream 1000000   # random valid/invalid lines, events, goals
     python benchmarks/nars_core.py --ona-source ~/OpenNARS-for-Applications  # also newest ONA
+    python benchmarks/nars_core.py --modes 0.9.3 --no-ona     # robocog's default mode alone
 
 ``--ona-source`` builds ONA from a source checkout the user provides (its ``build.sh``,
 with the C compiler of the machine) in a scratch directory, and runs it as a third system;
@@ -26,6 +30,9 @@ import subprocess
 import sys
 import tempfile
 import time
+
+#: the ONA versions whose behaviour ``robocog nar --ona`` follows
+ONA_MODES = ("0.9.2", "0.9.3")
 
 
 def taxonomy(n: int, questions: int, depth: int, seed: int) -> tuple[list[str], list[str]]:
@@ -206,7 +213,17 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--no-ona", action="store_true", help="run robocog only")
     ap.add_argument("--stream", type=int, default=0, help="random-stream run of N lines instead")
     ap.add_argument("--ona-source", help="also build and run ONA from this source checkout")
+    ap.add_argument(
+        "--modes",
+        default=",".join(ONA_MODES),
+        help="robocog's ONA versions to run (`robocog nar --ona V`), comma-separated "
+        "(default: %(default)s; 0.9.3 is the shell's default)",
+    )
     args = ap.parse_args(argv)
+    args.modes = [m.strip() for m in args.modes.split(",") if m.strip()]
+    for m in args.modes:
+        if m not in ONA_MODES:
+            ap.error(f"--modes: {m!r} is not one of {', '.join(ONA_MODES)}")
     if args.stream:
         return stream(args.stream, args.seed, args.capacity)
 
@@ -218,12 +235,13 @@ def main(argv: list[str] | None = None) -> int:
         lines += [q, str(args.think)] if args.think else [q]
     text = "\n".join(lines) + "\n"
 
-    ours = [sys.executable, "-m", "robocog", "nar", "--quiet", "--ona", "0.9.2"]
-    if args.capacity:
-        ours += ["--set", f"concepts_max={args.capacity}"]
     rows = []
-    w, cpu, rss, out = run(ours, text, args.timeout)
-    rows.append(("robocog", w, cpu, rss, answers(out, questions)))
+    for mode in args.modes:
+        ours = [sys.executable, "-m", "robocog", "nar", "--quiet", "--ona", mode]
+        if args.capacity:
+            ours += ["--set", f"concepts_max={args.capacity}"]
+        w, cpu, rss, out = run(ours, text, args.timeout)
+        rows.append((f"robocog {mode}", w, cpu, rss, answers(out, questions)))
     ona = shutil.which("NAR")
     if ona and not args.no_ona:
         w, cpu, rss, out = run([ona, "shell"], text, args.timeout)
@@ -237,15 +255,20 @@ def main(argv: list[str] | None = None) -> int:
     print(
         f"taxonomy: {args.statements} links, {len(questions)} questions {args.depth} links deep"
         + (f", robocog concepts_max={args.capacity}" if args.capacity else "")
+        + f"; timeout {args.timeout:.0f} s"
     )
-    print(f"{'system':<14} {'wall s':>8} {'CPU s':>8} {'RSS MB':>8} {'answered':>9}")
+    print(f"{'system':<16} {'wall s':>8} {'CPU s':>8} {'RSS MB':>8} {'answered':>9}")
     for name, w, cpu, rss, n in rows:
-        print(f"{name:<14} {w:8.2f} {cpu:8.2f} {rss:8.1f} {n:5d}/{len(questions)}")
-    for peer in rows[1:]:
-        print(
-            f"ratio {peer[0]}/robocog: wall {peer[1] / rows[0][1]:.2f}, "
-            f"CPU {peer[2] / rows[0][2]:.2f} (above 1: robocog faster)"
-        )
+        print(f"{name:<16} {w:8.2f} {cpu:8.2f} {rss:8.1f} {n:5d}/{len(questions)}")
+    ours_rows = [r for r in rows if r[0].startswith("robocog")]
+    for peer in rows:
+        for mine in ours_rows:
+            if peer is mine or (peer[0].startswith("robocog") and peer[0] <= mine[0]):
+                continue
+            print(
+                f"ratio {peer[0]} / {mine[0]}: wall {peer[1] / mine[1]:.2f}, "
+                f"CPU {peer[2] / mine[2]:.2f} (above 1: {mine[0]} faster)"
+            )
     return 0
 
 

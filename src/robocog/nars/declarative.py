@@ -26,10 +26,42 @@ if TYPE_CHECKING:
 
 
 def note_fresh_belief(s: Reasoner, c: Concept) -> None:
-    """``c``'s eternal belief was just made or revised (newest last)."""
+    """``c``'s eternal belief was just made or revised (newest last).
+
+    Each fresh concept keeps an entry ``[order, belief, min_confidence, stamp_size,
+    negated, shapes, deductions]``: when it was noted, and what its belief deduced
+    through each link (for the belief and parameters named); it is filed under the
+    shapes of conditions its term may instantiate (``s.fresh_shapes``), so that a
+    cycle meets only the fresh beliefs some link's condition may take."""
     fresh = s.fresh_beliefs
-    fresh.pop(c, None)
-    fresh[c] = None
+    entry = fresh.pop(c, None)
+    if entry is None:
+        shapes = () if c.term.has_var else _term_shapes(c.term)
+        entry = [0, None, 0.0, 0, False, shapes, None]
+        filed = s.fresh_shapes
+        for key in shapes:
+            d = filed.get(key)
+            if d is None:
+                filed[key] = {c: None}
+            else:
+                d[c] = None
+    s.fresh_order += 1
+    entry[0] = s.fresh_order
+    fresh[c] = entry
+
+
+def drop_fresh(s: Reasoner, c: Concept) -> None:
+    """``c`` is no longer fresh (stale, or evicted)."""
+    entry = s.fresh_beliefs.pop(c, None)
+    if entry is None:
+        return
+    filed = s.fresh_shapes
+    for key in entry[5]:
+        d = filed.get(key)
+        if d is not None:
+            d.pop(c, None)
+            if not d:
+                del filed[key]
 
 
 def forward_eternal(s: Reasoner, on_new_belief: Callable[[Reasoner, Concept], None]) -> None:
@@ -48,52 +80,78 @@ def forward_eternal(s: Reasoner, on_new_belief: Callable[[Reasoner, Concept], No
         b = c.belief
         if b is not None and b.creation_time >= oldest and mem.find(c.term) is c:
             break
-        del fresh[c]  # (stale: older than the tolerance, gone, or evicted)
+        drop_fresh(s, c)  # (stale: older than the tolerance, gone, or evicted)
     if not fresh:
         return
-    # ONA keeps a consequence's ``==>`` beliefs in a table ordered by expectation
-    # and uses the strongest ``top_k_declarative_implications`` of each table
-    tables: dict[Term, list[tuple[Term, Event]]] = {}
-    for link in declarative_links(s):
-        lc = mem.find(link)
-        if link.op == "==>" and lc is not None and lc.belief is not None:
-            tables.setdefault(link.args[1], []).append((link, lc.belief))
-    if not tables:
+    links, by_shape = strongest_links(s)
+    if not links:
         return
-    links: list[tuple[Term, Event]] = []
-    for entries in tables.values():
-        entries.sort(key=lambda x: -expectation(x[1].truth))
-        links += entries[: cfg.top_k_declarative_implications]
     size = cfg.stamp_size
-    derived: list[Event] = []
-    for c in list(fresh):
+    least = cfg.min_confidence
+    negated = cfg.anticipation_negated_outcomes
+    # the fresh beliefs that some link's condition may take, with the links' positions
+    # (each fresh belief meets the links in their order, the beliefs in their order)
+    filed = s.fresh_shapes
+    met: dict[Concept, list[int]] = {}
+    for key, positions in by_shape.items():
+        concepts = filed.get(key)
+        if concepts is None:
+            continue
+        for c in concepts:
+            m = met.get(c)
+            if m is None:
+                met[c] = list(positions)
+            else:
+                m += positions
+    derived: list[list] = []
+    for c in sorted(met, key=lambda x: fresh[x][0]):
         b = c.belief
-        if b is None or b.creation_time < oldest or c.term.has_var:
+        term = c.term
+        if b is None or b.creation_time < oldest:
             continue
-        for link, lb in links:
-            cond, concl = link.args
-            if cond.op is not None and cond.op != c.term.op:
-                continue
-            bind = unify(cond, c.term)
-            if bind is None:
-                continue
-            target = apply(concl, bind)
-            if target.has_var:
-                continue
-            t = tf.deduction(lb.truth, b.truth)
-            if t.c < cfg.min_confidence:
-                continue
-            stamp = merge(b.stamp, lb.stamp, size)
-            derived.append(Event(target, BELIEF, t, stamp, ETERNAL, now))
-    for e in derived:
-        if e.term.op == NEGATION and cfg.anticipation_negated_outcomes:
-            e = Event(e.term.args[0], BELIEF, tf.negation(e.truth), e.stamp, ETERNAL, now)
-        tc = mem.conceptualize(e.term, now)
+        # a belief stays fresh for several cycles and meets mostly the same links at
+        # each: what it deduced through each link is kept in its entry while its
+        # belief, the link's belief and the parameters read here are the same
+        entry = fresh[c]
+        if (
+            entry[1] is not b
+            or entry[2] != least
+            or entry[3] != size
+            or entry[4] != negated
+            or entry[6] is None
+        ):
+            entry[1] = b
+            entry[2] = least
+            entry[3] = size
+            entry[4] = negated
+            entry[6] = {}
+        known: dict = entry[6]
+        positions = met[c]
+        positions.sort()
+        for i in positions:
+            link, lb = links[i]
+            hit = known.get(link)
+            if hit is not None and hit[0] is lb:
+                found = hit[1]
+            else:
+                found = _deduction(b, term, link, lb, least, size, negated)
+                known[link] = (lb, found)
+            if found is not None:
+                derived.append(found)
+    # each deduction is [term, truth, stamp, the belief it last left as it was]: the
+    # same belief would be left as it is again (a revision or choice reads only what
+    # an event never changes), so it is not tried again
+    for found in derived:
+        target = found[0]
+        stamp = found[2]
+        tc = mem.conceptualize(target, now)
         old = tc.belief
-        if old is not None and old.stamp == e.stamp:
+        if old is not None and (old is found[3] or old.stamp == stamp):
             continue
-        new, _ = revised_or_chosen(old, e, size)
+        e = Event(target, BELIEF, found[1], stamp, ETERNAL, now)
+        new, _ = revised_or_chosen(old, e, size, True)
         if new is old:
+            found[3] = old
             continue
         new.creation_time = now
         tc.belief = new
@@ -101,6 +159,126 @@ def forward_eternal(s: Reasoner, on_new_belief: Callable[[Reasoner, Concept], No
             emit(s, "Derived: " + new.line(1.0))
         note_fresh_belief(s, tc)
         on_new_belief(s, tc)
+
+
+def _deduction(
+    b: Event, term: Term, link: Term, lb: Event, least: float, size: int, negated: bool
+) -> list | None:
+    """What the eternal belief ``b`` of ``term`` deduces through ``link`` (believed as
+    ``lb``): the consequence's term, truth and stamp (and a slot for the belief it
+    last left unchanged), a negated consequence ``(! x)``
+    as ``x`` with the negated truth when ``negated``; None if nothing."""
+    cond, concl = link.args
+    if cond.op is not None and cond.op != term.op:
+        return None
+    bind = unify(cond, term)
+    if bind is None:
+        return None
+    target = apply(concl, bind)
+    if target.has_var:
+        return None
+    t = tf.deduction(lb.truth, b.truth)
+    if t.c < least:
+        return None
+    stamp = merge(b.stamp, lb.stamp, size)
+    if target.op == NEGATION and negated:
+        return [target.args[0], tf.negation(t), stamp, None]
+    return [target, t, stamp, None]
+
+
+#: the conditions of more components than this are indexed by connector and arity only
+_WIDEST = 3
+
+
+def _component_shape(t: Term) -> object:
+    """What a condition's component demands of the term's component in its place: that
+    very term (ground), anything (a variable: None), or a compound of its connector and
+    arity (a compound with variables)."""
+    if not t.has_var:
+        return t
+    if t.op is None:
+        return None
+    return (t.op, len(t.args))
+
+
+def _condition_shape(cond: Term) -> object:
+    """The key under which a condition is indexed: every ground term it unifies with
+    has this key among :func:`_term_shapes`."""
+    if not cond.has_var:
+        return cond
+    if cond.op is None:
+        return None
+    if len(cond.args) > _WIDEST:
+        return (cond.op, len(cond.args))
+    return (cond.op, tuple([_component_shape(a) for a in cond.args]))
+
+
+def _term_shapes(t: Term) -> list[object]:
+    """The keys of every condition that may unify with the ground term ``t`` (unify
+    is positional: same connector, arity, and each component the same ground term, a
+    variable, or a compound of the same connector and arity)."""
+    keys: list[object] = [None, t]
+    if t.op is None:
+        return keys
+    args = t.args
+    if len(args) > _WIDEST:
+        keys.append((t.op, len(args)))
+        return keys
+    combos: list[tuple[object, ...]] = [()]
+    for a in args:
+        options: list[object] = [a, None]
+        if a.op is not None:
+            options.append((a.op, len(a.args)))
+        combos = [c + (o,) for c in combos for o in options]
+    for combo in combos:
+        keys.append((t.op, combo))
+    return keys
+
+
+def strongest_links(
+    s: Reasoner,
+) -> tuple[list[tuple[Term, Event]], dict[object, list[int]]]:
+    """The ``==>`` beliefs the declarative pass uses, in the order it uses them (ONA
+    keeps a consequence's ``==>`` beliefs in a table ordered by expectation and uses the
+    strongest ``top_k_declarative_implications`` of each table), with an index of their
+    positions by the shape of the condition (:func:`_condition_shape`).
+
+    Kept between cycles: rebuilt only when some link or its belief is another than the
+    last time (a belief is never changed in place, only replaced), so that a cycle
+    costs a look at each link rather than a sort of them all and a unification of each
+    fresh belief with each link."""
+    mem = s.memory
+    current: list[tuple[Term, Event]] = []
+    for link in declarative_links(s):
+        lc = mem.find(link)
+        if link.op == "==>" and lc is not None and lc.belief is not None:
+            current.append((link, lc.belief))
+    cached = s.strongest
+    if cached is not None:
+        seen = cached[0]
+        if len(seen) == len(current):
+            same = True
+            for i in range(len(current)):
+                a = seen[i]
+                b = current[i]
+                if a[0] is not b[0] or a[1] is not b[1]:
+                    same = False
+                    break
+            if same:
+                return cached[1], cached[2]
+    tables: dict[Term, list[tuple[Term, Event]]] = {}
+    for entry in current:
+        tables.setdefault(entry[0].args[1], []).append(entry)
+    links: list[tuple[Term, Event]] = []
+    k = s.config.top_k_declarative_implications
+    for entries in tables.values():
+        entries.sort(key=lambda x: -expectation(x[1].truth))
+        links += entries[:k]
+    by_shape: dict[object, list[int]] = {}
+    for i, (link, _) in enumerate(links):
+        by_shape.setdefault(_condition_shape(link.args[0]), []).append(i)
+    s.strongest = (current, links, by_shape)
+    return links, by_shape
 
 
 def declarative_links(s: Reasoner) -> list[Term]:
@@ -136,4 +314,11 @@ def predict_negated(
     ic.predicted_belief = revised_or_chosen(ic.predicted_belief, neg, cfg.stamp_size, True)[0]
 
 
-__all__ = ["declarative_links", "forward_eternal", "note_fresh_belief", "predict_negated"]
+__all__ = [
+    "declarative_links",
+    "drop_fresh",
+    "forward_eternal",
+    "note_fresh_belief",
+    "predict_negated",
+    "strongest_links",
+]

@@ -139,22 +139,43 @@ def _bridge(s: Reasoner, question: Term) -> None:
                     side_p.setdefault(x, []).append(c)
     skip = set(s_names) | set(p_names)
     table = rule_table(s.config.semantic_inference_nal_level)
+    stamp_size = s.config.stamp_size
     done: set[tuple[int, int]] = set()
+    # (typed for the compiled engine: the pairs are millions where the subject and the
+    # predicate are in thousands of concepts, most of them refused for overlapping
+    # stamps, so the refusal is tested first, on the stamps read as C values, before
+    # the pair's key is made)
+    c: Concept
+    d: Concept
+    b1: Event
+    b2: Event
+    m: Term
+    others: list
+    stamp1: tuple
     for a in s_names:
         for c in list(itertools.islice(idx.get(a, ()), limit)):
-            b1 = c.belief
-            if b1 is None:
+            if c.belief is None:
                 continue
+            b1 = c.belief
+            stamp1 = b1.stamp
             for m in _names(c.term):
                 if m in skip:
                     continue
-                for d in side_p.get(m, ()):
+                found = side_p.get(m)
+                if found is None:
+                    continue
+                others = found
+                for d in others:
+                    if c is d or d.belief is None:
+                        continue
                     b2 = d.belief
+                    if overlap(stamp1, b2.stamp):
+                        continue
                     key = (c.id, d.id)
-                    if c is d or b2 is None or key in done or overlap(b1.stamp, b2.stamp):
+                    if key in done:
                         continue
                     done.add(key)
-                    stamp = merge(b1.stamp, b2.stamp, s.config.stamp_size)
+                    stamp = merge(b1.stamp, b2.stamp, stamp_size)
                     if has_duplicate(stamp):
                         continue
                     der = Derivation(s, ETERNAL, stamp, 1.0, 1.0)

@@ -20,7 +20,7 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 from . import truth as tf
-from .declarative import predict_negated
+from .declarative import drop_fresh, predict_negated
 from .event import BELIEF, ETERNAL, Event, Implication, event_of, outdone, revised_or_chosen
 from .rules import variable_forms
 from .spikegroups import group_add, group_keys, group_remove
@@ -151,7 +151,7 @@ def add_implication(
 
 def forget_concept(s: Reasoner, c: Concept) -> None:
     """Drop an evicted concept from the implication, link and time indexes."""
-    s.fresh_beliefs.pop(c, None)
+    drop_fresh(s, c)
     # (if it is not there, it fell off the end of the full index)
     if c.timed and _drop(s.time_index, c) and s.groups is not None:
         group_remove(s.groups, c, _keys_of(s, c.term))

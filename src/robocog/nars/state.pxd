@@ -29,6 +29,9 @@ cdef class Reasoner:
     cdef public dict general_links
     cdef public dict consequences
     cdef public dict fresh_beliefs
+    cdef public dict fresh_shapes
+    cdef public long fresh_order
+    cdef public object strongest
     cdef public list goal_layers
     cdef public dict recent_goal_concepts
     cdef public dict unified

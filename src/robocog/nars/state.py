@@ -73,6 +73,9 @@ class Reasoner:
         "general_links",
         "consequences",
         "fresh_beliefs",
+        "fresh_shapes",
+        "fresh_order",
+        "strongest",
         "goal_layers",
         "recent_goal_concepts",
         "unified",
@@ -123,7 +126,14 @@ class Reasoner:
         self.consequences: dict[Term, tuple[dict[Term, Term | None], dict[Term, Term | None]]]
         #: concepts whose eternal belief was made or revised lately (oldest first), for
         #: ONA 0.9.3's declarative pass (``declarative_implications_cycle_process``)
-        self.fresh_beliefs: dict[Concept, None]
+        self.fresh_beliefs: dict[Concept, list]
+        #: the fresh concepts filed by the condition shapes their terms may instantiate,
+        #: and a count of the notes so far that orders them (``declarative``)
+        self.fresh_shapes: dict[object, dict[Concept, None]]
+        self.fresh_order: int
+        #: (a cache) the ``==>`` beliefs that pass last used, its links in order and
+        #: their index by condition (``declarative.strongest_links``), or None
+        self.strongest: tuple | None
         # -- goals
         #: ONA's cycling goal events, one queue per layer
         self.goal_layers: list[EventQueue]
@@ -179,6 +189,9 @@ def clear_caches(s: Reasoner) -> None:
     s.outcomes = {}
     s.patterns = {}
     s.fresh_beliefs = {}
+    s.fresh_shapes = {}
+    s.fresh_order = 0
+    s.strongest = None
 
 
 def rand(s: Reasoner) -> int:
