@@ -21,6 +21,8 @@ What varies from run to run in Jason itself is compared as a placeholder:
 * per project (``NORMALIZE`` below): the random bids of the contract-net projects and the
   order in which the bids arrive (the offers list, the winner and who lost), the
   milliseconds of the search demo;
+* Jason runs without the project's own ``logging.properties`` (some send the output to a
+  window or print it without the agent's name), so that every line says its agent;
 * a project that never ends (Jason's run was cut at its time limit) is compared on the
   lines both runs printed: the shorter of the two per agent is a prefix of the other.
 
@@ -274,6 +276,9 @@ def check(
         return res, raw
     jason_outs = []
     if args.jason:
+        # a project's own logging.properties may send Jason's output to a window or
+        # drop the agent names; Jason's default console format is the one compared
+        (mas.parent / "logging.properties").unlink(missing_ok=True)
         for k in range(args.runs):
             hit = cache / f"{name.replace('/', '+')}.{k}.txt" if cache else None
             if hit is not None and hit.is_file():

@@ -26,7 +26,9 @@ the agent's methods: :mod:`robocog.bdi.sense`, :mod:`robocog.bdi.deliberate`,
 from __future__ import annotations
 
 import functools
+import heapq
 import sys
+import time
 from collections import deque
 from collections.abc import Callable, Iterable
 from pathlib import Path
@@ -132,6 +134,9 @@ class Agent:
         self._waiting_actions: list[tuple[ActionHandle, Intention]] = []
         self._timers: list[tuple[float, int, Intention]] = []
         self._timer_seq = 0
+        #: the timer each waiting intention waits on (by intention id), so that the
+        #: timer of a wait it no longer waits on is ignored
+        self._timer_of: dict[int, int] = {}
         self._event_waiters: list[tuple[P.Trigger, Intention, float | None]] = []
         self._formula_waiters: list[tuple[Term, Intention]] = []
         #: intention id -> (variable for the elapsed time, start) of a running .wait
@@ -362,12 +367,25 @@ class Agent:
         return bool(self.C.pending)
 
     def next_timer(self) -> float | None:
-        """When the earliest ``.wait`` ends (virtual milliseconds), if any."""
-        return self._timers[0][0] if self._timers else None
+        """When the earliest ``.wait`` or deadline is due (milliseconds), if any."""
+        timers = self._timers
+        while timers and sense.stale_timer(self, timers[0]):
+            heapq.heappop(timers)
+        return timers[0][0] if timers else None
 
-    def run(self, max_cycles: int | None = None, advance_clock: bool = True) -> int:
-        """Run cycles until idle (skipping virtual time to pending timers); returns cycles."""
+    def run(
+        self, max_cycles: int | None = None, advance_clock: bool = True, real_time: bool = False
+    ) -> int:
+        """Run cycles until idle; returns the cycles run.
+
+        With ``real_time`` the clock of ``.wait`` and deadlines is the wall clock, as in
+        Jason: an idle agent with a timer sleeps until it is due. Otherwise the clock is
+        virtual: it stands still while the agent works and jumps to the next timer when
+        it is idle (``advance_clock``), so a run is the same on any machine."""
         n = 0
+        mono = time.monotonic
+        t0 = mono()
+        base = self.clock
         C = self.C
         events = C.events
         running = C.running
@@ -387,6 +405,8 @@ class Agent:
         next_intention = running.popleft
         now_running = context.running.get
         while n < limit:
+            if real_time:
+                self.clock = base + (mono() - t0) * 1000.0
             if events or running or feedback or C.atomic_intention is not None:
                 n += 1
                 if (
@@ -411,6 +431,11 @@ class Agent:
                     step()
                 continue
             if self.is_idle():
+                if real_time and self._timers:
+                    # sleep until the first timer is due (in short steps, so that
+                    # news from outside is taken in on time)
+                    time.sleep(min(0.05, max(0.0, (self._timers[0][0] - self.clock) / 1000.0)))
+                    continue
                 if advance_clock and self._timers:
                     self.clock = max(self.clock, self._timers[0][0])
                     continue
@@ -468,6 +493,7 @@ class Agent:
     _wake_timers = sense.wake_timers
     _resume_wait = sense.resume_wait
     add_timer = sense.add_timer
+    _add_deadline = sense.add_deadline
     wait_event = sense.wait_event
     wait_formula = sense.wait_formula
     _check_formula_waiters = sense.check_formula_waiters

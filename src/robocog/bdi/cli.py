@@ -39,6 +39,13 @@ def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--beliefs", action="store_true", help="print the final belief base on stderr"
     )
+    parser.add_argument(
+        "--clock",
+        choices=("real", "virtual"),
+        default="real",
+        help="time of .wait, .at and deadlines: the wall clock, as in Jason (default), or a "
+        "virtual clock that jumps to the next timer (the same run on any machine)",
+    )
 
 
 class _OutOfTime(BaseException):
@@ -92,7 +99,7 @@ def run(args: argparse.Namespace) -> int:
             )  # fmt: skip
             if environment is not None:
                 agent.environment = environment
-            agent.run(args.max_cycles)
+            agent.run(args.max_cycles, real_time=args.clock == "real")
             agents = [agent]
         else:
             project = paths[0].suffix == ".mas2j"
@@ -101,7 +108,9 @@ def run(args: argparse.Namespace) -> int:
                 return 2
             if project:
                 read_project(paths[0])  # errors in the project file come first
-            mas = run_files(paths, printer, args.max_cycles, environment)
+            mas = run_files(
+                paths, printer, args.max_cycles, environment, real_time=args.clock == "real"
+            )
             agents = list(mas.agents.values())
     except ParseError as exc:
         print(f"robocog agent: {exc}", file=sys.stderr)

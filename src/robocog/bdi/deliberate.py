@@ -22,6 +22,7 @@ from robocog.bdi.formulas import (
     propagate,
 )
 from robocog.bdi.plans import (
+    ACHIEVE,
     BELIEF,
 )
 from robocog.bdi.terms import (
@@ -132,6 +133,16 @@ def deliberate(self: Agent, ev: Event) -> bool:
             return self._no_option(ev)
     im = new_im(plan, trig, s, plan.body)
     i = ev.intention
+    if trig.kind == ACHIEVE and trig.literal.__class__ is Literal and trig.literal.annots:
+        deadline = _hard_deadline(trig.literal)
+        if deadline is not None:
+            if i is None:
+                i = ev.intention = Intention()
+                i.stack.append(im)
+                self._requeue(i)
+                self._add_deadline(deadline, i, im)
+                return True
+            self._add_deadline(deadline, i, im)
     if i is None:
         i = Intention()
         i.stack.append(im)
@@ -209,3 +220,16 @@ def no_plan(self: Agent, ev: Event, what: str) -> None:
             self._advance(ev.intention)
     elif trig.kind != BELIEF:
         self.warn(f"no {what} plan for {trig!r}")
+
+
+def _hard_deadline(lit: Literal) -> float | None:
+    """The milliseconds of a goal's ``hard_deadline(MS)`` annotation, if it has one."""
+    for a in lit.annots:
+        if (
+            a.__class__ is Literal
+            and a.functor == "hard_deadline"
+            and len(a.args) == 1
+            and isinstance(a.args[0], (int, float))
+        ):
+            return float(a.args[0])
+    return None

@@ -8,6 +8,7 @@ is in :mod:`robocog.bdi.messages`.
 
 from __future__ import annotations
 
+import time
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
@@ -101,14 +102,38 @@ class MultiAgentSystem:
                 return False
         return True
 
-    def run(self, max_rounds: int | None = None) -> int:
-        """Run rounds until every agent is idle (jumping the clock to timers)."""
+    def run(self, max_rounds: int | None = None, real_time: bool = False) -> int:
+        """Run rounds until every agent is idle.
+
+        ``real_time``: the shared clock of ``.wait``, ``.at``, deadlines and reply
+        timeouts is the wall clock, as in Jason, so an agent that is busy does not stop
+        the others' clocks; when all are idle the system sleeps until the first timer.
+        Otherwise the clock is virtual: it stands still during a round and jumps to the
+        next timer when all are idle, so a run is the same on any machine (what
+        reproducible experiments need)."""
         n = 0
+        mono = time.monotonic
+        t0 = mono()
+        base = self.clock
         while not self.stopped and (max_rounds is None or n < max_rounds):
+            if real_time:
+                self.clock = base + (mono() - t0) * 1000.0
             if self._busy:
                 self._busy = False
             elif self.is_idle():
                 timers = [t for ag in self.agents.values() if (t := ag.next_timer()) is not None]
+                if timers and real_time:
+                    due = min(timers)
+                    if due > self.clock:
+                        time.sleep(min(0.05, (due - self.clock) / 1000.0))
+                    self.clock = base + (mono() - t0) * 1000.0
+                    for ag in self.agents.values():
+                        ag.clock = self.clock
+                    if due > self.clock:
+                        continue
+                    self.step()
+                    n += 1
+                    continue
                 if timers:
                     self.clock = max(self.clock, min(timers))
                     for ag in self.agents.values():

@@ -168,6 +168,9 @@ class _Builder(Transformer):
     def label(self, items: list) -> tuple:
         return ("label", items[0])
 
+    def label_var(self, items: list) -> tuple:
+        return ("label", self._var(str(items[0])))
+
     def context(self, items: list) -> tuple:
         ctx = items[0]
         if ctx.__class__ is Literal and ctx.functor == "true" and not ctx.args:

@@ -222,14 +222,16 @@ def run_files(
     printer: Callable[[str, str], None] | None = None,
     max_rounds: int | None = None,
     environment: Callable[[str, Literal], Any] | None = None,
+    real_time: bool = True,
 ) -> MultiAgentSystem:
     """Run one project file, or several ``.asl`` files as one system (each agent named
-    after its file), until every agent is idle or ``.stopMAS``."""
+    after its file), until every agent is idle or ``.stopMAS``; ``real_time``: on the
+    wall clock, as Jason runs them (see :meth:`MultiAgentSystem.run`)."""
     if len(paths) == 1 and str(paths[0]).endswith(".mas2j"):
         mas = build(read_project(paths[0]), printer, environment)
     else:
         mas = MultiAgentSystem(environment)
         for path in paths:
             mas.add(Agent.from_file(path, printer=printer))
-    mas.run(max_rounds)
+    mas.run(max_rounds, real_time=real_time)
     return mas

@@ -1,0 +1,124 @@
+"""Forms of Jason's own examples, each checked against Jason 3.3.
+
+The expected output of every program here was recorded from Jason 3.3 (built by
+``build-jason.sh``) with ``jason-agent FILE.asl`` (or ``FILE.mas2j``), and the same
+program is run through ``robocog agent``.
+"""
+
+from __future__ import annotations
+
+import io
+from pathlib import Path
+
+import pytest
+
+from robocog.bdi.agent import Agent
+from robocog.bdi.parser import ParseError, parse_program
+from robocog.bdi.project import run_files
+
+
+def _run(tmp_path: Path, name: str, text: str, real_time: bool = True) -> list[str]:
+    path = tmp_path / f"{name}.asl"
+    path.write_text(text, encoding="utf-8")
+    out = io.StringIO()
+    run_files([path], lambda ag, line: out.write(f"[{ag}] {line}\n"), real_time=real_time)
+    return out.getvalue().splitlines()
+
+
+def test_missing_semicolon_is_a_syntax_error_where_jason_reports_it() -> None:
+    # Jason 3.3: as2j: error parsing "file:t.asl": Encountered " <ATOM> ".print "" at
+    # line 3, column 3.
+    with pytest.raises(ParseError) as err:
+        parse_program("!g.\n+!g <- .print(a)\n  .print(b).\n", "t.asl")
+    assert (err.value.line, err.value.column) == (3, 3)
+    assert str(err.value).startswith("t.asl:3:3:")
+
+
+def test_a_dot_before_a_name_is_never_the_end_of_a_clause() -> None:
+    with pytest.raises(ParseError):
+        parse_program("b(1).c.\n")
+    prog = parse_program("b(1). c.\n")
+    assert len(prog.beliefs) == 2
+
+
+def test_bracketed_fork_join(tmp_path: Path) -> None:
+    # Jason 3.3 prints c, a, done: the first branch of ||| to finish ends the other
+    src = (
+        "!start.\n"
+        "+!start <- !g(c) |&| (!g(a) ||| !h(b)); .print(done).\n"
+        "+!g(X) <- .print(X).\n"
+        "+!h(X) <- .wait(200); .print(X).\n"
+    )
+    assert _run(tmp_path, "fork", src) == ["[fork] c", "[fork] a", "[fork] done"]
+
+
+def test_hard_deadline_fails_the_goal(tmp_path: Path) -> None:
+    src = (
+        "!start.\n"
+        "+!start <- !g(3)[hard_deadline(100)]; .print(after); "
+        "!g(1)[hard_deadline(500)]; .print(end).\n"
+        "+!g(V) <- .wait(V*50); .print(g,V).\n"
+        '-!g(V)[error(E)] <- .print("failed ",E," ",V).\n'
+    )
+    assert _run(tmp_path, "deadline", src) == [
+        "[deadline] failed deadline_reached 3",
+        "[deadline] after",
+        "[deadline] g1",
+        "[deadline] end",
+    ]
+
+
+def test_a_wait_that_was_abandoned_does_not_end_a_later_wait(tmp_path: Path) -> None:
+    # the .wait(600) of g(3) is cut by the deadline; the later .wait(300) of the same
+    # intention must last its own time, on both clocks
+    src = (
+        "!start.\n"
+        "+!start <- !g(3)[hard_deadline(100)]; !g(2); .print(end).\n"
+        "+!g(V) <- .wait(V*200); .print(g,V).\n"
+        "-!g(V) <- .print(failed,V).\n"
+    )
+    for real in (True, False):
+        ag = Agent(src, "a")
+        lines: list[tuple[str, float]] = []
+        ag.printer = lambda _n, line, ag=ag, lines=lines: lines.append((line, ag.clock))
+        ag.run(real_time=real)
+        assert [x for x, _ in lines] == ["failed3", "g2", "end"]
+        assert lines[1][1] - lines[0][1] >= 399
+
+
+def _two_agents(tmp_path: Path) -> Path:
+    (tmp_path / "busy.asl").write_text(
+        "!busy.\n+!busy <- for (.range(I,1,20000)) { X = I * 2 }; .print(busy_done).\n",
+        encoding="utf-8",
+    )
+    (tmp_path / "ticker.asl").write_text(
+        "!tick.\n+!tick <- .wait(5); .print(tick); .send(busy, tell, ticked).\n",
+        encoding="utf-8",
+    )
+    mas = tmp_path / "two.mas2j"
+    mas.write_text("MAS two {\n agents: busy; ticker;\n}\n", encoding="utf-8")
+    return mas
+
+
+def test_a_busy_agent_does_not_stop_another_agents_clock(tmp_path: Path) -> None:
+    # Jason 3.3 prints [ticker] tick before [busy] busy_done: its clock is the wall clock
+    out: list[str] = []
+    run_files([_two_agents(tmp_path)], lambda ag, line: out.append(f"[{ag}] {line}"))
+    assert out == ["[ticker] tick", "[busy] busy_done"]
+
+
+def test_the_virtual_clock_stands_still_while_agents_work(tmp_path: Path) -> None:
+    out: list[str] = []
+    run_files(
+        [_two_agents(tmp_path)], lambda ag, line: out.append(f"[{ag}] {line}"), real_time=False
+    )
+    assert out == ["[busy] busy_done", "[ticker] tick"]
+
+
+def test_plan_term_with_a_label_variable_and_abstract_namespace() -> None:
+    prog = parse_program(
+        "+!g <- P = {@L +!T : C <- B}; .print(P).\n"
+        "r :- .count(::p(_)[source(_)], N) & N > 0.\n"
+        "+!ns::go <- true.\n"
+    )
+    assert len(prog.plans) == 2 and len(prog.beliefs) == 1
