@@ -24,7 +24,8 @@ What varies from run to run in Jason itself is compared as a placeholder:
 * Jason runs without the project's own ``logging.properties`` (some send the output to a
   window or print it without the agent's name), so that every line says its agent;
 * a project that never ends (Jason's run was cut at its time limit) is compared on the
-  lines both runs printed: the shorter of the two per agent is a prefix of the other.
+  lines Jason printed, which robocog's must begin with; when robocog too was stopped at
+  its time limit, the shorter of the two per agent must begin the other.
 
 A Java-needing project is expected to stop at once with an error that names the Java part
 (robocog runs no Java); the table says whether it does, hangs or exits silently.
@@ -107,7 +108,7 @@ _CLASS_SECTIONS = re.compile(
     r"([A-Za-z_][\w.]*)"
 )
 _DIRECTIVES = re.compile(r"\bdirectives\s*:\s*([^;}]*)")
-_IA_CALL = re.compile(r"(?<![\w.])([a-z]\w*(?:\.[a-z]\w*)+)\s*\(")
+_IA_CALL = re.compile(r"(?<![\w.\"])([a-z]\w*(?:\.[a-z]\w*)+)\b(?!\")")
 
 
 @dataclass
@@ -207,8 +208,12 @@ def normalize(name: str, line: str) -> str:
     return line
 
 
-def compare(name: str, jason: str, robocog: str, cut: bool) -> str | None:
-    """None when robocog's output matches this Jason run, else the first difference."""
+def compare(name: str, jason: str, robocog: str, cut: bool, robocog_cut: bool) -> str | None:
+    """None when robocog's output matches this Jason run, else the first difference.
+
+    ``cut``: Jason's run was stopped at its time limit; then robocog's lines must begin
+    with Jason's, or, when robocog was stopped at its own limit too, the shorter of the
+    two must begin the other."""
     exp = {a: [normalize(name, x) for x in ls] for a, ls in split(jason).items()}
     got = {a: [normalize(name, x) for x in ls] for a, ls in split(robocog).items()}
     exp.pop("RunLocalMAS", None)
@@ -217,7 +222,7 @@ def compare(name: str, jason: str, robocog: str, cut: bool) -> str | None:
         if name in UNORDERED:
             e, g = sorted(e), sorted(g)
         if cut:
-            n = min(len(e), len(g))
+            n = min(len(e), len(g)) if robocog_cut else len(e)
             if n == 0 and e:
                 return f"[{ag}] no lines"
             e, g = e[:n], g[:n]
@@ -300,10 +305,10 @@ def check(
         return res, raw
     diffs = []
     for j in jason_outs:
-        cut = j["seconds"] >= args.jason_max / 1000 - 0.5 or rc == 3
+        cut = j["seconds"] >= args.jason_max / 1000 - 0.5
         if cut and "never ends: compared on the lines both printed" not in handling:
             handling.append("never ends: compared on the lines both printed")
-        d = compare(name, j["stdout"], out, cut)
+        d = compare(name, j["stdout"], out, cut, rc == 3)
         if d is None:
             diffs = []
             break

@@ -46,9 +46,10 @@ def test_a_malformed_project_names_file_line_and_column(tmp_path: Path) -> None:
     with pytest.raises(ParseError) as err:
         read_project(path)
     assert (err.value.line, err.value.source) == (3, str(path))
-    path.write_text("MAS p { infrastructure: Jade agents: a; }")
-    with pytest.raises(ParseError, match="not supported: infrastructure Jade"):
-        read_project(path)
+    path.write_text("MAS p {\n infrastructure: JaCaMo\n agents: a; }")
+    with pytest.raises(ParseError, match="infrastructure JaCaMo is not available") as err:
+        build(read_project(path))
+    assert (err.value.line, err.value.column) == (2, 18)
     path.write_text("MAS p { agents: ghost; }")
     with pytest.raises(ParseError, match="agent ghost: no file ghost.asl"):
         build(read_project(path))

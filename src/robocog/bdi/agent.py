@@ -106,6 +106,10 @@ class Agent:
     #: Jason's tail-recursion optimisation (on by default, as in Jason)
     tail_recursion = True
 
+    #: an agent architecture (:class:`robocog.bdi.environment.AgentArch`) that sees
+    #: the agent's actions and the messages it sends, or None
+    arch = None
+
     def __init__(
         self,
         source: str | Program = "",
@@ -213,8 +217,54 @@ class Agent:
         self._actions[name] = (fn, raw)
 
     def register_internal_action(self, name: str, fn: Callable) -> None:
-        """Add an internal action ``.name``: ``fn(agent, args, s, trail, ctx)``."""
-        self._internal[name if name.startswith(".") else "." + name] = fn
+        """Add an internal action ``.name`` (or ``lib.name``, a library's, kept as it is):
+        ``fn(agent, args, s, trail, ctx)``."""
+        self._internal[name if "." in name else "." + name] = fn
+
+    def library_calls(self) -> list[tuple[str, int]]:
+        """The library internal actions (``mylib.act``) the plans call, with the line of
+        the first call of each, in plan order."""
+        from robocog.bdi.terms import And, Not, Or
+
+        found: dict[str, int] = {}
+
+        def formula(t: object, line: int) -> None:
+            c = t.__class__
+            if c is Literal:
+                f = t.functor
+                if "." in f and not f.startswith(".") and f not in found:
+                    found[f] = line
+            elif c is And or c is Or:
+                formula(t.left, line)
+                formula(t.right, line)
+            elif c is Not:
+                formula(t.arg, line)
+
+        def chain(ch: P.Chain, line: int) -> None:
+            for st in P.chain_steps(ch):
+                at = st.line or line
+                if st.kind in (P.INTERNAL, P.CONSTRAINT, P.TEST_STEP):
+                    formula(st.term, at)
+                elif st.kind == P.IF:
+                    for cond, body in st.blocks:
+                        formula(cond, at)
+                        chain(body, at)
+                    chain(st.state, at)
+                elif st.kind in (P.WHILE, P.FOR):
+                    formula(st.term, at)
+                    for body in st.blocks:
+                        chain(body, at)
+                elif st.kind == P.FORK:
+                    for b in st.blocks:
+                        if b is not None:
+                            chain(b, at)
+
+        for plan in self.pl:
+            if plan.context is not None:
+                formula(plan.context, plan.line)
+            if plan.body is not None:
+                chain(plan.body, plan.line)
+        return list(found.items())
 
     def internal_action(self, name: str) -> Callable | None:
         """The implementation of internal action ``name`` (with its leading dot)."""

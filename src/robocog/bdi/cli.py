@@ -68,7 +68,7 @@ def run(args: argparse.Namespace) -> int:
     """Parse, run until idle, and report errors with file, line and column."""
     from robocog.bdi.agent import Agent
     from robocog.bdi.parser import ParseError, read_source
-    from robocog.bdi.project import read_project, run_files
+    from robocog.bdi.project import build, read_project, run_files
 
     paths = [Path(f) for f in args.file]
     for path in paths:
@@ -106,11 +106,15 @@ def run(args: argparse.Namespace) -> int:
             if project and len(paths) > 1:
                 print("robocog agent: a .mas2j project runs alone", file=sys.stderr)
                 return 2
+            real_time = args.clock == "real"
             if project:
-                read_project(paths[0])  # errors in the project file come first
-            mas = run_files(
-                paths, printer, args.max_cycles, environment, real_time=args.clock == "real"
-            )
+                notes: list[str] = []
+                mas = build(read_project(paths[0]), printer, environment, notes)
+                for note in notes:
+                    print(f"robocog agent: {note}", file=sys.stderr)
+                mas.run(args.max_cycles, real_time=real_time)
+            else:
+                mas = run_files(paths, printer, args.max_cycles, environment, real_time=real_time)
             agents = list(mas.agents.values())
     except ParseError as exc:
         print(f"robocog agent: {exc}", file=sys.stderr)

@@ -37,7 +37,8 @@ def solve(agent: Agent, f: Term, s: dict, trail: list) -> Iterator[None]:
             raise ActionError(f"unbound variable {f.name} used as a formula")
     if c is Literal:
         functor = f.functor
-        if functor[0] == ".":
+        if functor[0] == "." or ("." in functor and agent.internal_action(functor) is not None):
+            # Jason's own (``.print``) or a library's (``mylib.act``)
             yield from _internal(agent, f, s, trail)
             return
         if not f.args and not f.neg and not f.annots:

@@ -38,6 +38,7 @@ class MultiAgentSystem:
         #: was sent news (agents only ever give each other work, never take it away),
         #: so run() need not ask every awake agent whether it is idle
         self._busy = False
+        self._env_version: int | None = None
 
     def add(self, agent: Agent) -> Agent:
         """Add an agent (its name must be unique)."""
@@ -78,6 +79,14 @@ class MultiAgentSystem:
         """One reasoning cycle of every agent, in the order they were added."""
         awake = self._awake
         agents = self.agents
+        env = self.environment
+        version = getattr(env, "version", None)
+        if version is not None and version != self._env_version:
+            # an Environment's percepts changed: every agent perceives them next
+            self._env_version = version
+            for ag in list(agents.values()):
+                ag.set_percepts(env.percepts(ag.name))
+                self.wake(ag)
         order = sorted(awake, key=awake.__getitem__) if len(awake) > 1 else list(awake)
         clock = self.clock
         for name in order:
@@ -94,6 +103,9 @@ class MultiAgentSystem:
 
     def is_idle(self) -> bool:
         """True when no agent has anything to do now."""
+        version = getattr(self.environment, "version", None)
+        if version is not None and version != self._env_version:
+            return False  # the environment's percepts changed: news for the agents
         # a sleeping agent is idle: it went to sleep so, and nothing has woken it
         agents = self.agents
         for name in self._awake:

@@ -69,6 +69,14 @@ def _receivers(ag: Agent, to: Term) -> list[str]:
 
 
 def _deliver(ag: Agent, msg: Message) -> None:
+    arch = ag.arch
+    if arch is not None:
+        arch.send(msg, lambda m: _deliver_now(ag, m))
+        return
+    _deliver_now(ag, msg)
+
+
+def _deliver_now(ag: Agent, msg: Message) -> None:
     if ag.mas is not None:
         ag.mas.deliver(msg)
     elif msg.receiver == ag.name:

@@ -251,7 +251,8 @@ class _Builder(Transformer):
         if c is Literal:
             # ``true`` anywhere but first in a plan's body is an environment action,
             # as Jason reads it
-            kind = P.INTERNAL if t.functor.startswith(".") else P.ACTION
+            # ``.print`` and ``mylib.act`` (a library's) are internal actions, as in Jason
+            kind = P.INTERNAL if "." in t.functor else P.ACTION
             return self._step(kind, meta, t)
         if c is Var:
             return self._step(P.ACTION, meta, t)
