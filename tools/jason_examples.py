@@ -63,8 +63,11 @@ NUMBER = re.compile(r"-?\d+(?:\.\d+)?(?:[eE][-+]?\d+)?")
 #: per project, how its lines are made comparable (regex, replacement) and why
 NORMALIZE: dict[str, tuple[str, list[tuple[str, str]]]] = {
     "examples/contract-net-protocol": (
-        "random bids: the amounts, the winner and the order of the offers vary in Jason",
+        "random bids: the amounts, the winner and the order of the offers vary in Jason; "
+        "the order of the participants the directory gives depends on the order Jason's "
+        "threads registered them",
         [
+            (r"Sending CFP to \[.*\]", "Sending CFP to <participants>"),
             (r"\[offer\(.*\)\]", "[offers]"),
             (r"Winner is \w+ with \S+", "Winner is <who> with <bid>"),
             (r"My proposal '[^']*' won CNP (\d+)", r"<won or lost> CNP \1"),
@@ -75,6 +78,7 @@ NORMALIZE: dict[str, tuple[str, list[tuple[str, str]]]] = {
     "examples/contract-net-protocol-er": (
         "random bids, as in contract-net-protocol",
         [
+            (r"Sending CFP to \[.*\]", "Sending CFP to <participants>"),
             (r"\[offer\(.*\)\]", "[offers]"),
             (r"Winner is \w+ with \S+", "Winner is <who> with <bid>"),
             (r"My proposal '[^']*' won CNP (\d+)", r"<won or lost> CNP \1"),
@@ -85,6 +89,7 @@ NORMALIZE: dict[str, tuple[str, list[tuple[str, str]]]] = {
     "examples/contract-net-protocol-module": (
         "random bids, as in contract-net-protocol",
         [
+            (r"Sending CFP to \[.*\]", "Sending CFP to <participants>"),
             (r"\[offer\(.*\)\]", "[offers]"),
             (r"Winner is \w+ with \S+", "Winner is <who> with <bid>"),
             (r"My proposal '[^']*' won CNP (\d+)", r"<won or lost> CNP \1"),
@@ -190,11 +195,12 @@ def java_parts(mas2j: Path) -> list[str]:
 
 
 def split(text: str) -> dict[str, list[str]]:
-    """``[agent] text`` lines per agent."""
+    """``[agent] text`` lines per agent (a bracket that cannot be an agent's name, such
+    as Jason's ``[RunLocalMAS]`` or ``[TextPersistentBB]``, is not an agent's line)."""
     per: dict[str, list[str]] = {}
     for ln in text.splitlines():
         m = LINE.match(ln.rstrip())
-        if m:
+        if m and m.group(1)[:1].islower():
             per.setdefault(m.group(1), []).append(m.group(2).rstrip())
     return per
 

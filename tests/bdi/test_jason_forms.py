@@ -122,3 +122,29 @@ def test_plan_term_with_a_label_variable_and_abstract_namespace() -> None:
         "+!ns::go <- true.\n"
     )
     assert len(prog.plans) == 2 and len(prog.beliefs) == 1
+
+
+def test_directory_facilitator_clone_and_agents_made_at_run_time(tmp_path: Path) -> None:
+    # Jason 3.3 (jason-agent df.mas2j): [p] c offers initiator from df, [bob] 10 : 41,
+    # [carl] hi, [c] [p], [c] []
+    files = {
+        "c.asl": "!start.\n+!start <- .df_register(initiator); .wait(300); "
+        '.df_search("participant", L); .print(L); .df_search(nothing, N); .print(N).\n',
+        "p.asl": '!start.\n+!start <- .df_register("participant"); .df_subscribe("initiator").\n'
+        '+provider(A, S)[source(Src)] <- .print(A, " offers ", S, " from ", Src).\n',
+        "m.asl": 'test(1).\n!start.\n+!start <- +a(40); .clone("bob"); .send(bob, tell, p(10)); '
+        '.create_agent(carl, "carl.asl"); .wait(300); .kill_agent(carl).\n'
+        '+p(X) : a(V) & test(T) <- .print(X, " : ", V + T).\n',
+        "carl.asl": "!hi.\n+!hi <- .print(hi).\n",
+    }
+    for name, text in files.items():
+        (tmp_path / name).write_text(text, encoding="utf-8")
+    mas = tmp_path / "df.mas2j"
+    mas.write_text("MAS df {\n agents: c; p; m;\n}\n", encoding="utf-8")
+    out: list[str] = []
+    system = run_files([mas], lambda ag, line: out.append(f"[{ag}] {line}"))
+    assert sorted(out) == sorted(
+        ["[p] c offers initiator from df", "[bob] 10 : 41", "[carl] hi", "[c] [p]", "[c] []"]
+    )
+    assert [x for x in out if x.startswith("[c]")] == ["[c] [p]", "[c] []"]
+    assert "carl" not in system.agents and "bob" in system.agents

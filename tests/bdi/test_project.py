@@ -180,7 +180,7 @@ def test_one_formula_cannot_take_gigabytes_or_hang_the_agent() -> None:
 def test_jasons_actions_robocog_lacks_fail_saying_so() -> None:
     program = """
     !s.
-    +!s <- .create_agent(b, "b.asl").
+    +!s <- .save_agent("b.asl").
     -!s[error_msg(M)] <- .print(M); .nonesuch(1).
     """
     out: list[str] = []
@@ -188,7 +188,7 @@ def test_jasons_actions_robocog_lacks_fail_saying_so() -> None:
     Agent(
         program, "a", printer=lambda n, t: out.append(t), warn=lambda n, t: warnings.append(t)
     ).run()
-    assert out == ["not supported: .create_agent/2"]
+    assert out == ["not supported: .save_agent/1"]
     assert any("unknown internal action .nonesuch/1" in w for w in warnings)
 
 

@@ -154,6 +154,8 @@ class Agent:
         self._custom_event = type(self).select_event is not Agent.select_event
         self._custom_intention = type(self).select_intention is not Agent.select_intention
         self.file = file
+        #: the program's name as Jason gives it in ``code_src`` and plan labels
+        self.url = f"file:{file}" if file else ""
         #: folders searched for included files after the including file's own
         self.asl_path = tuple(asl_path)
         if isinstance(source, Program):

@@ -432,8 +432,7 @@ def _internal(agent: Agent, lit: Literal, s: dict, trail: list) -> Iterator[None
 NOT_SUPPORTED = frozenset(
     {
         ".relevant_rules", ".list_rules",
-        ".create_agent", ".kill_agent", ".save_agent", ".clone", ".at",
-        ".df_register", ".df_deregister", ".df_search", ".df_subscribe", ".print_unifier",
+        ".save_agent", ".at", ".print_unifier",
         ".verbose", ".add_nested_source", ".current_intention", ".intention", ".signal",
     }
 )  # fmt: skip

@@ -16,9 +16,13 @@ from typing import Any
 from robocog.bdi.agent import Agent
 from robocog.bdi.logic import ActionError
 from robocog.bdi.messages import Message
-from robocog.bdi.terms import Literal
+from robocog.bdi.terms import Literal, Term, term_str
 
 __all__ = ["Message", "MultiAgentSystem"]
+
+
+def _text(t: Term | None) -> str | None:
+    return t if t is None or t.__class__ is str else term_str(t)
 
 
 class MultiAgentSystem:
@@ -39,6 +43,9 @@ class MultiAgentSystem:
         #: so run() need not ask every awake agent whether it is idle
         self._busy = False
         self._env_version: int | None = None
+        #: the directory facilitator: (agent, service, type) in registration order
+        self._df: dict[tuple, None] = {}
+        self._df_subs: list[tuple] = []
 
     def add(self, agent: Agent) -> Agent:
         """Add an agent (its name must be unique)."""
@@ -49,6 +56,55 @@ class MultiAgentSystem:
         self._place[agent.name] = len(self._place)
         self._awake[agent.name] = self._place[agent.name]
         return agent
+
+    def remove(self, name: str) -> Agent | None:
+        """Take the agent named ``name`` out of the system (``.kill_agent``)."""
+        ag = self.agents.pop(name, None)
+        self._awake.pop(name, None)
+        self._place.pop(name, None)
+        if ag is not None:
+            ag.mas = None
+            self._df = {k: v for k, v in self._df.items() if k[0] != name}
+        return ag
+
+    # ---- the directory facilitator: who offers which service
+    # services are named by their text, as in Jason (``initiator`` and ``"initiator"``
+    # are the same service)
+    def df_register(self, agent: str, service: Term, kind: Term | None) -> None:
+        """``agent`` offers ``service``; subscribers to it are told ``provider(...)``."""
+        key = (agent, _text(service), _text(kind))
+        if key in self._df:
+            return
+        self._df[key] = None
+        for sub, s_service, s_kind in list(self._df_subs):
+            if _text(s_service) == key[1] and (s_kind is None or _text(s_kind) == key[2]):
+                self._tell_provider(sub, agent, s_service)
+
+    def df_deregister(self, agent: str, service: Term, kind: Term | None) -> None:
+        """``agent`` no longer offers ``service``."""
+        name = _text(service)
+        for key in [k for k in self._df if k[0] == agent and k[1] == name]:
+            if kind is None or key[2] == _text(kind):
+                del self._df[key]
+
+    def df_search(self, service: Term, kind: Term | None) -> list[str]:
+        """The agents that offer ``service`` (of ``kind``), in the order they registered."""
+        name, kname = _text(service), _text(kind)
+        out: list[str] = []
+        for ag, s_service, s_kind in self._df:
+            if s_service == name and (kind is None or s_kind == kname) and ag not in out:
+                out.append(ag)
+        return out
+
+    def df_subscribe(self, agent: str, service: Term, kind: Term | None) -> None:
+        """Tell ``agent`` of every provider of ``service``, now and later."""
+        self._df_subs.append((agent, service, kind))
+        for provider in self.df_search(service, kind):
+            self._tell_provider(agent, provider, service)
+
+    def _tell_provider(self, agent: str, provider: str, service: Term) -> None:
+        content = Literal("provider", (Literal(provider), service))
+        self.deliver(Message("df", agent, "tell", content, f"df{len(self._df)}"))
 
     def wake(self, agent: Agent) -> None:
         """Let ``agent`` run in the next rounds (it has news)."""

@@ -401,6 +401,10 @@ def build(
             agent = agent_class(
                 text, name, file=str(source), printer=printer, asl_path=[str(d) for d in search]
             )
+            try:  # Jason names a program relative to the project: file:a.asl
+                agent.url = f"file:{source.relative_to(folder)}"
+            except ValueError:
+                pass
             if keys:
                 agent.bb.unique_keys = keys
             if arch_class is not None:
