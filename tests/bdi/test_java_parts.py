@@ -142,3 +142,19 @@ def test_jason_belief_bases_and_jade_run_here(tmp_path: Path) -> None:
     mas.run(real_time=True)
     assert out == ["Boss 2 is: Boissier of 2"]
     assert any("Jade" in n for n in notes) and any("not persisted" in n for n in notes)
+
+
+def test_the_room_example_runs_with_its_python_environment(capfd: pytest.CaptureFixture) -> None:
+    # Jason 3.3 with the Java RoomEnv prints "Agent porter is doing unlock", then
+    # "... lock", alternating for ever
+    room = Path(__file__).parents[2] / "examples" / "jason" / "room" / "room.mas2j"
+    mas = build(read_project(room), lambda ag, line: None)
+    mas.run(max_rounds=60, real_time=False)
+    lines = capfd.readouterr().out.splitlines()
+    assert len(lines) >= 4
+    assert lines[:4] == [
+        "Agent porter is doing unlock",
+        "Agent porter is doing lock",
+        "Agent porter is doing unlock",
+        "Agent porter is doing lock",
+    ]

@@ -213,6 +213,8 @@ _JASON_OWN = {
     "agentArchClass": {"jason.architecture.AgArch"},
     "agentClass": {"jason.asSemantics.Agent"},
     "beliefBaseClass": {"jason.bb.DefaultBeliefBase", "jason.bb.ChainBB", "jason.bb.IndexedBB"},
+    # Jason's synchronous mode: every agent one cycle per step, as robocog's rounds
+    "executionControl": {"jason.control.ExecutionControl"},
 }
 #: Jason's persistent belief bases: robocog keeps beliefs in memory (a note says so)
 _NOT_PERSISTED = {"jason.bb.TextPersistentBB", "jason.bb.JDBCPersistentBB"}
@@ -344,8 +346,8 @@ def resolve_classes(
             env = cls()
             env.init([a.name if isinstance(a, ClassRef) else a for a in ref.args])
             environment = env
-        else:  # directives, execution control: Java only
-            raise java_part(project, ref)
+        elif ref.name not in _JASON_OWN.get(ref.kind, ()):
+            raise java_part(project, ref)  # directives, execution control: Java only
     return environment, notes
 
 
