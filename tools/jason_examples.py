@@ -98,10 +98,30 @@ NORMALIZE: dict[str, tuple[str, list[tuple[str, str]]]] = {
         ],
     ),
     "demos/search": ("the time the searches take (milliseconds)", [(r"\d+ ?ms", "<ms> ms")]),
+    "examples/st-claus": (
+        "which workers make up each group, which kind Santa serves next and when a group "
+        "must wait depend on thread timing in Jason: the groups and kinds are masked, "
+        "the 'waiting to proceed' lines dropped, and each agent's distinct lines compared",
+        [(r"\[[^\]]*\]", "[group]"), (r"\b(elf|reindeer)s\b", "<kind>s")],
+    ),
+}
+
+#: per project, lines left out of the comparison (regex), for the reason NORMALIZE gives
+DROP: dict[str, str] = {"examples/st-claus": r"waiting to proceed"}
+
+#: projects compared on the distinct lines of each agent (for the reason NORMALIZE gives)
+DISTINCT = {"examples/st-claus"}
+
+#: differences found and explained (docs/bdi.md): the project's state says so
+KNOWN: dict[str, str] = {
+    "demos/hard_deadline": "Jason 3.3 stops the g(9) intention with a NullPointerException "
+    "(TransitionSystem.getPLForIM) and never prints the demo's expected last line "
+    "'failed, deadline_reached for g(9)'; robocog prints it",
 }
 
 #: projects whose lines are compared as a set per agent (their order depends on threads)
 UNORDERED: dict[str, str] = {
+    "demos/distributed-jade/case1": "the hellos of b and c1..c3 reach a in any order",
     "examples/contract-net-protocol": "the offers arrive in any order",
     "examples/contract-net-protocol-er": "the offers arrive in any order",
     "examples/contract-net-protocol-module": "the offers arrive in any order",
@@ -220,8 +240,14 @@ def compare(name: str, jason: str, robocog: str, cut: bool, robocog_cut: bool) -
     ``cut``: Jason's run was stopped at its time limit; then robocog's lines must begin
     with Jason's, or, when robocog was stopped at its own limit too, the shorter of the
     two must begin the other."""
-    exp = {a: [normalize(name, x) for x in ls] for a, ls in split(jason).items()}
-    got = {a: [normalize(name, x) for x in ls] for a, ls in split(robocog).items()}
+    drop = re.compile(DROP[name]) if name in DROP else None
+
+    def norm(lines: list[str]) -> list[str]:
+        out = [normalize(name, x) for x in lines if drop is None or not drop.search(x)]
+        return sorted(set(out)) if name in DISTINCT else out
+
+    exp = {a: norm(ls) for a, ls in split(jason).items()}
+    got = {a: norm(ls) for a, ls in split(robocog).items()}
     exp.pop("RunLocalMAS", None)
     for ag in sorted(exp):
         e, g = exp[ag], got.get(ag, [])
@@ -265,6 +291,8 @@ def check(
         handling.append(NORMALIZE[name][0])
     if name in UNORDERED:
         handling.append(UNORDERED[name])
+    if name in KNOWN:
+        handling.append("known difference: " + KNOWN[name])
     cmd = [*shlex.split(args.robocog), "--timeout", str(args.timeout), mas.name]
     out, err, rc, secs = run(cmd, mas.parent, args.timeout + 10)
     res.robocog_seconds, res.robocog_exit = round(secs, 2), rc
@@ -321,7 +349,8 @@ def check(
         diffs.append(d)
     res.handling = "; ".join(handling)
     if diffs:
-        res.state, res.detail = "differs", diffs[0]
+        res.state = "differs (known)" if name in KNOWN else "differs"
+        res.detail = diffs[0]
     else:
         res.state, res.detail = "matches", f"{res.robocog_lines} lines"
     return res, raw
