@@ -148,3 +148,28 @@ def test_directory_facilitator_clone_and_agents_made_at_run_time(tmp_path: Path)
     )
     assert [x for x in out if x.startswith("[c]")] == ["[c] [p]", "[c] []"]
     assert "carl" not in system.agents and "bob" in system.agents
+
+
+def test_signal_idle_events_and_stop_with_a_deadline(tmp_path: Path) -> None:
+    # Jason 3.3 (jason-agent idle.mas2j) prints for w: sleeping, awake, got1s, sleeping,
+    # awake, got2s (what follows .stopMAS(T) races with the shutdown there)
+    (tmp_path / "w.asl").write_text(
+        "+jag_sleeping <- .print(sleeping).\n+jag_awaking <- .print(awake).\n"
+        "+ping(N)[source(A)] <- .print(got, N, A).\n",
+        encoding="utf-8",
+    )
+    (tmp_path / "s.asl").write_text(
+        "!go.\n+!go <- .wait(100); .send(w, signal, ping(1)); .wait(100); "
+        ".send(w, signal, ping(2)); .wait(100); .stopMAS(60000).\n"
+        "+jag_shutting_down(T) <- .print(bye, T).\n",
+        encoding="utf-8",
+    )
+    mas = tmp_path / "idle.mas2j"
+    mas.write_text("MAS idle {\n agents: w; s;\n}\n", encoding="utf-8")
+    out: list[str] = []
+    system = run_files([mas], lambda ag, line: out.append(f"[{ag}] {line}"))
+    w = [x[4:] for x in out if x.startswith("[w]")]
+    assert w[:6] == ["sleeping", "awake", "got1s", "sleeping", "awake", "got2s"]
+    assert "[s] bye60000" in out
+    assert system.clock < 30000  # handled: the system did not wait out the deadline
+    assert not system.agents["w"].believes("ping(1)")  # a signal adds no belief

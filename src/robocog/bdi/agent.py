@@ -100,6 +100,11 @@ def _as_literal(x: str | Literal) -> Literal:
     return _parse_cached(x) if isinstance(x, str) else x
 
 
+#: Jason's idle events (see Agent._jag_events)
+_JAG_SLEEPING = P.Trigger("+", P.BELIEF, Literal("jag_sleeping"))
+_JAG_AWAKING = P.Trigger("+", P.BELIEF, Literal("jag_awaking"))
+
+
 class Agent:
     """An AgentSpeak agent: beliefs, plans, events and intentions, and its cycle."""
 
@@ -138,6 +143,9 @@ class Agent:
         self._waiting_actions: list[tuple[ActionHandle, Intention]] = []
         self._timers: list[tuple[float, int, Intention]] = []
         self._timer_seq = 0
+        self._jag_version = -1
+        self._jag = False
+        self._sleeping = False
         #: the timer each waiting intention waits on (by intention id), so that the
         #: timer of a wait it no longer waits on is ignored
         self._timer_of: dict[int, int] = {}
@@ -400,11 +408,54 @@ class Agent:
             return  # it would be discarded when selected, without using a cycle
         self.C.events.append(ev)
 
+    # ---- Jason's idle events: +jag_sleeping when the agent has nothing to do, then
+    # +jag_awaking when news comes (for agents with plans for them)
+    def _jag_plans(self) -> bool:
+        pl = self.pl
+        if self._jag_version != pl.version:
+            self._jag_version = pl.version
+            self._jag = pl.has_candidate(_JAG_SLEEPING) or pl.has_candidate(_JAG_AWAKING)
+        return self._jag
+
+    @property
+    def sleeping(self) -> bool:
+        """True while the agent is idle in Jason's sense (after ``+jag_sleeping``)."""
+        return self._sleeping
+
+    def _can_sleep(self) -> bool:
+        C = self.C
+        return not (C.events or C.running or self._feedback or self.mailbox)
+
+    def _jag_events(self) -> None:
+        if self._can_sleep():
+            if not self._sleeping:
+                self._sleeping = True
+                if self.pl.has_candidate(_JAG_SLEEPING):
+                    self.C.events.append(Event(_JAG_SLEEPING, None))
+            return
+        if not self._sleeping:
+            return
+        awake = bool(self.mailbox)
+        if not awake:
+            for ev in self.C.events:
+                i = ev.intention
+                if ev.trigger != _JAG_SLEEPING or (
+                    i is not None and any(im.trigger == _JAG_SLEEPING for im in i.stack)
+                ):
+                    awake = True
+                    break
+        if awake:
+            self._sleeping = False
+            if self.pl.has_candidate(_JAG_AWAKING):
+                self.C.events.append(Event(_JAG_AWAKING, None))
+
     def is_idle(self) -> bool:
         """Nothing to do now: no event, no runnable intention, no news to take in."""
         C = self.C
         if C.events or C.running or self._feedback or self.mailbox or self._percepts_dirty:
             return False
+        if not self._sleeping and self._jag_plans():
+            return False  # it has +jag_sleeping to post first
         if C.atomic_intention is not None or C.atomic_event is not None:
             return False
         for h, _i in self._waiting_actions:
@@ -504,6 +555,8 @@ class Agent:
         # ---- sense
         if self._percepts_dirty:
             self._buf()
+        if self._jag_plans():
+            self._jag_events()
         if self.mailbox:
             self._process_message(self.mailbox.popleft())
         if self._timers and self._timers[0][0] <= self.clock:

@@ -43,6 +43,8 @@ class MultiAgentSystem:
         #: so run() need not ask every awake agent whether it is idle
         self._busy = False
         self._env_version: int | None = None
+        #: when ``.stopMAS(T)`` ends the run (clock milliseconds)
+        self._stop_at: float | None = None
         #: the directory facilitator: (agent, service, type) in registration order
         self._df: dict[tuple, None] = {}
         self._df_subs: list[tuple] = []
@@ -56,6 +58,20 @@ class MultiAgentSystem:
         self._place[agent.name] = len(self._place)
         self._awake[agent.name] = self._place[agent.name]
         return agent
+
+    def shut_down(self, deadline_ms: float) -> None:
+        """``.stopMAS(T)``: every agent that is not asleep gets ``+jag_shutting_down(T)``;
+        the system stops when those are handled (no intention left for them and no
+        other work but timers) or after T milliseconds."""
+        from robocog.bdi.circumstance import Event
+        from robocog.bdi.plans import BELIEF, Trigger
+
+        trig = Trigger("+", BELIEF, Literal("jag_shutting_down", (deadline_ms,)))
+        for ag in list(self.agents.values()):
+            if not ag.sleeping:
+                ag.post(Event(trig, None))
+                self.wake(ag)
+        self._stop_at = self.clock + deadline_ms
 
     def remove(self, name: str) -> Agent | None:
         """Take the agent named ``name`` out of the system (``.kill_agent``)."""
@@ -186,6 +202,8 @@ class MultiAgentSystem:
         while not self.stopped and (max_rounds is None or n < max_rounds):
             if real_time:
                 self.clock = base + (mono() - t0) * 1000.0
+            if self._stop_at is not None and (self.clock >= self._stop_at or self.is_idle()):
+                break  # .stopMAS(T): shutting down handled, or its time is up
             if self._busy:
                 self._busy = False
             elif self.is_idle():

@@ -266,6 +266,10 @@ def handle_message(ag: Agent, msg: Message) -> None:
     elif perf == "achieve":
         if content.__class__ is Literal:
             ag.post(Event(P.Trigger("+", P.ACHIEVE, _with_sender(content, sender)), None))
+    elif perf == "signal":
+        # an event +content[source(sender)], no belief added (Jason's signal)
+        if content.__class__ is Literal:
+            ag.post(Event(P.Trigger("+", P.BELIEF, _with_sender(content, sender)), None))
     elif perf == "unachieve":
         if content.__class__ is Literal:
             ag.drop_goal(content, "drop")

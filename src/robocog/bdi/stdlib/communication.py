@@ -49,6 +49,12 @@ def _perceive(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
 
 @internal("stopMAS")
 def _stop_mas(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Any:
+    """``.stopMAS``: the system stops; ``.stopMAS(T)``: the agents that are not asleep
+    get ``+jag_shutting_down(T)`` and T milliseconds to handle it, as in Jason."""
+    deadline = resolve(args[0], s) if args else 0
+    if ag.mas is not None and isinstance(deadline, (int, float)) and deadline > 0:
+        ag.mas.shut_down(deadline)
+        return True
     if ag.mas is not None:
         ag.mas.stopped = True
     for i in ag.C.intentions():
