@@ -173,3 +173,26 @@ def test_signal_idle_events_and_stop_with_a_deadline(tmp_path: Path) -> None:
     assert "[s] bye60000" in out
     assert system.clock < 30000  # handled: the system did not wait out the deadline
     assert not system.agents["w"].believes("ping(1)")  # a signal adds no belief
+
+
+def test_rule_terms_told_added_and_listed(tmp_path: Path) -> None:
+    # Jason 3.3 (jason-agent rules.mas2j): [r] [{ ok :- (p & q) }], [s] [{ big(V) :-
+    # (V > 10) }], [r] yes
+    (tmp_path / "s.asl").write_text(
+        "big(V) :- V > 10.\n!go.\n"
+        "+!go <- .send(r, tellRule, [{ok :- p & q}]); .wait(100); .send(r, achieve, check);\n"
+        "        .relevant_rules(big(_), L); .print(L).\n",
+        encoding="utf-8",
+    )
+    (tmp_path / "r.asl").write_text(
+        "p. q.\n+!kqml_received(A, tellRule, Rules, _) <- "
+        "for (.member(R, Rules)) { +R[source(A)] }; .relevant_rules(_, LR); .print(LR).\n"
+        "+!check : ok <- .print(yes).\n+!check <- .print(no).\n",
+        encoding="utf-8",
+    )
+    mas = tmp_path / "rules.mas2j"
+    mas.write_text("MAS rules {\n agents: s; r;\n}\n", encoding="utf-8")
+    out: list[str] = []
+    run_files([mas], lambda ag, line: out.append(f"[{ag}] {line}"))
+    assert [x for x in out if x.startswith("[r]")] == ["[r] [{ ok :- (p & q) }]", "[r] yes"]
+    assert [x for x in out if x.startswith("[s]")] == ["[s] [{ big(V) :- (V > 10) }]"]

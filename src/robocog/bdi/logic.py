@@ -431,7 +431,7 @@ def _internal(agent: Agent, lit: Literal, s: dict, trail: list) -> Iterator[None
 #: internal actions of Jason 3.3's standard library that robocog does not have
 NOT_SUPPORTED = frozenset(
     {
-        ".relevant_rules", ".list_rules",
+        ".list_rules",
         ".save_agent", ".at", ".print_unifier",
         ".verbose", ".add_nested_source", ".current_intention", ".intention", ".signal",
     }

@@ -34,6 +34,7 @@ from robocog.bdi.terms import (
     Or,
     PlanTerm,
     Rel,
+    RuleTerm,
     Term,
     Var,
     sort_annots,
@@ -378,6 +379,9 @@ class _Builder(Transformer):
         ctx = f" : {term_str(context)}" if context is not None else ""
         steps = "; ".join(repr(st) for st in P.chain_steps(body)) if body is not None else ""
         return PlanTerm(plan, f"{lab}{trigger!r}{ctx}" + (f" <- {steps}" if steps else ""))
+
+    def rule_term(self, items: list) -> RuleTerm:
+        return RuleTerm(items[0], items[1])
 
     def body_term(self, items: list) -> Body:
         return Body(tuple(P.chain_steps(items[0])))

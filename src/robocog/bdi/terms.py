@@ -410,6 +410,31 @@ class PlanTerm:
         return term_str(self)
 
 
+class RuleTerm:
+    """A rule written as a term, ``{ a :- b & c }``: what ``tellRule`` sends,
+    ``.relevant_rules`` gives and ``+R`` adds to the belief base."""
+
+    __slots__ = ("head", "body")
+    ground = False
+
+    def __init__(self, head: Any, body: Any) -> None:
+        self.head = head
+        self.body = body
+
+    def __eq__(self, other: object) -> bool:
+        return (
+            other.__class__ is RuleTerm
+            and self.head == other.head  # type: ignore[attr-defined]
+            and self.body == other.body  # type: ignore[attr-defined]
+        )
+
+    def __hash__(self) -> int:
+        return hash(("rule", term_str(self)))
+
+    def __repr__(self) -> str:
+        return term_str(self)
+
+
 def is_ground(t: Term) -> bool:
     """True if ``t`` contains no variables (and no unevaluated expression)."""
     c = t.__class__
@@ -754,6 +779,12 @@ def _write(t: Term, out: list[str]) -> None:
         out.append("{ " + "; ".join(str(s) for s in t.steps) + " }")
     elif c is PlanTerm:
         out.append("{ " + t.text + " }")
+    elif c is RuleTerm:
+        out.append("{ ")
+        _write(t.head, out)
+        out.append(" :- ")
+        _write(t.body, out)
+        out.append(" }")
     else:
         out.append(str(t))
 

@@ -82,6 +82,21 @@ def _plan_label(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
     return unify(args[0], plan_term(ag, plan), s, trail)
 
 
+@internal("relevant_rules")
+def _relevant_rules(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
+    """``.relevant_rules(Head, Rules)``: the rules whose head unifies with ``Head``, as
+    rule terms ``{ head :- body }``, in the order the belief base keeps them."""
+    from robocog.bdi.terms import RuleTerm
+
+    need_args(args, 2, "relevant_rules")
+    pattern = resolve(args[0], s)
+    out = []
+    for rule in ag.bb.rules():
+        if pattern.__class__ is not Literal or unify(pattern, rule.head, {}, []):
+            out.append(RuleTerm(rule.head.without_annots(), rule.body))
+    return unify(args[1], make_list(out), s, trail)
+
+
 @internal("list_plans")
 def _list_plans(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
     """``.list_plans`` (or ``.list_plans({+!g})``): print the plan library, as Jason does,
