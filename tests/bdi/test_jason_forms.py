@@ -8,6 +8,7 @@ program is run through ``robocog agent``.
 from __future__ import annotations
 
 import io
+import re
 from pathlib import Path
 
 import pytest
@@ -196,3 +197,28 @@ def test_rule_terms_told_added_and_listed(tmp_path: Path) -> None:
     run_files([mas], lambda ag, line: out.append(f"[{ag}] {line}"))
     assert [x for x in out if x.startswith("[r]")] == ["[r] [{ ok :- (p & q) }]", "[r] yes"]
     assert [x for x in out if x.startswith("[s]")] == ["[s] [{ big(V) :- (V > 10) }]"]
+
+
+def test_univ_on_a_plan_term_and_running_its_body(tmp_path: Path) -> None:
+    # Jason 3.3: job[source(self),url("file:m.asl")], n(3), step ?n(_22), step .print(3),
+    # 3, step !done(3), finished3, empty
+    src = (
+        "n(3).\n!start.\n"
+        "@job +!work : n(3) <- ?n(X); .print(X); !done(X).\n"
+        "+!done(X) <- .print(finished, X).\n"
+        "+!start <- .relevant_plans({+!work}, [P|_]); P =.. [L, T, C, B]; .print(L); "
+        ".print(C);\n   if (C) { !run(B) }.\n"
+        "+!run({}) <- .print(empty).\n"
+        '+!run({H; R}) <- .print(step, " ", H); H; !run(R).\n'
+    )
+    out = [re.sub(r"_\d+", "_N", x) for x in _run(tmp_path, "m", src)]
+    assert out[0].startswith("[m] job[source(self),url(") and out[0].endswith('m.asl")]')
+    assert out[1:] == [
+        "[m] n(3)",
+        "[m] step ?n(_N)",
+        "[m] step .print(3)",
+        "[m] 3",
+        "[m] step !done(3)",
+        "[m] finished3",
+        "[m] empty",
+    ]

@@ -53,6 +53,7 @@ from robocog.bdi.plans import (
 )
 from robocog.bdi.signals import DONE, SUSPEND
 from robocog.bdi.terms import (
+    Body,
     Literal,
     RuleTerm,
     Var,
@@ -141,6 +142,11 @@ def execute(self: Agent, i: Intention) -> None:
                 remember(step, step.term, s, lit)
             if lit.__class__ is Var:
                 raise ActionError(f"variable {lit.name} has no value", "body_var_without_value")
+            if lit.__class__ is Body:
+                # a body term in a variable (``H`` of ``{H; R}``): its formulas run here
+                im.cur = (step, P.chain(lit.steps, im.cur[1]))
+                self._advance(i)
+                return
             if lit.__class__ is not Literal:
                 raise ActionError(f"{term_str(lit)} is not an action")
             if lit.functor[0] == ".":

@@ -8,11 +8,25 @@ left to right), so an agent is deterministic.
 
 from __future__ import annotations
 
+import itertools
 import operator
 from collections.abc import Callable, Iterator
 from typing import TYPE_CHECKING
 
-from robocog.bdi.terms import NS_SEP, And, Body, Literal, Not, Or, Rel, Term, Var, compare, term_str
+from robocog.bdi.terms import (
+    NS_SEP,
+    And,
+    Body,
+    Literal,
+    Not,
+    Or,
+    PlanTerm,
+    Rel,
+    Term,
+    Var,
+    compare,
+    term_str,
+)
 from robocog.bdi.unifier import EvalError, deref, evaluate, resolve, undo, unify
 
 if TYPE_CHECKING:
@@ -378,10 +392,41 @@ def _equal(a: Term, b: Term, s: dict) -> bool:
 DEFAULT_NS = Literal("default")
 
 
+def _plan_parts(t: PlanTerm) -> Term:
+    """``{@l +!g : c <- b} =.. [L, T, C, B]``: the label as Jason gives it, the trigger
+    (a plan term of the trigger alone), the context (``true`` when there is none) and
+    the body as a body term, with fresh variables shared by the four."""
+    from robocog.bdi import plans as P
+    from robocog.bdi.context import running
+    from robocog.bdi.messages import plan_label
+    from robocog.bdi.terms import Body, make_list
+    from robocog.bdi.unifier import rename, variables
+
+    plan = t.plan
+    agent = running.get()
+    label = plan_label(agent, plan) if agent is not None else (plan.label or Literal("l"))
+    context = plan.context if plan.context is not None else Literal("true")
+    body = Body(tuple(P.chain_steps(plan.body)))
+    trig = plan.trigger
+    found = variables(context, variables(trig.literal))
+    for st in body.steps:
+        if not st.blocks and st.term is not None and not isinstance(st.term, str):
+            variables(st.term, found)
+    mapping = {v: Var(f"_{next(_fresh)}") for v in found if v.name != "_"}
+    lit = rename(trig.literal, mapping)
+    trigger = PlanTerm(P.Plan(P.Trigger(trig.op, trig.kind, lit), None, None), repr(trig))
+    return make_list([label, trigger, rename(context, mapping), rename(body, mapping)])
+
+
+_fresh = itertools.count(20)
+
+
 def _univ(left: Term, right: Term, s: dict, trail: list) -> bool:
     from robocog.bdi.terms import NIL, Cons, iter_list, make_list
 
     left = resolve(left, s)
+    if left.__class__ is PlanTerm:
+        return unify(_plan_parts(left), right, s, trail)
     if left.__class__ is Literal:
         # Jason 3.3: [namespace, functor, args, annotations]; robocog has the default
         # namespace only

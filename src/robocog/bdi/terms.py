@@ -383,11 +383,32 @@ class Not:
 class Body:
     """A plan body written as a term, ``{ +b; !g }``, e.g. the argument of ``.wait``."""
 
-    __slots__ = ("steps",)
+    __slots__ = ("steps", "bare")
     ground = False
 
-    def __init__(self, steps: tuple) -> None:
+    def __init__(self, steps: tuple, bare: bool = False) -> None:
         self.steps = steps
+        #: one formula taken out of a body (``H`` of ``{H; R}``): printed without braces
+        self.bare = bare
+
+    def map_terms(self, fn: Any) -> Body:
+        """The same body with ``fn`` applied to the term of each plain formula (those
+        without blocks of their own: ``if``/``while``/``for`` steps are kept)."""
+        out = []
+        for st in self.steps:
+            if st.blocks or st.term is None or isinstance(st.term, str):
+                out.append(st)
+            else:
+                out.append(st.__class__(st.kind, fn(st.term), st.blocks, st.line, st.state))
+        return Body(tuple(out), self.bare)
+
+    def var_step(self, k: int) -> Var | None:
+        """The variable of step ``k`` when the step is a bare variable (``{H; R}``)."""
+        st = self.steps[k]
+        t = st.term
+        if t.__class__ is Var and not st.blocks and repr(st) == t.name:
+            return t
+        return None
 
     def __repr__(self) -> str:
         return term_str(self)
@@ -776,7 +797,10 @@ def _write(t: Term, out: list[str]) -> None:
         _write(t.arg, out)
         out.append(")")
     elif c is Body:
-        out.append("{ " + "; ".join(str(s) for s in t.steps) + " }")
+        if t.bare:
+            out.append("; ".join(str(s) for s in t.steps))
+        else:
+            out.append("{ " + "; ".join(str(s) for s in t.steps) + " }")
     elif c is PlanTerm:
         out.append("{ " + t.text + " }")
     elif c is RuleTerm:

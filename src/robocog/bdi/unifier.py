@@ -140,6 +140,8 @@ def unify(a: Term, b: Term, s: dict, trail: list) -> bool:
             return cb is str and a == b
         if ca is Nil:
             return cb is Nil
+        if ca is Body:
+            return cb is Body and unify_bodies(a, b, s, trail)
         return a == b
 
 
@@ -350,8 +352,35 @@ def resolve(t: Term, s: dict, fresh: dict | None = None) -> Term:
     if c is Not:
         return Not(resolve(t.arg, s, fresh))
     if c is Body:
-        return t
+        return t.map_terms(lambda x: resolve(x, s, fresh))
     return t
+
+
+def unify_bodies(a: Body, b: Body, s: dict, trail: list) -> bool:
+    """Body terms: step by step, where a bare variable as the last step of one takes
+    the rest of the other and one as a step takes that step (``{H; R}``)."""
+    for x, y in ((a, b), (b, a)):
+        n = len(x.steps)
+        if n and n <= len(y.steps) + 1 and x.var_step(n - 1) is not None and n >= 2:
+            for k in range(n - 1):
+                if k >= len(y.steps) or not _unify_step(x, k, y, k, s, trail):
+                    return False
+            return unify(x.var_step(n - 1), Body(y.steps[n - 1 :]), s, trail)
+    if len(a.steps) != len(b.steps):
+        return False
+    return all(_unify_step(a, k, b, k, s, trail) for k in range(len(a.steps)))
+
+
+def _unify_step(a: Body, i: int, b: Body, j: int, s: dict, trail: list) -> bool:
+    va, vb = a.var_step(i), b.var_step(j)
+    if va is not None:
+        return unify(va, Body((b.steps[j],), bare=True), s, trail)
+    if vb is not None:
+        return unify(vb, Body((a.steps[i],), bare=True), s, trail)
+    x, y = a.steps[i], b.steps[j]
+    if x.kind != y.kind or x.blocks or y.blocks:
+        return x is y
+    return unify(x.term, y.term, s, trail)
 
 
 def _to_int(x: float | int) -> int:
@@ -625,6 +654,8 @@ def rename(t: Term, mapping: dict) -> Term:
         return Or(rename(t.left, mapping), rename(t.right, mapping))
     if c is Not:
         return Not(rename(t.arg, mapping))
+    if c is Body:
+        return t.map_terms(lambda x: rename(x, mapping))
     return t
 
 
