@@ -674,8 +674,9 @@ def _include(
     """The program an ``include`` directive names."""
     m = _INCLUDE.match(body)
     if m is None:
-        name = body.strip().split("(")[0].split()[0] if body.strip() else ""
-        raise ParseError(f"not supported: directive {{ {name} }}", line, column, source)
+        text = " ".join(body.split())
+        shown = text if len(text) <= 60 else text[:57] + "..."
+        raise ParseError(f"not supported: directive {{ {shown} }}", line, column, source)
     if depth >= MAX_INCLUDE_DEPTH:
         raise ParseError(f"includes nested deeper than {MAX_INCLUDE_DEPTH}", line, column, source)
     name = m.group(1).replace('\\"', '"')
