@@ -222,3 +222,18 @@ def test_univ_on_a_plan_term_and_running_its_body(tmp_path: Path) -> None:
         "[m] finished3",
         "[m] empty",
     ]
+
+
+def test_options_selected_by_a_select_option_rule(tmp_path: Path) -> None:
+    # Jason 3.3 prints second2: the rule takes apart each option's plan term and picks
+    # the one whose label is annotated pick (without the rule: first1)
+    rule = (
+        "select__option(E, I, P, U) :- "
+        "P = {@L +!T : C <- B} & L =.. [F, Ts, As] & .member(pick, As).\n"
+    )
+    plans = (
+        "v(1). v(2).\n!g.\n+!g : v(X) <- .print(first, X).\n"
+        "@mine[pick] +!g : v(X) & X > 1 <- .print(second, X).\n"
+    )
+    assert _run(tmp_path, "sel", rule + plans) == ["[sel] second2"]
+    assert _run(tmp_path, "plain", plans) == ["[plain] first1"]

@@ -446,6 +446,11 @@ class BeliefBase:
                 if v.__class__ is Literal:
                     yield v
 
+    def has_rule(self, functor: str, arity: int) -> bool:
+        """True when some rule has the head ``functor/arity``."""
+        bucket = self._index.get((functor, arity, False))
+        return bool(bucket) and any(v.__class__ is StoredRule for v in bucket.values())
+
     def rules(self) -> Iterator[StoredRule]:
         """All rules."""
         for bucket in self._index.values():

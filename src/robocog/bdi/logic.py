@@ -422,7 +422,7 @@ _fresh = itertools.count(20)
 
 
 def _univ(left: Term, right: Term, s: dict, trail: list) -> bool:
-    from robocog.bdi.terms import NIL, Cons, iter_list, make_list
+    from robocog.bdi.terms import NIL, Cons, iter_list, list_items, make_list
 
     left = resolve(left, s)
     if left.__class__ is PlanTerm:
@@ -431,6 +431,11 @@ def _univ(left: Term, right: Term, s: dict, trail: list) -> bool:
         # Jason 3.3: [namespace, functor, args, annotations]; robocog has the default
         # namespace only
         ns, _sep, f = left.functor.rpartition(NS_SEP)
+        shape = list_items(resolve(right, s))
+        if shape is not None and len(shape) == 3 and not ns:
+            # the older form, [functor, args, annotations], which Jason 3.3 still takes
+            parts = make_list([Literal(f), make_list(left.args), make_list(left.annots)])
+            return unify(parts, right, s, trail)
         parts = make_list(
             [
                 Literal(ns) if ns else DEFAULT_NS,

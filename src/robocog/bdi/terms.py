@@ -420,12 +420,14 @@ class PlanTerm:
     :mod:`robocog.bdi.plans`, which sits above this module) and its text as Jason prints
     it."""
 
-    __slots__ = ("plan", "text")
+    __slots__ = ("plan", "text", "bare")
     ground = False
 
-    def __init__(self, plan: Any, text: str) -> None:
+    def __init__(self, plan: Any, text: str, bare: bool = False) -> None:
         self.plan = plan
         self.text = text
+        #: printed without braces (a trigger, or a plan as Jason's option shows it)
+        self.bare = bare
 
     def __repr__(self) -> str:
         return term_str(self)
@@ -802,7 +804,7 @@ def _write(t: Term, out: list[str]) -> None:
         else:
             out.append("{ " + "; ".join(str(s) for s in t.steps) + " }")
     elif c is PlanTerm:
-        out.append("{ " + t.text + " }")
+        out.append(t.text if t.bare else "{ " + t.text + " }")
     elif c is RuleTerm:
         out.append("{ ")
         _write(t.head, out)

@@ -16,6 +16,7 @@ import math
 import random
 import time
 from collections.abc import Iterator
+from typing import Any
 
 from robocog.bdi.context import running
 from robocog.bdi.terms import (
@@ -29,6 +30,7 @@ from robocog.bdi.terms import (
     Nil,
     Not,
     Or,
+    PlanTerm,
     Rel,
     Term,
     Var,
@@ -142,6 +144,8 @@ def unify(a: Term, b: Term, s: dict, trail: list) -> bool:
             return cb is Nil
         if ca is Body:
             return cb is Body and unify_bodies(a, b, s, trail)
+        if ca is PlanTerm:
+            return cb is PlanTerm and (a is b or unify_plans(a, b, s, trail))
         return a == b
 
 
@@ -356,9 +360,45 @@ def resolve(t: Term, s: dict, fresh: dict | None = None) -> Term:
     return t
 
 
+def unify_plans(a: PlanTerm, b: PlanTerm, s: dict, trail: list) -> bool:
+    """Plan terms part by part: label (as Jason gives it), trigger, context (``true``
+    when there is none) and body, so ``P = {@L +!T : C <- B}`` takes a plan apart."""
+    from robocog.bdi.context import running
+    from robocog.bdi.messages import plan_label
+    from robocog.bdi.plans import chain_steps
+
+    pa, pb = a.plan, b.plan
+    ta, tb = pa.trigger, pb.trigger
+    if ta is None or tb is None or ta.op != tb.op or ta.kind != tb.kind:
+        return False
+    agent = running.get()
+
+    def label(p: Any) -> Term | None:
+        if p.label.__class__ is Var or agent is None:
+            return p.label
+        return plan_label(agent, p)
+
+    la, lb = label(pa), label(pb)
+    if (la is None) != (lb is None) or (la is not None and not unify(la, lb, s, trail)):
+        return False
+    if not unify(ta.literal, tb.literal, s, trail):
+        return False
+    ca = pa.context if pa.context is not None else Literal("true")
+    cb = pb.context if pb.context is not None else Literal("true")
+    if not unify(ca, cb, s, trail):
+        return False
+    return unify_bodies(
+        Body(tuple(chain_steps(pa.body))), Body(tuple(chain_steps(pb.body))), s, trail
+    )
+
+
 def unify_bodies(a: Body, b: Body, s: dict, trail: list) -> bool:
     """Body terms: step by step, where a bare variable as the last step of one takes
-    the rest of the other and one as a step takes that step (``{H; R}``)."""
+    the rest of the other and one as a step takes that step (``{H; R}``); a body that
+    is one bare variable (``<- B``) takes the whole of the other."""
+    for x, y in ((a, b), (b, a)):
+        if len(x.steps) == 1 and x.var_step(0) is not None and not x.bare:
+            return unify(x.var_step(0), Body(y.steps), s, trail)
     for x, y in ((a, b), (b, a)):
         n = len(x.steps)
         if n and n <= len(y.steps) + 1 and x.var_step(n - 1) is not None and n >= 2:
@@ -656,7 +696,35 @@ def rename(t: Term, mapping: dict) -> Term:
         return Not(rename(t.arg, mapping))
     if c is Body:
         return t.map_terms(lambda x: rename(x, mapping))
+    if c is PlanTerm:
+        return _rename_plan(t, mapping)
     return t
+
+
+def _rename_plan(t: PlanTerm, mapping: dict) -> PlanTerm:
+    """A plan term whose variables are renamed as ``rename`` does (a plan term in a
+    rule's body shares the rule's variables)."""
+    from robocog.bdi import plans as P
+
+    p = t.plan
+    trig = p.trigger
+    if trig is not None:
+        trig = P.Trigger(trig.op, trig.kind, rename(trig.literal, mapping))
+    steps = [
+        st
+        if st.blocks or st.term is None or isinstance(st.term, str)
+        else P.Step(st.kind, rename(st.term, mapping), st.blocks, st.line, st.state)
+        for st in P.chain_steps(p.body)
+    ]
+    plan = P.Plan(
+        trig,
+        None if p.context is None else rename(p.context, mapping),
+        P.chain(steps),
+        None if p.label is None else rename(p.label, mapping),
+        p.source,
+        p.line,
+    )
+    return PlanTerm(plan, t.text, t.bare)
 
 
 def variables(t: Term, out: list | None = None) -> list:
