@@ -343,8 +343,16 @@ def resolve_classes(
             if environment is not None:
                 continue  # given by the caller (``--env``)
             cls = _python_class(project, ref, Environment)
-            env = cls()
-            env.init([a.name if isinstance(a, ClassRef) else a for a in ref.args])
+            try:
+                env = cls()
+                env.init([a.name if isinstance(a, ClassRef) else a for a in ref.args])
+            except Exception as exc:  # noqa: BLE001 - the user's environment failed
+                raise ParseError(
+                    f"environment {ref.name}: starting it failed: {exc.__class__.__name__}: {exc}",
+                    ref.line,
+                    ref.column,
+                    str(project.path),
+                ) from None
             environment = env
         elif ref.name not in _JASON_OWN.get(ref.kind, ()):
             raise java_part(project, ref)  # directives, execution control: Java only
