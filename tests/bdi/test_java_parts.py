@@ -158,3 +158,29 @@ def test_the_room_example_runs_with_its_python_environment(capfd: pytest.Capture
         "Agent porter is doing unlock",
         "Agent porter is doing lock",
     ]
+
+
+def test_the_domestic_robot_runs_with_its_python_house(capfd: pytest.CaptureFixture) -> None:
+    # Jason 3.3 with the Java HouseEnv (nogui) starts with these actions; the 100 ms the
+    # Java environment sleeps after each one is kept, so this takes about 1.5 s
+    import threading
+
+    project = Path(__file__).parents[2] / "examples/jason/domestic-robot/domestic_robot.mas2j"
+    mas = build(read_project(project), lambda ag, line: print(f"[{ag}] {line}"))
+    stop = threading.Timer(1.8, lambda: setattr(mas, "stopped", True))
+    stop.start()
+    mas.run(real_time=True)
+    stop.cancel()
+    lines = capfd.readouterr().out.splitlines()
+    robot = [x for x in lines if x.startswith("[robot] doing")]
+    fridge = ["[robot] doing: move_towards(fridge)"] * 3
+    owner = ["[robot] doing: move_towards(owner)"] * 6
+    assert robot[:13] == [
+        *fridge,
+        "[robot] doing: open(fridge)",
+        "[robot] doing: get(beer)",
+        "[robot] doing: close(fridge)",
+        *owner,
+        "[robot] doing: hand_in(beer)",
+    ]
+    assert "[owner] doing: sip(beer)" in lines
