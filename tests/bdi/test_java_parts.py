@@ -163,14 +163,16 @@ def test_the_room_example_runs_with_its_python_environment(capfd: pytest.Capture
 def test_the_domestic_robot_runs_with_its_python_house(capfd: pytest.CaptureFixture) -> None:
     # Jason 3.3 with the Java HouseEnv (nogui) starts with these actions; the 100 ms the
     # Java environment sleeps after each one is kept, so this takes about 1.5 s
-    import threading
+    import time
 
     project = Path(__file__).parents[2] / "examples/jason/domestic-robot/domestic_robot.mas2j"
     mas = build(read_project(project), lambda ag, line: print(f"[{ag}] {line}"))
-    stop = threading.Timer(1.8, lambda: setattr(mas, "stopped", True))
-    stop.start()
-    mas.run(real_time=True)
-    stop.cancel()
+    robot = mas.agents["robot"]
+    give_up = time.monotonic() + 30
+    mas.run(
+        real_time=True,
+        until=lambda: bool(robot.query("consumed(_,_,_,_,_,_,beer)")) or time.monotonic() > give_up,
+    )
     lines = capfd.readouterr().out.splitlines()
     robot = [x for x in lines if x.startswith("[robot] doing")]
     fridge = ["[robot] doing: move_towards(fridge)"] * 3

@@ -186,7 +186,12 @@ class MultiAgentSystem:
                 return False
         return True
 
-    def run(self, max_rounds: int | None = None, real_time: bool = False) -> int:
+    def run(
+        self,
+        max_rounds: int | None = None,
+        real_time: bool = False,
+        until: Callable[[], bool] | None = None,
+    ) -> int:
         """Run rounds until every agent is idle.
 
         ``real_time``: the shared clock of ``.wait``, ``.at``, deadlines and reply
@@ -194,12 +199,15 @@ class MultiAgentSystem:
         the others' clocks; when all are idle the system sleeps until the first timer.
         Otherwise the clock is virtual: it stands still during a round and jumps to the
         next timer when all are idle, so a run is the same on any machine (what
-        reproducible experiments need)."""
+        reproducible experiments need). ``until``: a test made between rounds that ends
+        the run when it is true."""
         n = 0
         mono = time.monotonic
         t0 = mono()
         base = self.clock
         while not self.stopped and (max_rounds is None or n < max_rounds):
+            if until is not None and until():
+                break
             if real_time:
                 self.clock = base + (mono() - t0) * 1000.0
             if self._stop_at is not None and (self.clock >= self._stop_at or self.is_idle()):
@@ -208,6 +216,10 @@ class MultiAgentSystem:
                 self._busy = False
             elif self.is_idle():
                 timers = [t for ag in self.agents.values() if (t := ag.next_timer()) is not None]
+                if not timers and real_time and any(a.has_pending() for a in self.agents.values()):
+                    # an action outcome or a reply is on its way (from another thread)
+                    time.sleep(0.005)
+                    continue
                 if timers and real_time:
                     due = min(timers)
                     if due > self.clock:
