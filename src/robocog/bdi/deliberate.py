@@ -269,14 +269,15 @@ def _option_by_rule(self: Agent, ev: Event) -> Option | None:
                 else repr(st)
                 for st in P.chain_steps(plan.body)
             )
-            head = f"@{term_str(plan_label(self, plan))} {trig.op}{trig.kind}"
+            label = plan_label(self, plan)
+            head = f"@{term_str(label)} {trig.op}{trig.kind}"
             lit = term_str(resolve(plan.trigger.literal, s))
             text = f"{head}{lit}{ctx}" + (f" <- {steps}." if steps else ".")
             bindings = make_list(
                 [Literal("map", (v, resolve(v, s))) for v in s if v.__class__ is Var]
             )
             query = Literal(
-                "select__option", (event, intention, PlanTerm(plan, text, bare=True), bindings)
+                "select__option", (event, intention, PlanTerm(plan, text, True, label), bindings)
             )
             for _ in solve(self, query, {}, []):
                 return plan, s

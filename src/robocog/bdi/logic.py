@@ -396,17 +396,18 @@ def _plan_parts(t: PlanTerm) -> Term:
     """``{@l +!g : c <- b} =.. [L, T, C, B]``: the label as Jason gives it, the trigger
     (a plan term of the trigger alone), the context (``true`` when there is none) and
     the body as a body term, with fresh variables shared by the four."""
-    from robocog.bdi import plans as P
-    from robocog.bdi.context import running
-    from robocog.bdi.messages import plan_label
-    from robocog.bdi.terms import Body, make_list
+    from robocog.bdi.terms import make_list
     from robocog.bdi.unifier import rename, variables
 
     plan = t.plan
-    agent = running.get()
-    label = plan_label(agent, plan) if agent is not None else (plan.label or Literal("l"))
+    label = t.label if t.label is not None else Literal("l")
     context = plan.context if plan.context is not None else Literal("true")
-    body = Body(tuple(P.chain_steps(plan.body)))
+    steps = []
+    chain = plan.body
+    while chain is not None:
+        steps.append(chain[0])
+        chain = chain[1]
+    body = Body(tuple(steps))
     trig = plan.trigger
     found = variables(context, variables(trig.literal))
     for st in body.steps:
@@ -414,7 +415,8 @@ def _plan_parts(t: PlanTerm) -> Term:
             variables(st.term, found)
     mapping = {v: Var(f"_{next(_fresh)}") for v in found if v.name != "_"}
     lit = rename(trig.literal, mapping)
-    trigger = PlanTerm(P.Plan(P.Trigger(trig.op, trig.kind, lit), None, None), repr(trig))
+    only = plan.__class__(trig.__class__(trig.op, trig.kind, lit), None, None)
+    trigger = PlanTerm(only, repr(trig), bare=True)
     return make_list([label, trigger, rename(context, mapping), rename(body, mapping)])
 
 

@@ -273,7 +273,7 @@ def plan_term(ag: Agent, plan: P.Plan) -> PlanTerm:
             names[tok] = f"_{next(_fresh_names)}"
         return names[tok]
 
-    return PlanTerm(plan, f"@{term_str(label)} " + _VAR_OR_STRING.sub(fresh, body))
+    return PlanTerm(plan, f"@{term_str(label)} " + _VAR_OR_STRING.sub(fresh, body), label=label)
 
 
 def handle_message(ag: Agent, msg: Message) -> None:

@@ -388,27 +388,7 @@ class Body:
 
     def __init__(self, steps: tuple, bare: bool = False) -> None:
         self.steps = steps
-        #: one formula taken out of a body (``H`` of ``{H; R}``): printed without braces
-        self.bare = bare
-
-    def map_terms(self, fn: Any) -> Body:
-        """The same body with ``fn`` applied to the term of each plain formula (those
-        without blocks of their own: ``if``/``while``/``for`` steps are kept)."""
-        out = []
-        for st in self.steps:
-            if st.blocks or st.term is None or isinstance(st.term, str):
-                out.append(st)
-            else:
-                out.append(st.__class__(st.kind, fn(st.term), st.blocks, st.line, st.state))
-        return Body(tuple(out), self.bare)
-
-    def var_step(self, k: int) -> Var | None:
-        """The variable of step ``k`` when the step is a bare variable (``{H; R}``)."""
-        st = self.steps[k]
-        t = st.term
-        if t.__class__ is Var and not st.blocks and repr(st) == t.name:
-            return t
-        return None
+        self.bare = bare  #: one formula out of a body (``H`` of ``{H; R}``): no braces
 
     def __repr__(self) -> str:
         return term_str(self)
@@ -420,22 +400,22 @@ class PlanTerm:
     :mod:`robocog.bdi.plans`, which sits above this module) and its text as Jason prints
     it."""
 
-    __slots__ = ("plan", "text", "bare")
+    __slots__ = ("plan", "text", "bare", "label")
     ground = False
 
-    def __init__(self, plan: Any, text: str, bare: bool = False) -> None:
+    def __init__(self, plan: Any, text: str, bare: bool = False, label: Any = None) -> None:
         self.plan = plan
         self.text = text
-        #: printed without braces (a trigger, or a plan as Jason's option shows it)
-        self.bare = bare
+        self.bare = bare  #: printed without braces (a trigger, an option's plan)
+        #: the label as Jason gives it (``p__1[source(self),url(...)]``), or the plan's
+        self.label = label if label is not None else getattr(plan, "label", None)
 
     def __repr__(self) -> str:
         return term_str(self)
 
 
 class RuleTerm:
-    """A rule written as a term, ``{ a :- b & c }``: what ``tellRule`` sends,
-    ``.relevant_rules`` gives and ``+R`` adds to the belief base."""
+    """A rule as a term, ``{ a :- b & c }`` (``tellRule``, ``.relevant_rules``, ``+R``)."""
 
     __slots__ = ("head", "body")
     ground = False
@@ -445,11 +425,7 @@ class RuleTerm:
         self.body = body
 
     def __eq__(self, other: object) -> bool:
-        return (
-            other.__class__ is RuleTerm
-            and self.head == other.head  # type: ignore[attr-defined]
-            and self.body == other.body  # type: ignore[attr-defined]
-        )
+        return isinstance(other, RuleTerm) and (self.head, self.body) == (other.head, other.body)
 
     def __hash__(self) -> int:
         return hash(("rule", term_str(self)))

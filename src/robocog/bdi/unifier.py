@@ -356,29 +356,55 @@ def resolve(t: Term, s: dict, fresh: dict | None = None) -> Term:
     if c is Not:
         return Not(resolve(t.arg, s, fresh))
     if c is Body:
-        return t.map_terms(lambda x: resolve(x, s, fresh))
+        return map_body(t, lambda x: resolve(x, s, fresh))
     return t
+
+
+def map_body(t: Body, fn: Any) -> Body:
+    """The same body with ``fn`` applied to the term of each plain formula (those
+    without blocks of their own: ``if``/``while``/``for`` steps are kept)."""
+    out = []
+    for st in t.steps:
+        if st.blocks or st.term is None or isinstance(st.term, str):
+            out.append(st)
+        else:
+            out.append(st.__class__(st.kind, fn(st.term), st.blocks, st.line, st.state))
+    return Body(tuple(out), t.bare)
+
+
+def var_step(t: Body, k: int) -> Var | None:
+    """The variable of step ``k`` of ``t`` when the step is a bare variable (``{H; R}``)."""
+    st = t.steps[k]
+    v = st.term
+    if v.__class__ is Var and not st.blocks and repr(st) == v.name:
+        return v
+    return None
+
+
+def _steps(chain: Any) -> list:
+    """The steps of a body chain (nested ``(step, rest)`` pairs)."""
+    out = []
+    while chain is not None:
+        out.append(chain[0])
+        chain = chain[1]
+    return out
+
+
+def _chain(steps: list) -> Any:
+    out = None
+    for st in reversed(steps):
+        out = (st, out)
+    return out
 
 
 def unify_plans(a: PlanTerm, b: PlanTerm, s: dict, trail: list) -> bool:
     """Plan terms part by part: label (as Jason gives it), trigger, context (``true``
     when there is none) and body, so ``P = {@L +!T : C <- B}`` takes a plan apart."""
-    from robocog.bdi.context import running
-    from robocog.bdi.messages import plan_label
-    from robocog.bdi.plans import chain_steps
-
     pa, pb = a.plan, b.plan
     ta, tb = pa.trigger, pb.trigger
     if ta is None or tb is None or ta.op != tb.op or ta.kind != tb.kind:
         return False
-    agent = running.get()
-
-    def label(p: Any) -> Term | None:
-        if p.label.__class__ is Var or agent is None:
-            return p.label
-        return plan_label(agent, p)
-
-    la, lb = label(pa), label(pb)
+    la, lb = a.label, b.label
     if (la is None) != (lb is None) or (la is not None and not unify(la, lb, s, trail)):
         return False
     if not unify(ta.literal, tb.literal, s, trail):
@@ -387,9 +413,7 @@ def unify_plans(a: PlanTerm, b: PlanTerm, s: dict, trail: list) -> bool:
     cb = pb.context if pb.context is not None else Literal("true")
     if not unify(ca, cb, s, trail):
         return False
-    return unify_bodies(
-        Body(tuple(chain_steps(pa.body))), Body(tuple(chain_steps(pb.body))), s, trail
-    )
+    return unify_bodies(Body(tuple(_steps(pa.body))), Body(tuple(_steps(pb.body))), s, trail)
 
 
 def unify_bodies(a: Body, b: Body, s: dict, trail: list) -> bool:
@@ -397,22 +421,22 @@ def unify_bodies(a: Body, b: Body, s: dict, trail: list) -> bool:
     the rest of the other and one as a step takes that step (``{H; R}``); a body that
     is one bare variable (``<- B``) takes the whole of the other."""
     for x, y in ((a, b), (b, a)):
-        if len(x.steps) == 1 and x.var_step(0) is not None and not x.bare:
-            return unify(x.var_step(0), Body(y.steps), s, trail)
+        if len(x.steps) == 1 and var_step(x, 0) is not None and not x.bare:
+            return unify(var_step(x, 0), Body(y.steps), s, trail)
     for x, y in ((a, b), (b, a)):
         n = len(x.steps)
-        if n and n <= len(y.steps) + 1 and x.var_step(n - 1) is not None and n >= 2:
+        if n and n <= len(y.steps) + 1 and var_step(x, n - 1) is not None and n >= 2:
             for k in range(n - 1):
                 if k >= len(y.steps) or not _unify_step(x, k, y, k, s, trail):
                     return False
-            return unify(x.var_step(n - 1), Body(y.steps[n - 1 :]), s, trail)
+            return unify(var_step(x, n - 1), Body(y.steps[n - 1 :]), s, trail)
     if len(a.steps) != len(b.steps):
         return False
     return all(_unify_step(a, k, b, k, s, trail) for k in range(len(a.steps)))
 
 
 def _unify_step(a: Body, i: int, b: Body, j: int, s: dict, trail: list) -> bool:
-    va, vb = a.var_step(i), b.var_step(j)
+    va, vb = var_step(a, i), var_step(b, j)
     if va is not None:
         return unify(va, Body((b.steps[j],), bare=True), s, trail)
     if vb is not None:
@@ -695,7 +719,7 @@ def rename(t: Term, mapping: dict) -> Term:
     if c is Not:
         return Not(rename(t.arg, mapping))
     if c is Body:
-        return t.map_terms(lambda x: rename(x, mapping))
+        return map_body(t, lambda x: rename(x, mapping))
     if c is PlanTerm:
         return _rename_plan(t, mapping)
     return t
@@ -704,27 +728,26 @@ def rename(t: Term, mapping: dict) -> Term:
 def _rename_plan(t: PlanTerm, mapping: dict) -> PlanTerm:
     """A plan term whose variables are renamed as ``rename`` does (a plan term in a
     rule's body shares the rule's variables)."""
-    from robocog.bdi import plans as P
-
     p = t.plan
     trig = p.trigger
     if trig is not None:
-        trig = P.Trigger(trig.op, trig.kind, rename(trig.literal, mapping))
+        trig = trig.__class__(trig.op, trig.kind, rename(trig.literal, mapping))
     steps = [
         st
         if st.blocks or st.term is None or isinstance(st.term, str)
-        else P.Step(st.kind, rename(st.term, mapping), st.blocks, st.line, st.state)
-        for st in P.chain_steps(p.body)
+        else st.__class__(st.kind, rename(st.term, mapping), st.blocks, st.line, st.state)
+        for st in _steps(p.body)
     ]
-    plan = P.Plan(
+    plan = p.__class__(
         trig,
         None if p.context is None else rename(p.context, mapping),
-        P.chain(steps),
+        _chain(steps),
         None if p.label is None else rename(p.label, mapping),
         p.source,
         p.line,
     )
-    return PlanTerm(plan, t.text, t.bare)
+    label = None if t.label is None else rename(t.label, mapping)
+    return PlanTerm(plan, t.text, t.bare, label)
 
 
 def variables(t: Term, out: list | None = None) -> list:
