@@ -408,17 +408,27 @@ def build(
             else:
                 _bb_keys(project, ref, keys, notes if notes is not None else [])
         for name in names:
-            agent = agent_class(
-                text, name, file=str(source), printer=printer, asl_path=[str(d) for d in search]
-            )
+            try:
+                agent = agent_class(
+                    text, name, file=str(source), printer=printer, asl_path=[str(d) for d in search]
+                )
+                if arch_class is not None:
+                    agent.arch = arch_class(agent)
+            except ParseError:
+                raise
+            except Exception as exc:  # noqa: BLE001 - the user's agent class failed
+                raise ParseError(
+                    f"agent {name}: making it failed: {exc.__class__.__name__}: {exc}",
+                    decl.line,
+                    decl.column,
+                    str(project.path),
+                ) from None
             try:  # Jason names a program relative to the project: file:a.asl
                 agent.url = f"file:{source.relative_to(folder)}"
             except ValueError:
                 pass
             if keys:
                 agent.bb.unique_keys = keys
-            if arch_class is not None:
-                agent.arch = arch_class(agent)
             _load_libraries(project, agent, source)
             for belief in _split_top(str(decl.options.get("beliefs", ""))):
                 agent.add_belief(parse_literal(belief))
