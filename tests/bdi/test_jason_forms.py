@@ -237,3 +237,9 @@ def test_options_selected_by_a_select_option_rule(tmp_path: Path) -> None:
     )
     assert _run(tmp_path, "sel", rule + plans) == ["[sel] second2"]
     assert _run(tmp_path, "plain", plans) == ["[plain] first1"]
+
+
+def test_univ_on_a_rule_term_takes_its_head(tmp_path: Path) -> None:
+    # Jason 3.3 prints [default,a,[X],[]]
+    src = "!g.\n+!g <- R = {a(X) :- b(X) & c}; R =.. L; .print(L).\n"
+    assert _run(tmp_path, "ru", src) == ["[ru] [default,a,[X],[]]"]

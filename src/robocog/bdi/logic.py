@@ -22,6 +22,7 @@ from robocog.bdi.terms import (
     Or,
     PlanTerm,
     Rel,
+    RuleTerm,
     Term,
     Var,
     compare,
@@ -429,6 +430,8 @@ def _univ(left: Term, right: Term, s: dict, trail: list) -> bool:
     left = resolve(left, s)
     if left.__class__ is PlanTerm:
         return unify(_plan_parts(left), right, s, trail)
+    if left.__class__ is RuleTerm:
+        left = left.head  # Jason takes a rule apart as its head
     if left.__class__ is Literal:
         # Jason 3.3: [namespace, functor, args, annotations]; robocog has the default
         # namespace only
