@@ -61,7 +61,15 @@ def process_feedback(self: Agent) -> None:
 
 
 def execute_action(self: Agent, action: Literal) -> Any:
-    """Run an environment action; override to plug in an environment object."""
+    """Run an environment action (through the agent's architecture, if it has one);
+    override to plug in an environment object."""
+    arch = self.arch
+    if arch is not None:
+        return arch.act(action, lambda a: _execute(self, a))
+    return _execute(self, action)
+
+
+def _execute(self: Agent, action: Literal) -> Any:
     entry = self._actions.get(action.functor)
     if entry is None:
         if self.mas is not None and self.mas.environment is not None:

@@ -26,7 +26,9 @@ the agent's methods: :mod:`robocog.bdi.sense`, :mod:`robocog.bdi.deliberate`,
 from __future__ import annotations
 
 import functools
+import heapq
 import sys
+import time
 from collections import deque
 from collections.abc import Callable, Iterable
 from pathlib import Path
@@ -98,11 +100,20 @@ def _as_literal(x: str | Literal) -> Literal:
     return _parse_cached(x) if isinstance(x, str) else x
 
 
+#: Jason's idle events (see Agent._jag_events)
+_JAG_SLEEPING = P.Trigger("+", P.BELIEF, Literal("jag_sleeping"))
+_JAG_AWAKING = P.Trigger("+", P.BELIEF, Literal("jag_awaking"))
+
+
 class Agent:
     """An AgentSpeak agent: beliefs, plans, events and intentions, and its cycle."""
 
     #: Jason's tail-recursion optimisation (on by default, as in Jason)
     tail_recursion = True
+
+    #: an agent architecture (:class:`robocog.bdi.environment.AgentArch`) that sees
+    #: the agent's actions and the messages it sends, or None
+    arch = None
 
     def __init__(
         self,
@@ -132,6 +143,12 @@ class Agent:
         self._waiting_actions: list[tuple[ActionHandle, Intention]] = []
         self._timers: list[tuple[float, int, Intention]] = []
         self._timer_seq = 0
+        self._jag_version = -1
+        self._jag = False
+        self._sleeping = False
+        #: the timer each waiting intention waits on (by intention id), so that the
+        #: timer of a wait it no longer waits on is ignored
+        self._timer_of: dict[int, int] = {}
         self._event_waiters: list[tuple[P.Trigger, Intention, float | None]] = []
         self._formula_waiters: list[tuple[Term, Intention]] = []
         #: intention id -> (variable for the elapsed time, start) of a running .wait
@@ -145,6 +162,8 @@ class Agent:
         self._custom_event = type(self).select_event is not Agent.select_event
         self._custom_intention = type(self).select_intention is not Agent.select_intention
         self.file = file
+        #: the program's name as Jason gives it in ``code_src`` and plan labels
+        self.url = f"file:{file}" if file else ""
         #: folders searched for included files after the including file's own
         self.asl_path = tuple(asl_path)
         if isinstance(source, Program):
@@ -208,8 +227,54 @@ class Agent:
         self._actions[name] = (fn, raw)
 
     def register_internal_action(self, name: str, fn: Callable) -> None:
-        """Add an internal action ``.name``: ``fn(agent, args, s, trail, ctx)``."""
-        self._internal[name if name.startswith(".") else "." + name] = fn
+        """Add an internal action ``.name`` (or ``lib.name``, a library's, kept as it is):
+        ``fn(agent, args, s, trail, ctx)``."""
+        self._internal[name if "." in name else "." + name] = fn
+
+    def library_calls(self) -> list[tuple[str, int]]:
+        """The library internal actions (``mylib.act``) the plans call, with the line of
+        the first call of each, in plan order."""
+        from robocog.bdi.terms import And, Not, Or
+
+        found: dict[str, int] = {}
+
+        def formula(t: object, line: int) -> None:
+            c = t.__class__
+            if c is Literal:
+                f = t.functor
+                if "." in f and not f.startswith(".") and f not in found:
+                    found[f] = line
+            elif c is And or c is Or:
+                formula(t.left, line)
+                formula(t.right, line)
+            elif c is Not:
+                formula(t.arg, line)
+
+        def chain(ch: P.Chain, line: int) -> None:
+            for st in P.chain_steps(ch):
+                at = st.line or line
+                if st.kind in (P.INTERNAL, P.CONSTRAINT, P.TEST_STEP):
+                    formula(st.term, at)
+                elif st.kind == P.IF:
+                    for cond, body in st.blocks:
+                        formula(cond, at)
+                        chain(body, at)
+                    chain(st.state, at)
+                elif st.kind in (P.WHILE, P.FOR):
+                    formula(st.term, at)
+                    for body in st.blocks:
+                        chain(body, at)
+                elif st.kind == P.FORK:
+                    for b in st.blocks:
+                        if b is not None:
+                            chain(b, at)
+
+        for plan in self.pl:
+            if plan.context is not None:
+                formula(plan.context, plan.line)
+            if plan.body is not None:
+                chain(plan.body, plan.line)
+        return list(found.items())
 
     def internal_action(self, name: str) -> Callable | None:
         """The implementation of internal action ``name`` (with its leading dot)."""
@@ -343,11 +408,54 @@ class Agent:
             return  # it would be discarded when selected, without using a cycle
         self.C.events.append(ev)
 
+    # ---- Jason's idle events: +jag_sleeping when the agent has nothing to do, then
+    # +jag_awaking when news comes (for agents with plans for them)
+    def _jag_plans(self) -> bool:
+        pl = self.pl
+        if self._jag_version != pl.version:
+            self._jag_version = pl.version
+            self._jag = pl.has_candidate(_JAG_SLEEPING) or pl.has_candidate(_JAG_AWAKING)
+        return self._jag
+
+    @property
+    def sleeping(self) -> bool:
+        """True while the agent is idle in Jason's sense (after ``+jag_sleeping``)."""
+        return self._sleeping
+
+    def _can_sleep(self) -> bool:
+        C = self.C
+        return not (C.events or C.running or self._feedback or self.mailbox)
+
+    def _jag_events(self) -> None:
+        if self._can_sleep():
+            if not self._sleeping:
+                self._sleeping = True
+                if self.pl.has_candidate(_JAG_SLEEPING):
+                    self.C.events.append(Event(_JAG_SLEEPING, None))
+            return
+        if not self._sleeping:
+            return
+        awake = bool(self.mailbox)
+        if not awake:
+            for ev in self.C.events:
+                i = ev.intention
+                if ev.trigger != _JAG_SLEEPING or (
+                    i is not None and any(im.trigger == _JAG_SLEEPING for im in i.stack)
+                ):
+                    awake = True
+                    break
+        if awake:
+            self._sleeping = False
+            if self.pl.has_candidate(_JAG_AWAKING):
+                self.C.events.append(Event(_JAG_AWAKING, None))
+
     def is_idle(self) -> bool:
         """Nothing to do now: no event, no runnable intention, no news to take in."""
         C = self.C
         if C.events or C.running or self._feedback or self.mailbox or self._percepts_dirty:
             return False
+        if not self._sleeping and self._jag_plans():
+            return False  # it has +jag_sleeping to post first
         if C.atomic_intention is not None or C.atomic_event is not None:
             return False
         for h, _i in self._waiting_actions:
@@ -362,12 +470,25 @@ class Agent:
         return bool(self.C.pending)
 
     def next_timer(self) -> float | None:
-        """When the earliest ``.wait`` ends (virtual milliseconds), if any."""
-        return self._timers[0][0] if self._timers else None
+        """When the earliest ``.wait`` or deadline is due (milliseconds), if any."""
+        timers = self._timers
+        while timers and sense.stale_timer(self, timers[0]):
+            heapq.heappop(timers)
+        return timers[0][0] if timers else None
 
-    def run(self, max_cycles: int | None = None, advance_clock: bool = True) -> int:
-        """Run cycles until idle (skipping virtual time to pending timers); returns cycles."""
+    def run(
+        self, max_cycles: int | None = None, advance_clock: bool = True, real_time: bool = False
+    ) -> int:
+        """Run cycles until idle; returns the cycles run.
+
+        With ``real_time`` the clock of ``.wait`` and deadlines is the wall clock, as in
+        Jason: an idle agent with a timer sleeps until it is due. Otherwise the clock is
+        virtual: it stands still while the agent works and jumps to the next timer when
+        it is idle (``advance_clock``), so a run is the same on any machine."""
         n = 0
+        mono = time.monotonic
+        t0 = mono()
+        base = self.clock
         C = self.C
         events = C.events
         running = C.running
@@ -387,6 +508,8 @@ class Agent:
         next_intention = running.popleft
         now_running = context.running.get
         while n < limit:
+            if real_time:
+                self.clock = base + (mono() - t0) * 1000.0
             if events or running or feedback or C.atomic_intention is not None:
                 n += 1
                 if (
@@ -411,6 +534,11 @@ class Agent:
                     step()
                 continue
             if self.is_idle():
+                if real_time and self._timers:
+                    # sleep until the first timer is due (in short steps, so that
+                    # news from outside is taken in on time)
+                    time.sleep(min(0.05, max(0.0, (self._timers[0][0] - self.clock) / 1000.0)))
+                    continue
                 if advance_clock and self._timers:
                     self.clock = max(self.clock, self._timers[0][0])
                     continue
@@ -427,6 +555,8 @@ class Agent:
         # ---- sense
         if self._percepts_dirty:
             self._buf()
+        if self._jag_plans():
+            self._jag_events()
         if self.mailbox:
             self._process_message(self.mailbox.popleft())
         if self._timers and self._timers[0][0] <= self.clock:
@@ -468,6 +598,7 @@ class Agent:
     _wake_timers = sense.wake_timers
     _resume_wait = sense.resume_wait
     add_timer = sense.add_timer
+    _add_deadline = sense.add_deadline
     wait_event = sense.wait_event
     wait_formula = sense.wait_formula
     _check_formula_waiters = sense.check_formula_waiters

@@ -52,6 +52,9 @@ class BeliefBase:
         self._first: dict[tuple, dict] = {}
         self._mixed: dict[tuple, int] = {}
         self._size = 0
+        #: Jason's ``IndexedBB``: for (functor, arity), the argument positions that are a
+        #: key; a new fact replaces the one with the same key
+        self.unique_keys: dict[tuple[str, int], tuple[int, ...]] | None = None
 
     # ---- the two primitive changes (keep both indexes in step)
     def _put(self, key: tuple, k: object, value: Literal | StoredRule, at_end: bool) -> None:
@@ -103,6 +106,8 @@ class BeliefBase:
     def add(self, lit: Literal, at_end: bool = False) -> Literal | None:
         """Add ``lit``; returns what was added (annotations new to the base) or ``None``."""
         key = (lit.functor, len(lit.args), lit.neg)
+        if self.unique_keys is not None and lit.ground:
+            self._replace_key(key, lit)
         if lit.ground:
             k = lit.args
             bucket = self._index.get(key)
@@ -130,6 +135,21 @@ class BeliefBase:
             k = ("_var", next(_ids))
         self._put(key, k, lit, at_end)
         return lit
+
+    def _replace_key(self, key: tuple, lit: Literal) -> None:
+        positions = self.unique_keys.get((lit.functor, len(lit.args)))
+        bucket = self._index.get(key)
+        if not positions or not bucket:
+            return
+        want = [lit.args[p] for p in positions]
+        for k, old in list(bucket.items()):
+            if (
+                old.__class__ is Literal
+                and old.ground
+                and old.args != lit.args
+                and [old.args[p] for p in positions] == want
+            ):
+                self._del(key, k)
 
     def add_rule(self, rule: Rule | StoredRule, at_end: bool = False) -> None:
         """Add a rule (rules live with the facts of their head's predicate)."""
@@ -425,6 +445,11 @@ class BeliefBase:
             for v in reversed(tuple(bucket.values())):
                 if v.__class__ is Literal:
                     yield v
+
+    def has_rule(self, functor: str, arity: int) -> bool:
+        """True when some rule has the head ``functor/arity``."""
+        bucket = self._index.get((functor, arity, False))
+        return bool(bucket) and any(v.__class__ is StoredRule for v in bucket.values())
 
     def rules(self) -> Iterator[StoredRule]:
         """All rules."""

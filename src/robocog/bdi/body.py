@@ -8,9 +8,11 @@ of the cycle they belong to.
 
 from __future__ import annotations
 
+import itertools
 from typing import TYPE_CHECKING
 
 from robocog.bdi import plans as P
+from robocog.bdi.beliefs import StoredRule
 from robocog.bdi.circumstance import (
     Event,
     Fork,
@@ -51,15 +53,19 @@ from robocog.bdi.plans import (
 )
 from robocog.bdi.signals import DONE, SUSPEND
 from robocog.bdi.terms import (
+    Body,
     Literal,
+    RuleTerm,
     Var,
     term_str,
 )
 from robocog.bdi.unifier import (
     EvalError,
     deref,
+    rename,
     resolve,
     unify,
+    variables,
 )
 
 if TYPE_CHECKING:
@@ -136,6 +142,11 @@ def execute(self: Agent, i: Intention) -> None:
                 remember(step, step.term, s, lit)
             if lit.__class__ is Var:
                 raise ActionError(f"variable {lit.name} has no value", "body_var_without_value")
+            if lit.__class__ is Body:
+                # a body term in a variable (``H`` of ``{H; R}``): its formulas run here
+                im.cur = (step, P.chain(lit.steps, im.cur[1]))
+                self._advance(i)
+                return
             if lit.__class__ is not Literal:
                 raise ActionError(f"{term_str(lit)} is not an action")
             if lit.functor[0] == ".":
@@ -291,7 +302,19 @@ def fork_failure(self: Agent, i: Intention) -> bool:
     return True
 
 
+_rule_vars = itertools.count(40)
+
+
 def add_belief_step(self: Agent, i: Intention, step: P.Step, s: dict) -> None:
+    got = resolve(step.term, s, {})
+    if got.__class__ is RuleTerm:
+        # ``+R`` with R a rule term: the rule joins the belief base (its variables
+        # fresh ones, as a rule that came in a message has in Jason)
+        mapping = {v: Var(f"_{next(_rule_vars)}") for v in variables(got.body, variables(got.head))}
+        head, body = rename(got.head, mapping), rename(got.body, mapping)
+        self.bb.add_rule(StoredRule(head, body), at_end=step.kind == ADD_BEL_END)
+        self._advance(i)
+        return
     lit = resolve(sourced(step), s, {})
     if lit.__class__ is not Literal:
         raise ActionError(f"{term_str(lit)} is not a belief", "body_var_without_value")

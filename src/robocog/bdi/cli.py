@@ -44,6 +44,13 @@ def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--beliefs", action="store_true", help="print the final belief base on stderr"
     )
+    parser.add_argument(
+        "--clock",
+        choices=("real", "virtual"),
+        default="real",
+        help="time of .wait, .at and deadlines: the wall clock, as in Jason (default), or a "
+        "virtual clock that jumps to the next timer (the same run on any machine)",
+    )
 
 
 class _OutOfTime(BaseException):
@@ -66,7 +73,7 @@ def run(args: argparse.Namespace) -> int:
     """Parse, run until idle, and report errors with file, line and column."""
     from robocog.bdi.agent import Agent
     from robocog.bdi.parser import ParseError, read_source
-    from robocog.bdi.project import read_project, run_files
+    from robocog.bdi.project import build, read_project, run_files
 
     paths = [Path(f) for f in args.file]
     for path in paths:
@@ -97,7 +104,7 @@ def run(args: argparse.Namespace) -> int:
             )  # fmt: skip
             if environment is not None:
                 agent.environment = environment
-            cycles = agent.run(args.max_cycles)
+            cycles = agent.run(args.max_cycles, real_time=args.clock == "real")
             agents = [agent]
             cut = args.max_cycles is not None and cycles >= args.max_cycles and not agent.is_idle()
         else:
@@ -105,9 +112,15 @@ def run(args: argparse.Namespace) -> int:
             if project and len(paths) > 1:
                 print("robocog agent: a .mas2j project runs alone", file=sys.stderr)
                 return 2
+            real_time = args.clock == "real"
             if project:
-                read_project(paths[0])  # errors in the project file come first
-            mas = run_files(paths, printer, args.max_cycles, environment)
+                notes: list[str] = []
+                mas = build(read_project(paths[0]), printer, environment, notes)
+                for note in notes:
+                    print(f"robocog agent: {note}", file=sys.stderr)
+                mas.run(args.max_cycles, real_time=real_time)
+            else:
+                mas = run_files(paths, printer, args.max_cycles, environment, real_time=real_time)
             agents = list(mas.agents.values())
             cut = args.max_cycles is not None and not mas.stopped and not mas.is_idle()
     except ParseError as exc:

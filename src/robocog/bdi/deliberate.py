@@ -22,11 +22,14 @@ from robocog.bdi.formulas import (
     propagate,
 )
 from robocog.bdi.plans import (
+    ACHIEVE,
     BELIEF,
 )
 from robocog.bdi.terms import (
     Literal,
+    Var,
     is_ground,
+    term_str,
 )
 from robocog.bdi.unifier import (
     resolve,
@@ -89,8 +92,11 @@ def deliberate(self: Agent, ev: Event) -> bool:
             return True
         self._no_plan(ev, "relevant")
         return True
-    if self._custom_option:
-        option = self.select_option(self.applicable_options(ev))
+    if self._custom_option or self.bb.has_rule("select__option", 4):
+        if self._custom_option:
+            option = self.select_option(self.applicable_options(ev))
+        else:
+            option = _option_by_rule(self, ev)
         if option is None:
             return self._no_option(ev)
         plan, s = option
@@ -132,6 +138,16 @@ def deliberate(self: Agent, ev: Event) -> bool:
             return self._no_option(ev)
     im = new_im(plan, trig, s, plan.body)
     i = ev.intention
+    if trig.kind == ACHIEVE and trig.literal.__class__ is Literal and trig.literal.annots:
+        deadline = _hard_deadline(trig.literal)
+        if deadline is not None:
+            if i is None:
+                i = ev.intention = Intention()
+                i.stack.append(im)
+                self._requeue(i)
+                self._add_deadline(deadline, i, im)
+                return True
+            self._add_deadline(deadline, i, im)
     if i is None:
         i = Intention()
         i.stack.append(im)
@@ -209,3 +225,60 @@ def no_plan(self: Agent, ev: Event, what: str) -> None:
             self._advance(ev.intention)
     elif trig.kind != BELIEF:
         self.warn(f"no {what} plan for {trig!r}")
+
+
+def _hard_deadline(lit: Literal) -> float | None:
+    """The milliseconds of a goal's ``hard_deadline(MS)`` annotation, if it has one."""
+    for a in lit.annots:
+        if (
+            a.__class__ is Literal
+            and a.functor == "hard_deadline"
+            and len(a.args) == 1
+            and isinstance(a.args[0], (int, float))
+        ):
+            return float(a.args[0])
+    return None
+
+
+def _option_by_rule(self: Agent, ev: Event) -> Option | None:
+    """Jason's option selection by a rule: the first applicable option (each solution
+    of each relevant plan's context, in order) for which ``select__option(E, I, P, U)``
+    holds, where E is the event, I the intention (-1 for none), P the plan with the
+    option's bindings and U the bindings."""
+    from robocog.bdi.logic import solve
+    from robocog.bdi.messages import plan_label
+    from robocog.bdi.terms import PlanTerm, make_list
+
+    trig = ev.trigger
+    event = PlanTerm(P.Plan(trig, None, None), repr(trig), bare=True)
+    intention = -1 if ev.intention is None else ev.intention.id
+    for plan in self.pl.candidates(trig):
+        s0: dict = {}
+        trail: list = []
+        if not unify(plan.trigger.literal, trig.literal, s0, trail):
+            continue
+        solutions = [dict(s0)] if plan.context is None else []
+        if plan.context is not None:
+            for _ in solve(self, plan.cond, s0, trail):
+                solutions.append(dict(s0))
+        for s in solutions:
+            ctx = f" : {term_str(resolve(plan.context, s))}" if plan.context is not None else ""
+            steps = "; ".join(
+                repr(P.Step(st.kind, resolve(st.term, s), st.blocks, st.line, st.state))
+                if not st.blocks and st.term is not None and not isinstance(st.term, str)
+                else repr(st)
+                for st in P.chain_steps(plan.body)
+            )
+            label = plan_label(self, plan)
+            head = f"@{term_str(label)} {trig.op}{trig.kind}"
+            lit = term_str(resolve(plan.trigger.literal, s))
+            text = f"{head}{lit}{ctx}" + (f" <- {steps}." if steps else ".")
+            bindings = make_list(
+                [Literal("map", (v, resolve(v, s))) for v in s if v.__class__ is Var]
+            )
+            query = Literal(
+                "select__option", (event, intention, PlanTerm(plan, text, True, label), bindings)
+            )
+            for _ in solve(self, query, {}, []):
+                return plan, s
+    return None

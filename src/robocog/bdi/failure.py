@@ -81,8 +81,8 @@ def annotate_failure(self: Agent, ev: Event, error: str, msg: str, code: Term, l
     if code is not None:
         c = code.without_annots() if code.__class__ is Literal else code
         annots.append(Literal("code", (c,)))
-    if self.file:
-        annots.append(Literal("code_src", (self.file,)))
+    if self.url:
+        annots.append(Literal("code_src", (self.url,)))
     if line:
         annots.append(Literal("code_line", (line,)))
     lit = ev.trigger.literal

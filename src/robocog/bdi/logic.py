@@ -8,11 +8,26 @@ left to right), so an agent is deterministic.
 
 from __future__ import annotations
 
+import itertools
 import operator
 from collections.abc import Callable, Iterator
 from typing import TYPE_CHECKING
 
-from robocog.bdi.terms import NS_SEP, And, Body, Literal, Not, Or, Rel, Term, Var, compare, term_str
+from robocog.bdi.terms import (
+    NS_SEP,
+    And,
+    Body,
+    Literal,
+    Not,
+    Or,
+    PlanTerm,
+    Rel,
+    RuleTerm,
+    Term,
+    Var,
+    compare,
+    term_str,
+)
 from robocog.bdi.unifier import EvalError, deref, evaluate, resolve, undo, unify
 
 if TYPE_CHECKING:
@@ -37,7 +52,8 @@ def solve(agent: Agent, f: Term, s: dict, trail: list) -> Iterator[None]:
             raise ActionError(f"unbound variable {f.name} used as a formula")
     if c is Literal:
         functor = f.functor
-        if functor[0] == ".":
+        if functor[0] == "." or ("." in functor and agent.internal_action(functor) is not None):
+            # Jason's own (``.print``) or a library's (``mylib.act``)
             yield from _internal(agent, f, s, trail)
             return
         if not f.args and not f.neg and not f.annots:
@@ -377,14 +393,54 @@ def _equal(a: Term, b: Term, s: dict) -> bool:
 DEFAULT_NS = Literal("default")
 
 
+def _plan_parts(t: PlanTerm) -> Term:
+    """``{@l +!g : c <- b} =.. [L, T, C, B]``: the label as Jason gives it, the trigger
+    (a plan term of the trigger alone), the context (``true`` when there is none) and
+    the body as a body term, with fresh variables shared by the four."""
+    from robocog.bdi.terms import make_list
+    from robocog.bdi.unifier import rename, variables
+
+    plan = t.plan
+    label = t.label if t.label is not None else Literal("l")
+    context = plan.context if plan.context is not None else Literal("true")
+    steps = []
+    chain = plan.body
+    while chain is not None:
+        steps.append(chain[0])
+        chain = chain[1]
+    body = Body(tuple(steps))
+    trig = plan.trigger
+    found = variables(context, variables(trig.literal))
+    for st in body.steps:
+        if not st.blocks and st.term is not None and not isinstance(st.term, str):
+            variables(st.term, found)
+    mapping = {v: Var(f"_{next(_fresh)}") for v in found if v.name != "_"}
+    lit = rename(trig.literal, mapping)
+    only = plan.__class__(trig.__class__(trig.op, trig.kind, lit), None, None)
+    trigger = PlanTerm(only, repr(trig), bare=True)
+    return make_list([label, trigger, rename(context, mapping), rename(body, mapping)])
+
+
+_fresh = itertools.count(20)
+
+
 def _univ(left: Term, right: Term, s: dict, trail: list) -> bool:
-    from robocog.bdi.terms import NIL, Cons, iter_list, make_list
+    from robocog.bdi.terms import NIL, Cons, iter_list, list_items, make_list
 
     left = resolve(left, s)
+    if left.__class__ is PlanTerm:
+        return unify(_plan_parts(left), right, s, trail)
+    if left.__class__ is RuleTerm:
+        left = left.head  # Jason takes a rule apart as its head
     if left.__class__ is Literal:
         # Jason 3.3: [namespace, functor, args, annotations]; robocog has the default
         # namespace only
         ns, _sep, f = left.functor.rpartition(NS_SEP)
+        shape = list_items(resolve(right, s))
+        if shape is not None and len(shape) == 3 and not ns:
+            # the older form, [functor, args, annotations], which Jason 3.3 still takes
+            parts = make_list([Literal(f), make_list(left.args), make_list(left.annots)])
+            return unify(parts, right, s, trail)
         parts = make_list(
             [
                 Literal(ns) if ns else DEFAULT_NS,
@@ -430,9 +486,8 @@ def _internal(agent: Agent, lit: Literal, s: dict, trail: list) -> Iterator[None
 #: internal actions of Jason 3.3's standard library that robocog does not have
 NOT_SUPPORTED = frozenset(
     {
-        ".relevant_rules", ".list_rules",
-        ".create_agent", ".kill_agent", ".save_agent", ".clone", ".at",
-        ".df_register", ".df_deregister", ".df_search", ".df_subscribe", ".print_unifier",
+        ".list_rules",
+        ".save_agent", ".at", ".print_unifier",
         ".verbose", ".add_nested_source", ".current_intention", ".intention", ".signal",
     }
 )  # fmt: skip

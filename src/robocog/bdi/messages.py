@@ -11,6 +11,7 @@ the agent and the system of agents.
 from __future__ import annotations
 
 import itertools
+import re
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -69,6 +70,14 @@ def _receivers(ag: Agent, to: Term) -> list[str]:
 
 
 def _deliver(ag: Agent, msg: Message) -> None:
+    arch = ag.arch
+    if arch is not None:
+        arch.send(msg, lambda m: _deliver_now(ag, m))
+        return
+    _deliver_now(ag, msg)
+
+
+def _deliver_now(ag: Agent, msg: Message) -> None:
     if ag.mas is not None:
         ag.mas.deliver(msg)
     elif msg.receiver == ag.name:
@@ -132,6 +141,11 @@ def _with_sender(t: Term, sender: str) -> Term:
         others = [a for a in t.annots if not (a.__class__ is Literal and a.functor == "source")]
         nested = Literal("source", (Literal(sender),), sort_annots(olds))
         return t.with_annots([*others, nested])
+    if t.__class__ is PlanTerm and t.text.startswith("@") and "[source(self)" in t.text:
+        # a plan sent by another agent: its label says it comes from the sender
+        head, sep, rest = t.text.partition("[source(self)")
+        if " " not in head:
+            return PlanTerm(t.plan, f"{head}[source({sender}){rest}")
     return t
 
 
@@ -206,12 +220,60 @@ def trigger_of(content: Term) -> P.Trigger | None:
 
 def plan_terms(ag: Agent, trigger: P.Trigger) -> list[PlanTerm]:
     """The agent's plans relevant for ``trigger`` as plan terms (not the default
-    message-handling plans)."""
+    message-handling plans). A trigger without a source gets ``source(_)``, as in
+    Jason, so that ``{+!g(_)}`` finds ``+!g(X)[source(A)]``."""
+    lit = trigger.literal
+    if lit.__class__ is Literal and not any(
+        a.__class__ is Literal and a.functor == "source" for a in lit.annots
+    ):
+        lit = lit.add_annots((Literal("source", (Var("_"),)),))
+        trigger = P.Trigger(trigger.op, trigger.kind, lit)
     return [
-        PlanTerm(p, str(p).rstrip("."))
+        plan_term(ag, p)
         for p in ag.relevant_plans(trigger)
         if p.label is None or not p.label.functor.startswith("kqmlReceived")
     ]
+
+
+_fresh_names = itertools.count(100)
+_VAR_OR_STRING = re.compile(r'"(?:\\.|[^"\\])*"|(?<![\w.])[A-Z_][A-Za-z0-9_]*')
+
+
+def plan_label(ag: Agent, plan: P.Plan) -> Literal:
+    """A plan's label as Jason gives it: ``p__N`` when the program gave none, annotated
+    with where the plan comes from (``source(self)``, ``url("file:a.asl")``)."""
+    label = plan.label
+    if label is None:
+        n = 1 + sum(1 for p in ag.pl if p.label is None and p.order < plan.order)
+        label = Literal(f"p__{n}")
+    if not any(a.__class__ is Literal and a.functor == "source" for a in label.annots):
+        url = ag.url if not plan.source or plan.source == ag.file else f"file:{plan.source}"
+        extra = [SOURCE_SELF] + ([Literal("url", (url,))] if url else [])
+        label = Literal(label.functor, label.args, (*label.annots, *extra), label.neg)
+    return label
+
+
+def plan_term(ag: Agent, plan: P.Plan) -> PlanTerm:
+    """A plan of the library as a term, as Jason gives it: labelled (``@p__N`` when
+    the program gave no label), the label annotated with where the plan comes from
+    (``source(self)``, ``url("file:a.asl")``), and its variables fresh ones (``_N``)."""
+    label = plan_label(ag, plan)
+    body = str(plan).rstrip(".")
+    if plan.label is not None:
+        body = body.split(" ", 1)[1]  # the label, printed again below
+    names: dict[str, str] = {}
+
+    def fresh(m: re.Match) -> str:
+        tok = m.group(0)
+        if tok.startswith('"'):
+            return tok
+        if tok == "_":
+            return f"_{next(_fresh_names)}"  # each ``_`` a variable of its own
+        if tok not in names:
+            names[tok] = f"_{next(_fresh_names)}"
+        return names[tok]
+
+    return PlanTerm(plan, f"@{term_str(label)} " + _VAR_OR_STRING.sub(fresh, body), label=label)
 
 
 def handle_message(ag: Agent, msg: Message) -> None:
@@ -258,6 +320,10 @@ def handle_message(ag: Agent, msg: Message) -> None:
     elif perf == "achieve":
         if content.__class__ is Literal:
             ag.post(Event(P.Trigger("+", P.ACHIEVE, _with_sender(content, sender)), None))
+    elif perf == "signal":
+        # an event +content[source(sender)], no belief added (Jason's signal)
+        if content.__class__ is Literal:
+            ag.post(Event(P.Trigger("+", P.BELIEF, _with_sender(content, sender)), None))
     elif perf == "unachieve":
         if content.__class__ is Literal:
             ag.drop_goal(content, "drop")
@@ -307,12 +373,15 @@ def handle_message(ag: Agent, msg: Message) -> None:
     elif perf == "untellHow":
         for label in list(iter_list(content)) if is_list(content) else [content]:
             name = label.functor if label.__class__ is Literal else str(label).lstrip("@")
-            ag.pl.remove(name)
+            plan = ag.pl.get(name)
+            # only a plan the sender told (its label says source(sender)), as in Jason
+            if plan is not None and source(msg.sender) in plan.label.annots:
+                ag.pl.remove(name)
     elif perf == "tellHow":
         texts = list(iter_list(content)) if is_list(content) else [content]
         for t in texts:
             if t.__class__ is PlanTerm:
-                t = t.text
+                t = _with_sender(t, msg.sender).text
             if t.__class__ is str:
                 try:
                     ag.add_plan(t)

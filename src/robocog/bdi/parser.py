@@ -34,6 +34,7 @@ from robocog.bdi.terms import (
     Or,
     PlanTerm,
     Rel,
+    RuleTerm,
     Term,
     Var,
     sort_annots,
@@ -168,6 +169,9 @@ class _Builder(Transformer):
     def label(self, items: list) -> tuple:
         return ("label", items[0])
 
+    def label_var(self, items: list) -> tuple:
+        return ("label", self._var(str(items[0])))
+
     def context(self, items: list) -> tuple:
         ctx = items[0]
         if ctx.__class__ is Literal and ctx.functor == "true" and not ctx.args:
@@ -248,7 +252,8 @@ class _Builder(Transformer):
         if c is Literal:
             # ``true`` anywhere but first in a plan's body is an environment action,
             # as Jason reads it
-            kind = P.INTERNAL if t.functor.startswith(".") else P.ACTION
+            # ``.print`` and ``mylib.act`` (a library's) are internal actions, as in Jason
+            kind = P.INTERNAL if "." in t.functor else P.ACTION
             return self._step(kind, meta, t)
         if c is Var:
             return self._step(P.ACTION, meta, t)
@@ -374,6 +379,9 @@ class _Builder(Transformer):
         ctx = f" : {term_str(context)}" if context is not None else ""
         steps = "; ".join(repr(st) for st in P.chain_steps(body)) if body is not None else ""
         return PlanTerm(plan, f"{lab}{trigger!r}{ctx}" + (f" <- {steps}" if steps else ""))
+
+    def rule_term(self, items: list) -> RuleTerm:
+        return RuleTerm(items[0], items[1])
 
     def body_term(self, items: list) -> Body:
         return Body(tuple(P.chain_steps(items[0])))
@@ -666,8 +674,9 @@ def _include(
     """The program an ``include`` directive names."""
     m = _INCLUDE.match(body)
     if m is None:
-        name = body.strip().split("(")[0].split()[0] if body.strip() else ""
-        raise ParseError(f"not supported: directive {{ {name} }}", line, column, source)
+        text = " ".join(body.split())
+        shown = text if len(text) <= 60 else text[:57] + "..."
+        raise ParseError(f"not supported: directive {{ {shown} }}", line, column, source)
     if depth >= MAX_INCLUDE_DEPTH:
         raise ParseError(f"includes nested deeper than {MAX_INCLUDE_DEPTH}", line, column, source)
     name = m.group(1).replace('\\"', '"')

@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING
 from robocog.bdi import plans as P
 from robocog.bdi.circumstance import (
     Event,
+    IntendedMeans,
     Intention,
 )
 from robocog.bdi.logic import holds
@@ -65,9 +66,56 @@ def buf(self: Agent) -> None:
 process_message = handle_message
 
 
+class Deadline:
+    """A goal's ``hard_deadline``: when it is due and the goal's plan is still in its
+    intention, the goal fails with ``error(deadline_reached)``, as in Jason."""
+
+    __slots__ = ("intention", "im")
+
+    def __init__(self, intention: Intention, im: IntendedMeans) -> None:
+        self.intention = intention
+        self.im = im
+
+
+def add_deadline(self: Agent, delay_ms: float, i: Intention, im: IntendedMeans) -> None:
+    """Fail the goal of ``im`` in ``i`` unless it is finished within ``delay_ms``."""
+    self._timer_seq += 1
+    heapq.heappush(self._timers, (self.clock + delay_ms, self._timer_seq, Deadline(i, im)))
+
+
+def _deadline_due(self: Agent, d: Deadline) -> None:
+    i, im = d.intention, d.im
+    if i.dropped:
+        return
+    for pos in range(len(i.stack) - 1, -1, -1):
+        if i.stack[pos] is im:
+            break
+    else:
+        return  # the goal was achieved (or dropped) in time
+    del i.stack[pos + 1 :]
+    self._unschedule(i)
+    self.fail_intention(i, "deadline_reached", "hard deadline reached")
+
+
+def stale_timer(self: Agent, entry: tuple) -> bool:
+    """True for a timer nothing waits on any more (dropped from the front of the heap,
+    so that an agent does not stay awake for it)."""
+    _t, seq, i = entry
+    if i.__class__ is Deadline:
+        d = i.intention
+        return d.dropped or all(im is not i.im for im in d.stack)
+    return self._timer_of.get(i.id) != seq or i.dropped
+
+
 def wake_timers(self: Agent) -> None:
     while self._timers and self._timers[0][0] <= self.clock:
-        _t, _seq, i = heapq.heappop(self._timers)
+        _t, seq, i = heapq.heappop(self._timers)
+        if i.__class__ is Deadline:
+            _deadline_due(self, i)
+            continue
+        if self._timer_of.get(i.id) != seq:
+            continue  # a wait the intention no longer waits on (it failed or moved on)
+        del self._timer_of[i.id]
         entry = self.C.pending.pop(i.id, None)
         if entry is None or i.dropped:
             continue
@@ -95,6 +143,7 @@ def resume_wait(self: Agent, i: Intention) -> bool:
 def add_timer(self: Agent, delay_ms: float, i: Intention) -> None:
     """Suspend ``i`` and resume it after ``delay_ms`` (used by ``.wait``)."""
     self._timer_seq += 1
+    self._timer_of[i.id] = self._timer_seq
     heapq.heappush(self._timers, (self.clock + delay_ms, self._timer_seq, i))
     self.C.pending[i.id] = (i, "wait")
 
@@ -106,6 +155,7 @@ def wait_event(self: Agent, trigger: P.Trigger, i: Intention, timeout: float | N
     self.C.pending[i.id] = (i, "wait_event")
     if deadline is not None:
         self._timer_seq += 1
+        self._timer_of[i.id] = self._timer_seq
         heapq.heappush(self._timers, (deadline, self._timer_seq, i))
 
 
@@ -115,6 +165,7 @@ def wait_formula(self: Agent, f: Term, i: Intention, timeout: float | None) -> N
     self.C.pending[i.id] = (i, "wait_formula")
     if timeout is not None:
         self._timer_seq += 1
+        self._timer_of[i.id] = self._timer_seq
         heapq.heappush(self._timers, (self.clock + timeout, self._timer_seq, i))
 
 

@@ -383,11 +383,12 @@ class Not:
 class Body:
     """A plan body written as a term, ``{ +b; !g }``, e.g. the argument of ``.wait``."""
 
-    __slots__ = ("steps",)
+    __slots__ = ("steps", "bare")
     ground = False
 
-    def __init__(self, steps: tuple) -> None:
+    def __init__(self, steps: tuple, bare: bool = False) -> None:
         self.steps = steps
+        self.bare = bare  #: one formula out of a body (``H`` of ``{H; R}``): no braces
 
     def __repr__(self) -> str:
         return term_str(self)
@@ -399,12 +400,35 @@ class PlanTerm:
     :mod:`robocog.bdi.plans`, which sits above this module) and its text as Jason prints
     it."""
 
-    __slots__ = ("plan", "text")
+    __slots__ = ("plan", "text", "bare", "label")
     ground = False
 
-    def __init__(self, plan: Any, text: str) -> None:
+    def __init__(self, plan: Any, text: str, bare: bool = False, label: Any = None) -> None:
         self.plan = plan
         self.text = text
+        self.bare = bare  #: printed without braces (a trigger, an option's plan)
+        #: the label as Jason gives it (``p__1[source(self),url(...)]``), or the plan's
+        self.label = label if label is not None else getattr(plan, "label", None)
+
+    def __repr__(self) -> str:
+        return term_str(self)
+
+
+class RuleTerm:
+    """A rule as a term, ``{ a :- b & c }`` (``tellRule``, ``.relevant_rules``, ``+R``)."""
+
+    __slots__ = ("head", "body")
+    ground = False
+
+    def __init__(self, head: Any, body: Any) -> None:
+        self.head = head
+        self.body = body
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, RuleTerm) and (self.head, self.body) == (other.head, other.body)
+
+    def __hash__(self) -> int:
+        return hash(("rule", term_str(self)))
 
     def __repr__(self) -> str:
         return term_str(self)
@@ -751,9 +775,18 @@ def _write(t: Term, out: list[str]) -> None:
         _write(t.arg, out)
         out.append(")")
     elif c is Body:
-        out.append("{ " + "; ".join(str(s) for s in t.steps) + " }")
+        if t.bare:
+            out.append("; ".join(str(s) for s in t.steps))
+        else:
+            out.append("{ " + "; ".join(str(s) for s in t.steps) + " }")
     elif c is PlanTerm:
-        out.append("{ " + t.text + " }")
+        out.append(t.text if t.bare else "{ " + t.text + " }")
+    elif c is RuleTerm:
+        out.append("{ ")
+        _write(t.head, out)
+        out.append(" :- ")
+        _write(t.body, out)
+        out.append(" }")
     else:
         out.append(str(t))
 

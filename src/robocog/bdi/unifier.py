@@ -16,6 +16,7 @@ import math
 import random
 import time
 from collections.abc import Iterator
+from typing import Any
 
 from robocog.bdi.context import running
 from robocog.bdi.terms import (
@@ -29,6 +30,7 @@ from robocog.bdi.terms import (
     Nil,
     Not,
     Or,
+    PlanTerm,
     Rel,
     Term,
     Var,
@@ -140,6 +142,10 @@ def unify(a: Term, b: Term, s: dict, trail: list) -> bool:
             return cb is str and a == b
         if ca is Nil:
             return cb is Nil
+        if ca is Body:
+            return cb is Body and unify_bodies(a, b, s, trail)
+        if ca is PlanTerm:
+            return cb is PlanTerm and (a is b or unify_plans(a, b, s, trail))
         return a == b
 
 
@@ -350,8 +356,95 @@ def resolve(t: Term, s: dict, fresh: dict | None = None) -> Term:
     if c is Not:
         return Not(resolve(t.arg, s, fresh))
     if c is Body:
-        return t
+        return map_body(t, lambda x: resolve(x, s, fresh))
     return t
+
+
+def map_body(t: Body, fn: Any) -> Body:
+    """The same body with ``fn`` applied to the term of each plain formula (those
+    without blocks of their own: ``if``/``while``/``for`` steps are kept)."""
+    out = []
+    for st in t.steps:
+        if st.blocks or st.term is None or isinstance(st.term, str):
+            out.append(st)
+        else:
+            out.append(st.__class__(st.kind, fn(st.term), st.blocks, st.line, st.state))
+    return Body(tuple(out), t.bare)
+
+
+def var_step(t: Body, k: int) -> Var | None:
+    """The variable of step ``k`` of ``t`` when the step is a bare variable (``{H; R}``)."""
+    st = t.steps[k]
+    v = st.term
+    if v.__class__ is Var and not st.blocks and repr(st) == v.name:
+        return v
+    return None
+
+
+def _steps(chain: Any) -> list:
+    """The steps of a body chain (nested ``(step, rest)`` pairs)."""
+    out = []
+    while chain is not None:
+        out.append(chain[0])
+        chain = chain[1]
+    return out
+
+
+def _chain(steps: list) -> Any:
+    out = None
+    for st in reversed(steps):
+        out = (st, out)
+    return out
+
+
+def unify_plans(a: PlanTerm, b: PlanTerm, s: dict, trail: list) -> bool:
+    """Plan terms part by part: label (as Jason gives it), trigger, context (``true``
+    when there is none) and body, so ``P = {@L +!T : C <- B}`` takes a plan apart."""
+    pa, pb = a.plan, b.plan
+    ta, tb = pa.trigger, pb.trigger
+    if ta is None or tb is None or ta.op != tb.op or ta.kind != tb.kind:
+        return False
+    la, lb = a.label, b.label
+    if (la is None) != (lb is None) or (la is not None and not unify(la, lb, s, trail)):
+        return False
+    if not unify(ta.literal, tb.literal, s, trail):
+        return False
+    ca = pa.context if pa.context is not None else Literal("true")
+    cb = pb.context if pb.context is not None else Literal("true")
+    if not unify(ca, cb, s, trail):
+        return False
+    return unify_bodies(Body(tuple(_steps(pa.body))), Body(tuple(_steps(pb.body))), s, trail)
+
+
+def unify_bodies(a: Body, b: Body, s: dict, trail: list) -> bool:
+    """Body terms: step by step, where a bare variable as the last step of one takes
+    the rest of the other and one as a step takes that step (``{H; R}``); a body that
+    is one bare variable (``<- B``) takes the whole of the other."""
+    for x, y in ((a, b), (b, a)):
+        if len(x.steps) == 1 and var_step(x, 0) is not None and not x.bare:
+            return unify(var_step(x, 0), Body(y.steps), s, trail)
+    for x, y in ((a, b), (b, a)):
+        n = len(x.steps)
+        if n and n <= len(y.steps) + 1 and var_step(x, n - 1) is not None and n >= 2:
+            for k in range(n - 1):
+                if k >= len(y.steps) or not _unify_step(x, k, y, k, s, trail):
+                    return False
+            return unify(var_step(x, n - 1), Body(y.steps[n - 1 :]), s, trail)
+    if len(a.steps) != len(b.steps):
+        return False
+    return all(_unify_step(a, k, b, k, s, trail) for k in range(len(a.steps)))
+
+
+def _unify_step(a: Body, i: int, b: Body, j: int, s: dict, trail: list) -> bool:
+    va, vb = var_step(a, i), var_step(b, j)
+    if va is not None:
+        return unify(va, Body((b.steps[j],), bare=True), s, trail)
+    if vb is not None:
+        return unify(vb, Body((a.steps[i],), bare=True), s, trail)
+    x, y = a.steps[i], b.steps[j]
+    if x.kind != y.kind or x.blocks or y.blocks:
+        return x is y
+    return unify(x.term, y.term, s, trail)
 
 
 def _to_int(x: float | int) -> int:
@@ -625,7 +718,36 @@ def rename(t: Term, mapping: dict) -> Term:
         return Or(rename(t.left, mapping), rename(t.right, mapping))
     if c is Not:
         return Not(rename(t.arg, mapping))
+    if c is Body:
+        return map_body(t, lambda x: rename(x, mapping))
+    if c is PlanTerm:
+        return _rename_plan(t, mapping)
     return t
+
+
+def _rename_plan(t: PlanTerm, mapping: dict) -> PlanTerm:
+    """A plan term whose variables are renamed as ``rename`` does (a plan term in a
+    rule's body shares the rule's variables)."""
+    p = t.plan
+    trig = p.trigger
+    if trig is not None:
+        trig = trig.__class__(trig.op, trig.kind, rename(trig.literal, mapping))
+    steps = [
+        st
+        if st.blocks or st.term is None or isinstance(st.term, str)
+        else st.__class__(st.kind, rename(st.term, mapping), st.blocks, st.line, st.state)
+        for st in _steps(p.body)
+    ]
+    plan = p.__class__(
+        trig,
+        None if p.context is None else rename(p.context, mapping),
+        _chain(steps),
+        None if p.label is None else rename(p.label, mapping),
+        p.source,
+        p.line,
+    )
+    label = None if t.label is None else rename(t.label, mapping)
+    return PlanTerm(plan, t.text, t.bare, label)
 
 
 def variables(t: Term, out: list | None = None) -> list:

@@ -5,6 +5,7 @@
 from __future__ import annotations
 
 import random
+import zlib
 from collections.abc import Iterator
 from typing import TYPE_CHECKING, Any
 
@@ -230,7 +231,8 @@ def _shuffle(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
     items = arg_list(args[0], s, "shuffle")
     rng = getattr(ag, "rng", None)
     if rng is None:
-        rng = ag.rng = random.Random(0)
+        # each agent its own sequence (agents from one program differ), reproducible
+        rng = ag.rng = random.Random(zlib.crc32(ag.name.encode()))
     rng.shuffle(items)
     return bind(make_list(items), args[1], s, trail)
 

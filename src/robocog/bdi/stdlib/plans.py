@@ -60,7 +60,9 @@ def _relevant_plans(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> b
     if not unify(args[1], make_list(plans), s, trail):
         return False
     if len(args) > 2:
-        labels = [p.plan.label for p in plans if p.plan.label is not None]
+        from robocog.bdi.messages import plan_label
+
+        labels = [plan_label(ag, p.plan) for p in plans]
         return unify(args[2], make_list(labels), s, trail)
     return True
 
@@ -68,7 +70,6 @@ def _relevant_plans(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> b
 @internal("plan_label")
 def _plan_label(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
     """``.plan_label(Plan, Label)``: the plan term of the plan labelled ``Label``."""
-    from robocog.bdi.terms import PlanTerm
 
     need_args(args, 2, "plan_label", 2)
     label = resolve(args[1], s)
@@ -76,7 +77,24 @@ def _plan_label(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
     plan = ag.pl.get(name)
     if plan is None:
         return False
-    return unify(args[0], PlanTerm(plan, str(plan).rstrip(".")), s, trail)
+    from robocog.bdi.messages import plan_term
+
+    return unify(args[0], plan_term(ag, plan), s, trail)
+
+
+@internal("relevant_rules")
+def _relevant_rules(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
+    """``.relevant_rules(Head, Rules)``: the rules whose head unifies with ``Head``, as
+    rule terms ``{ head :- body }``, in the order the belief base keeps them."""
+    from robocog.bdi.terms import RuleTerm
+
+    need_args(args, 2, "relevant_rules")
+    pattern = resolve(args[0], s)
+    out = []
+    for rule in ag.bb.rules():
+        if pattern.__class__ is not Literal or unify(pattern, rule.head, {}, []):
+            out.append(RuleTerm(rule.head.without_annots(), rule.body))
+    return unify(args[1], make_list(out), s, trail)
 
 
 @internal("list_plans")
@@ -89,10 +107,15 @@ def _list_plans(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
     need_args(args, 0, "list_plans", 1)
     plans = list(ag.pl)
     if args:
+        from robocog.bdi.messages import plan_terms
+
         trigger = trigger_of(resolve(args[0], s))
         if trigger is None:
             raise ActionError('.list_plans expects a trigger like {+!g} or "+!g"')
-        plans = ag.relevant_plans(trigger)
+        # the plans relevant for the trigger, each printed as Jason prints a plan term
+        for t in plan_terms(ag, trigger):
+            ag.print(t.text + ".")
+        return True
     lines = [""]
     source = None
     for n, p in enumerate(plans, start=1):

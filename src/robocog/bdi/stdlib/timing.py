@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import random
 import time
+import zlib
 from typing import TYPE_CHECKING, Any
 
 from robocog.bdi import plans as P
@@ -98,7 +99,8 @@ def _random(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
     need_args(args, 1, "random", 2)
     rng = getattr(ag, "rng", None)
     if rng is None:
-        rng = ag.rng = random.Random(0)
+        # each agent its own sequence (agents from one program differ), reproducible
+        rng = ag.rng = random.Random(zlib.crc32(ag.name.encode()))
     if len(args) == 2:
         first = resolve(args[0], s)
         if is_list(first):

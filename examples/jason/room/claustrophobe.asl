@@ -1,0 +1,2 @@
+// A locked door is unbearable: ask the porter to open it.
++locked(door) <- .send(porter, achieve, ~locked(door)).
