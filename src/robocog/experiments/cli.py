@@ -60,6 +60,20 @@ def configure_garbage(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument("--json", type=Path, metavar="FILE", help="write the results as JSON")
     parser.add_argument(
+        "--world",
+        choices=("2d", "mujoco"),
+        default="2d",
+        help="2d: the field of probability tables (default); mujoco: the physical field "
+        "(camera, learned detector, lidar, arm; needs the physics extra)",
+    )
+    parser.add_argument(
+        "--detection-frames",
+        type=int,
+        default=300,
+        metavar="N",
+        help="--world mujoco: frames rendered per light to measure Table I (default 300; 0 skips)",
+    )
+    parser.add_argument(
         "--over",
         choices=("process", "ros2"),
         default="process",
@@ -112,16 +126,31 @@ def run_garbage_args(args: argparse.Namespace) -> int:
         return run_garbage_over_ros2(args, specs)
     from robocog.inspector.cli import session
 
+    world = getattr(args, "world", "2d")
+    if world == "mujoco":
+        if args.detection_frames < 0:
+            print("robocog experiment: --detection-frames must be at least 0", file=sys.stderr)
+            return 2
+        try:
+            import robocog.worlds.mujoco_garbage  # noqa: F401
+        except ImportError as exc:
+            print(
+                f"robocog experiment: --world mujoco needs the physics extra ({exc})",
+                file=sys.stderr,
+            )
+            return 2
     with session(args, "robocog experiment garbage") as inspecting:
         result = run_garbage(
             specs,
             runs=args.runs,
             seed=args.seed,
             light=args.light,
-            rounds=args.rounds,
+            rounds=args.rounds if world == "2d" else 0,
             json_path=args.json,
             out=None if args.no_report else args.out,
             watch=inspecting.watcher() if inspecting else None,
+            world=world,
+            detection_frames=getattr(args, "detection_frames", 0),
         )
     return 0 if all(m.ok for m in result.minds.values()) else 1
 
@@ -136,9 +165,12 @@ def run_garbage(
     out: Path | None,
     config_overrides: dict[str, float] | None = None,
     watch: Watch | None = None,
+    world: str = "2d",
+    detection_frames: int = 0,
 ) -> ExperimentResult:
     """Shared by ``experiment garbage`` and ``demo``: run, print the table, write files
-    (``watch`` hooks every loop, for ``--inspect``)."""
+    (``watch`` hooks every loop, for ``--inspect``). ``world="mujoco"`` runs the
+    physical field and measures Table I over ``detection_frames`` renders per light."""
     from rich.console import Console
     from rich.markup import escape
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TimeElapsedColumn
@@ -149,6 +181,23 @@ def run_garbage(
 
     console = Console()
     config = GarbageConfig(light=light, **(config_overrides or {}))  # type: ignore[arg-type]
+    make_world = None
+    detector = None
+    if world == "mujoco":
+        from robocog.experiments.garbage_physics import world_factory
+        from robocog.worlds.physics.trash_detector import load_or_train, model_path
+
+        if not model_path().exists():
+            console.print("training the detector on rendered frames (once per machine)...")
+        detector, report = load_or_train()
+        if report is not None:
+            console.print(
+                escape(
+                    f"detector: recall {report.recall:.1%}, labels {report.label_accuracy:.1%} "
+                    f"on {report.frames} held-out renders"
+                )
+            )
+        make_world = world_factory(detector)
     with Progress(
         "[progress.description]{task.description}",
         BarColumn(),
@@ -166,8 +215,31 @@ def run_garbage(
             rounds=rounds,
             advance=lambda: progress.advance(task),
             watch=watch,
+            make_world=make_world,
         )
+        if world == "mujoco":
+            result.world = "mujoco"
+            if detection_frames > 0:
+                from robocog.experiments.garbage_physics import measure_detection
+
+                frames_task = progress.add_task("Table I frames", total=3 * detection_frames)
+                rates = measure_detection(
+                    detector,
+                    detection_frames,
+                    seed=seed + 1,
+                    camera_range=config.camera_range,
+                    progress=lambda _light, _n, _total: progress.advance(frames_task),
+                )
+                result.extra["detection_rates"] = {k: round(v.rate, 4) for k, v in rates.items()}
+                result.extra["detection"] = {k: v.as_dict() for k, v in rates.items()}
     console.print(summary_table(result))
+    if "detection" in result.extra:
+        console.print("Table I, measured from rendered frames (paper beside):")
+        for light_name, row in result.extra["detection"].items():
+            console.print(
+                f"  {light_name:8} {row['rate']:6.1%}  ({row['detected']}/{row['in_view']} "
+                f"objects in view over {row['frames']} frames)   paper {row['paper']:.0%}"
+            )
     for m in result.minds.values():
         console.print(escape(mind_status(m)))
     acc = result.accumulation

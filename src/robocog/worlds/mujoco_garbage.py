@@ -88,6 +88,7 @@ class PhysicalConfig:
     grasp_reach: float = 0.62  # from the base's centre to the point between the pads
     stand_off: float = 1.0  # where the approach stops to look again
     track_radius: float = 0.6  # detections closer than this on the field are one object
+    camera: fs.CameraModel = field(default_factory=fs.CameraModel)
 
 
 def arm_angles(x: float, z: float, pitch: float = 0.0) -> tuple[float, float, float]:
@@ -206,6 +207,7 @@ class MujocoGarbageField(GarbageField):
             seed=seed,
         )
         self._renderer: mujoco.Renderer | None = None
+        self._noise = np.random.default_rng(seed + 104729)
         self._dt = float(self.model.opt.timestep)
         self._next_scan = 0.0
         self._scan: Scan | None = None
@@ -250,6 +252,20 @@ class MujocoGarbageField(GarbageField):
         ):
             self._joint_ctrl(name, angle)
 
+    def _move_arm(self, x: float, z: float, pitch: float, seconds: float) -> None:
+        """Move the arm to a pose along a smooth joint path of ``seconds`` (a thrown
+        bottle is what a servo jumping to its goal would give)."""
+        names = ("shoulder", "elbow", "wrist")
+        begin = [float(self.data.ctrl[self.model.actuator(n).id]) for n in names]
+        end = arm_angles(x, z, pitch)
+        steps = max(1, int(seconds / (4 * self._dt)))
+        for i in range(1, steps + 1):
+            s = 0.5 - 0.5 * math.cos(math.pi * i / steps)
+            for n, a, b in zip(names, begin, end, strict=True):
+                self._joint_ctrl(n, a + (b - a) * s)
+            self._step(4)
+        self._settle(0.2)
+
     def _set_fingers(self, opening: float) -> None:
         self._joint_ctrl("finger_left", opening)
         self._joint_ctrl("finger_right", opening)
@@ -285,6 +301,10 @@ class MujocoGarbageField(GarbageField):
         self._step(max(1, int(round(seconds / self._dt))))
 
     def _advance(self, seconds: float) -> None:
+        self._settle(seconds)
+
+    def wait(self, seconds: float) -> None:
+        """Let ``seconds`` of simulated time pass with the robot standing still."""
         self._settle(seconds)
 
     def _drive_to(
@@ -360,7 +380,7 @@ class MujocoGarbageField(GarbageField):
         if self._renderer is None:
             self._renderer = mujoco.Renderer(self.model, self.physical.height, self.physical.width)
         self._renderer.update_scene(self.data, camera="camera")
-        image = self._renderer.render()
+        image = self.physical.camera.expose(self._renderer.render(), self._noise)
         self.costs.frames += 1
         self.costs.render_seconds += _time.perf_counter() - t0
         return image
@@ -675,8 +695,7 @@ class MujocoGarbageField(GarbageField):
         aim = track.last
         # 2. arm down, fingers open, then drive the hand around the object
         self._set_fingers(fs.FINGER_OPEN)
-        self._set_arm(pc.grasp_reach, pc.grasp_height, 0.0)
-        self._settle(2.0)
+        self._move_arm(pc.grasp_reach, pc.grasp_height, 0.0, 1.2)
         ex, ey, _ = self.base.estimate
         self._face(math.atan2(aim[1] - ey, aim[0] - ex), tolerance=0.008)
         ex, ey, _ = self.base.estimate
@@ -684,13 +703,12 @@ class MujocoGarbageField(GarbageField):
         if d > pc.grasp_reach:
             k = (d - pc.grasp_reach) / d
             self._drive_to(
-                ex + (aim[0] - ex) * k, ey + (aim[1] - ey) * k, speed=0.12, tolerance=0.015
+                ex + (aim[0] - ex) * k, ey + (aim[1] - ey) * k, speed=0.2, tolerance=0.015
             )
         # 3. close, lift, feel
         self._set_fingers(fs.FINGER_CLOSED)
-        self._settle(1.2)
-        self._set_arm(*CARRY)
-        self._settle(2.0)
+        self._settle(0.8)
+        self._move_arm(*CARRY, 1.2)
         held = self._gripper_holds()
         if held:
             self._holding_track = track
@@ -702,7 +720,7 @@ class MujocoGarbageField(GarbageField):
             self._log("pick", f"{track.instance}: held")
         else:
             self._set_fingers(fs.FINGER_OPEN)
-            self._set_arm(*STOW)
+            self._move_arm(*STOW, 1.0)
             if truth is not None and was_upright and not self._upright(truth):
                 truth.upright = False
                 truth.tipped_at = self.clock
@@ -716,8 +734,6 @@ class MujocoGarbageField(GarbageField):
         # 4. back to where the pick began, facing the same way
         self._back_to(*home)
         self._face(facing)
-        if not outcome.ok:
-            self._settle(1.0)
         if not was_upright:
             self.futile_seconds += self.clock - began
         return outcome
@@ -739,12 +755,10 @@ class MujocoGarbageField(GarbageField):
         if self._holding_track is None:
             self._advance(1.0)
             return Outcome.failure("the gripper is empty")
-        self._set_arm(*TRAY)
-        self._settle(2.0)
+        self._move_arm(*TRAY, 2.0)
         self._set_fingers(fs.FINGER_OPEN)
-        self._settle(1.0)
-        self._set_arm(*STOW)
-        self._settle(1.0)
+        self._settle(0.6)
+        self._move_arm(*STOW, 1.0)
         track = self._holding_track
         self._holding_track = None
         if track in self.tracks:
