@@ -303,6 +303,25 @@ class MujocoGarbageField(GarbageField):
     def _advance(self, seconds: float) -> None:
         self._settle(seconds)
 
+    def drive(self, v: float, w: float) -> None:
+        """Command the base's speed and turn rate until changed (for a driver of its
+        own, such as a ROS bridge or a benchmark; the commands do it themselves)."""
+        self._v, self._w = v, w
+
+    def step(self, n: int = 1) -> None:
+        """Advance the physics ``n`` steps with the sensors at their rates."""
+        self._step(n)
+
+    def detect(self, image: np.ndarray) -> list[Box]:
+        """Run the detector on a frame, counting its cost."""
+        import time as _time
+
+        t0 = _time.perf_counter()
+        boxes = self.detector.detect(image)
+        self.costs.detect_seconds += _time.perf_counter() - t0
+        self.costs.detections += 1
+        return boxes
+
     def wait(self, seconds: float) -> None:
         """Let ``seconds`` of simulated time pass with the robot standing still."""
         self._settle(seconds)
@@ -378,7 +397,9 @@ class MujocoGarbageField(GarbageField):
 
         t0 = _time.perf_counter()
         if self._renderer is None:
-            self._renderer = mujoco.Renderer(self.model, self.physical.height, self.physical.width)
+            self._renderer = fs.prepare_renderer(
+                mujoco.Renderer(self.model, self.physical.height, self.physical.width)
+            )
         self._renderer.update_scene(self.data, camera="camera")
         image = self.physical.camera.expose(self._renderer.render(), self._noise)
         self.costs.frames += 1
@@ -418,13 +439,9 @@ class MujocoGarbageField(GarbageField):
         )
 
     def _detections(self) -> list[Detection]:
-        import time as _time
 
         image = self.render()
-        t0 = _time.perf_counter()
-        boxes = self.detector.detect(image)
-        self.costs.detect_seconds += _time.perf_counter() - t0
-        self.costs.detections += 1
+        boxes = self.detect(image)
         self.last_frame, self.last_boxes = image, boxes
         if self._on_frame is not None:
             self._on_frame(image)

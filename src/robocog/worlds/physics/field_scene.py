@@ -63,14 +63,21 @@ class Lighting:
     ambient: float
     sky: tuple[float, float, float]
     shadows: bool = True
+    #: the air's haze: from ``haze[0]`` metres objects fade into the sky's colour,
+    #: wholly at ``haze[1]`` (a clear day's is far beyond the camera's range)
+    haze: tuple[float, float] = (200.0, 1000.0)
 
 
 #: the three lights of the paper's test days: a high bright sun; an overcast sky (no
 #: sun, flat bluish light); a low warm sun whose long shadows fall across the field
 LIGHTING: dict[str, Lighting] = {
     "sunny": Lighting(58.0, 200.0, (1.0, 0.98, 0.92), 0.75, 0.35, (0.95, 0.97, 1.0)),
-    "cloudy": Lighting(70.0, 180.0, (0.85, 0.88, 0.95), 0.12, 0.24, (0.8, 0.83, 0.9), False),
-    "evening": Lighting(9.0, 250.0, (1.0, 0.55, 0.28), 0.75, 0.20, (0.55, 0.45, 0.45)),
+    "cloudy": Lighting(
+        70.0, 180.0, (0.85, 0.88, 0.95), 0.06, 0.13, (0.8, 0.83, 0.9), False, (1.0, 14.0)
+    ),
+    "evening": Lighting(
+        9.0, 250.0, (1.0, 0.55, 0.28), 0.75, 0.175, (0.55, 0.45, 0.45), True, (4.0, 40.0)
+    ),
 }
 
 
@@ -338,6 +345,18 @@ def set_light(model: mujoco.MjModel, light: str, jitter: random.Random | None = 
     model.light_specular[sun] = np.array(spec.colour) * 0.1 * spec.strength
     model.light_castshadow[sun] = 1 if spec.shadows else 0
     model.vis.headlight.ambient[:] = np.array(spec.sky) * spec.ambient
+    # MuJoCo's fog distances are in units of the model's extent
+    extent = float(model.stat.extent) or 1.0
+    model.vis.map.fogstart = spec.haze[0] / extent
+    model.vis.map.fogend = spec.haze[1] / extent
+    model.vis.rgba.fog[:] = [*(np.array(spec.sky) * min(1.0, spec.ambient + spec.strength)), 1.0]
+
+
+def prepare_renderer(renderer: mujoco.Renderer) -> mujoco.Renderer:
+    """Turn on the haze (fog) a light may bring, and shadows."""
+    renderer.scene.flags[mujoco.mjtRndFlag.mjRND_FOG] = 1
+    renderer.scene.flags[mujoco.mjtRndFlag.mjRND_SHADOW] = 1
+    return renderer
 
 
 @dataclass(frozen=True)

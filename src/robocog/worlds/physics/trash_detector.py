@@ -313,7 +313,12 @@ def render_frames(
     """
     import mujoco
 
-    from robocog.worlds.physics.field_scene import CameraModel, field_xml, set_light
+    from robocog.worlds.physics.field_scene import (
+        CameraModel,
+        field_xml,
+        prepare_renderer,
+        set_light,
+    )
 
     sensor = camera if camera is not None else CameraModel()
     noise = np.random.default_rng(seed)
@@ -334,7 +339,7 @@ def render_frames(
                 geom_obj[g] = names.index(body)
         body_ids = [model.body(n).id for n in names]
         free = model.joint("robot_free").qposadr[0]
-        renderer = mujoco.Renderer(model, height, width)
+        renderer = prepare_renderer(mujoco.Renderer(model, height, width))
         try:
             for _view in range(per_scene):
                 if len(frames) >= count:
