@@ -138,3 +138,21 @@ def test_percepts_follow_pixels_and_rays_not_the_simulator(trained):
         assert abs(true[1] - 1.2) < 0.05
     finally:
         world.close()
+
+
+def test_commands_refuse_bad_options_in_one_line(capsys):
+    from robocog.cli import main
+
+    assert main(["experiment", "garbage", "--world", "mujoco", "--detection-frames", "-1"]) == 2
+    assert "--detection-frames" in capsys.readouterr().err
+    assert main(["train"]) == 2
+    assert main(["train", "detector", "--frames", "1"]) == 2
+    err = capsys.readouterr().err
+    assert "--frames must be between" in err and "Traceback" not in err
+
+
+def test_a_missing_onnx_model_is_refused(capsys, tmp_path):
+    from robocog.cli import main
+
+    code = main(["experiment", "garbage", "--world", "mujoco", "--detector", str(tmp_path / "x")])
+    assert code == 2 and "--detector: no file" in capsys.readouterr().err

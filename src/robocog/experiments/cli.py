@@ -74,6 +74,13 @@ def configure_garbage(parser: argparse.ArgumentParser) -> None:
         help="--world mujoco: frames rendered per light to measure Table I (default 300; 0 skips)",
     )
     parser.add_argument(
+        "--detector",
+        type=Path,
+        metavar="MODEL.onnx",
+        help="--world mujoco: a YOLO model in ONNX (run by onnxruntime) in place of the "
+        "learned detector",
+    )
+    parser.add_argument(
         "--over",
         choices=("process", "ros2"),
         default="process",
@@ -131,6 +138,10 @@ def run_garbage_args(args: argparse.Namespace) -> int:
         if args.detection_frames < 0:
             print("robocog experiment: --detection-frames must be at least 0", file=sys.stderr)
             return 2
+        onnx_model = getattr(args, "detector", None)
+        if onnx_model is not None and not onnx_model.is_file():
+            print(f"robocog experiment: --detector: no file {onnx_model}", file=sys.stderr)
+            return 2
         try:
             import robocog.worlds.mujoco_garbage  # noqa: F401
         except ImportError as exc:
@@ -151,6 +162,7 @@ def run_garbage_args(args: argparse.Namespace) -> int:
             watch=inspecting.watcher() if inspecting else None,
             world=world,
             detection_frames=getattr(args, "detection_frames", 0),
+            detector_path=getattr(args, "detector", None),
         )
     return 0 if all(m.ok for m in result.minds.values()) else 1
 
@@ -167,6 +179,7 @@ def run_garbage(
     watch: Watch | None = None,
     world: str = "2d",
     detection_frames: int = 0,
+    detector_path: Path | None = None,
 ) -> ExperimentResult:
     """Shared by ``experiment garbage`` and ``demo``: run, print the table, write files
     (``watch`` hooks every loop, for ``--inspect``). ``world="mujoco"`` runs the
@@ -187,9 +200,22 @@ def run_garbage(
         from robocog.experiments.garbage_physics import world_factory
         from robocog.worlds.physics.trash_detector import load_or_train, model_path
 
-        if not model_path().exists():
-            console.print("training the detector on rendered frames (once per machine)...")
-        detector, report = load_or_train()
+        report = None
+        if detector_path is not None:
+            from robocog.worlds.physics.onnx_detector import OnnxDetector
+
+            try:
+                detector = OnnxDetector(detector_path)
+            except ImportError as exc:
+                raise SystemExit(
+                    f"robocog experiment: --detector needs onnxruntime ({exc})"
+                ) from None
+            except Exception as exc:  # a model onnxruntime cannot load: say so in a line
+                raise SystemExit(f"robocog experiment: --detector {detector_path}: {exc}") from None
+        else:
+            if not model_path().exists():
+                console.print("training the detector on rendered frames (once per machine)...")
+            detector, report = load_or_train()
         if report is not None:
             console.print(
                 escape(

@@ -73,7 +73,7 @@ class Lighting:
 LIGHTING: dict[str, Lighting] = {
     "sunny": Lighting(58.0, 200.0, (1.0, 0.98, 0.92), 0.75, 0.35, (0.95, 0.97, 1.0)),
     "cloudy": Lighting(
-        70.0, 180.0, (0.85, 0.88, 0.95), 0.06, 0.13, (0.8, 0.83, 0.9), False, (1.0, 14.0)
+        70.0, 180.0, (0.85, 0.88, 0.95), 0.08, 0.17, (0.8, 0.83, 0.9), False, (1.0, 14.0)
     ),
     "evening": Lighting(
         9.0, 250.0, (1.0, 0.55, 0.28), 0.75, 0.175, (0.55, 0.45, 0.45), True, (4.0, 40.0)
@@ -294,7 +294,7 @@ def field_xml(
   <compiler angle="radian"/>
   <option timestep="0.005" integrator="implicitfast" cone="elliptic" impratio="4"/>
   <visual>
-    <quality shadowsize="{shadow_size}"/>
+    <quality offsamples="0" shadowsize="{shadow_size}"/>
     <map znear="0.02" zfar="60" shadowclip="12"/>
     <headlight ambient="0.3 0.3 0.3" diffuse="0 0 0" specular="0 0 0"/>
     <global offwidth="640" offheight="480"/>

@@ -42,7 +42,7 @@ CLASSES = ("background", "bottle", "cup")
 FEATURES = 14
 #: a region needs this many pixels to be considered at all
 MIN_PIXELS = 6
-VERSION = 3
+VERSION = 4
 
 
 @dataclass(frozen=True)
