@@ -50,6 +50,14 @@ choose_gl()
 import mujoco  # noqa: E402
 
 from robocog.worlds.physics import field_scene as fs  # noqa: E402
+from robocog.worlds.physics.field_parts import (  # noqa: E402
+    CARRY,
+    STOW,
+    TRAY,
+    Costs,
+    Track,
+    arm_angles,
+)
 from robocog.worlds.physics.mobile_base import (  # noqa: E402
     BaseSpec,
     LidarSpec,
@@ -89,60 +97,6 @@ class PhysicalConfig:
     stand_off: float = 1.0  # where the approach stops to look again
     track_radius: float = 0.6  # detections closer than this on the field are one object
     camera: fs.CameraModel = field(default_factory=fs.CameraModel)
-
-
-def arm_angles(x: float, z: float, pitch: float = 0.0) -> tuple[float, float, float]:
-    """Shoulder, elbow and wrist angles that put the grasp point at ``(x, z)`` in the
-    base's frame with the hand pointing at ``pitch`` below the horizon (elbow up).
-
-    Joint angles are positive downwards (rotation about the base's y axis).
-    """
-    sx, _sy, sz = fs.SHOULDER
-    wx = x - fs.PALM_TO_GRASP * math.cos(pitch) - sx
-    wz = z + fs.PALM_TO_GRASP * math.sin(pitch) - (sz)
-    down = -wz
-    r2 = wx * wx + down * down
-    c2 = (r2 - fs.UPPER**2 - fs.FORE**2) / (2 * fs.UPPER * fs.FORE)
-    c2 = max(-1.0, min(1.0, c2))
-    q2 = math.acos(c2)
-    q1 = math.atan2(down, wx) - math.atan2(fs.FORE * math.sin(q2), fs.UPPER + fs.FORE * c2)
-    q3 = pitch - q1 - q2
-    return q1, q2, wrap(q3)
-
-
-#: the arm's poses: folded over the chassis out of the camera's view, carrying, and
-#: over the tray (hand pointing back)
-STOW = (0.12, 0.40, math.pi)
-CARRY = (0.45, 0.42, 0.0)
-TRAY = (-0.12, 0.5, math.pi)
-
-
-@dataclass
-class Track:
-    """An object the camera has seen: its label and estimated place on the field."""
-
-    instance: str
-    label: str
-    x: float
-    y: float
-    seen: int = 1
-    #: where the latest frame put it (the approach aims at this, not the average)
-    last: tuple[float, float] = (0.0, 0.0)
-
-
-@dataclass
-class Costs:
-    """Where the wall-clock time went."""
-
-    frames: int = 0
-    render_seconds: float = 0.0
-    detections: int = 0
-    detect_seconds: float = 0.0
-    scans: int = 0
-    scan_seconds: float = 0.0
-    steps: int = 0
-    step_seconds: float = 0.0
-    extra: dict[str, float] = field(default_factory=dict)
 
 
 class MujocoGarbageField(GarbageField):
