@@ -223,7 +223,8 @@ def run_garbage(
                     f"on {report.frames} held-out renders"
                 )
             )
-        make_world = world_factory(detector)
+        film: list[object] = []
+        make_world = world_factory(detector, film=film if out is not None else None)
     with Progress(
         "[progress.description]{task.description}",
         BarColumn(),
@@ -258,6 +259,11 @@ def run_garbage(
                 )
                 result.extra["detection_rates"] = {k: round(v.rate, 4) for k, v in rates.items()}
                 result.extra["detection"] = {k: v.as_dict() for k, v in rates.items()}
+    if world == "mujoco" and out is not None and film:
+        from robocog.experiments.garbage_physics import write_gif
+
+        write_gif(film, out / "mission.gif")
+        console.print(escape(f"the first mission's camera: {out / 'mission.gif'}"))
     console.print(summary_table(result))
     if "detection" in result.extra:
         console.print("Table I, measured from rendered frames (paper beside):")

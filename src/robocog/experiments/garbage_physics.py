@@ -92,11 +92,28 @@ def measure_detection(
     return out
 
 
-def world_factory(detector: Any, physical: Any = None) -> Callable[..., Any]:
-    """Makes a physical field per mission, all sharing one detector."""
+def world_factory(
+    detector: Any, physical: Any = None, film: list[Any] | None = None
+) -> Callable[..., Any]:
+    """Makes a physical field per mission, all sharing one detector; with ``film`` the
+    first mission's camera frames are kept there (a quarter size, for a GIF)."""
     from robocog.worlds.mujoco_garbage import MujocoGarbageField
 
+    made = [0]
+
     def make(config: Any, seed: int) -> Any:
-        return MujocoGarbageField(config, seed, physical=physical, detector=detector)
+        world = MujocoGarbageField(config, seed, physical=physical, detector=detector)
+        if film is not None and made[0] == 0:
+            world.on_frame = lambda image: film.append(image[::4, ::4].copy())
+        made[0] += 1
+        return world
 
     return make
+
+
+def write_gif(frames: Sequence[Any], path: Any, seconds_per_frame: float = 0.25) -> None:
+    """The frames of a mission as an animated GIF (at most 600 frames)."""
+    import imageio.v2 as imageio
+
+    path.parent.mkdir(parents=True, exist_ok=True)
+    imageio.mimsave(path, list(frames)[:600], duration=seconds_per_frame, loop=0)

@@ -175,7 +175,8 @@ class MujocoGarbageField(GarbageField):
             t.upright = self._upright(t)
         self.last_frame: np.ndarray | None = None
         self.last_boxes: list[Box] = []
-        self._on_frame: Callable[[np.ndarray], None] | None = None
+        #: called with every camera frame the percepts come from (a recorder's hook)
+        self.on_frame: Callable[[np.ndarray], None] | None = None
 
     # ---- the detector -------------------------------------------------------------
 
@@ -397,8 +398,8 @@ class MujocoGarbageField(GarbageField):
         image = self.render()
         boxes = self.detect(image)
         self.last_frame, self.last_boxes = image, boxes
-        if self._on_frame is not None:
-            self._on_frame(image)
+        if self.on_frame is not None:
+            self.on_frame(image)
         ex, ey, et = self.base.estimate
         out = []
         for box in boxes:
