@@ -94,7 +94,10 @@ class PhysicalConfig:
     shadow_size: int = 1024
     grasp_height: float = 0.085
     grasp_reach: float = 0.62  # from the base's centre to the point between the pads
-    stand_off: float = 1.0  # where the approach stops to look again
+    #: how much further than the estimate the hand is driven: the approach stops a
+    #: few centimetres short (the wheels' rolling radius, the stopping tolerance)
+    overdrive: float = 0.025
+    stand_off: float = 1.3  # where the approach stops to look again (the whole object in view)
     track_radius: float = 0.6  # detections closer than this on the field are one object
     camera: fs.CameraModel = field(default_factory=fs.CameraModel)
 
@@ -661,6 +664,11 @@ class MujocoGarbageField(GarbageField):
             self._drive_to(ex + (track.x - ex) * k, ey + (track.y - ey) * k)
         ex, ey, _ = self.base.estimate
         self._face(math.atan2(track.y - ey, track.x - ex))
+        if distance < pc.stand_off - 0.1:
+            # too near to see where it stands on the ground (the frame cuts its foot
+            # off): back away to the stand-off first
+            k = pc.stand_off / max(distance, 1e-6)
+            self._back_to(track.x - (track.x - ex) * k, track.y - (track.y - ey) * k)
         again = self._aim(track.instance)
         if again is not None:
             track = again
@@ -672,8 +680,8 @@ class MujocoGarbageField(GarbageField):
         self._face(math.atan2(aim[1] - ey, aim[0] - ex), tolerance=0.008)
         ex, ey, _ = self.base.estimate
         d = math.hypot(aim[0] - ex, aim[1] - ey)
-        if d > pc.grasp_reach:
-            k = (d - pc.grasp_reach) / d
+        if d > pc.grasp_reach - pc.overdrive:
+            k = (d - pc.grasp_reach + pc.overdrive) / d
             self._drive_to(
                 ex + (aim[0] - ex) * k, ey + (aim[1] - ey) * k, speed=0.2, tolerance=0.015
             )
