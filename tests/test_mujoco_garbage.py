@@ -156,3 +156,16 @@ def test_a_missing_onnx_model_is_refused(capsys, tmp_path):
 
     code = main(["experiment", "garbage", "--world", "mujoco", "--detector", str(tmp_path / "x")])
     assert code == 2 and "--detector: no file" in capsys.readouterr().err
+
+
+def test_the_report_puts_table_one_beside_the_paper():
+    from robocog.experiments.garbage import ExperimentResult
+    from robocog.experiments.report import markdown
+
+    row = {"rate": 0.8, "in_view": 10, "frames": 3, "paper": 0.83}
+    result = ExperimentResult(
+        GarbageConfig(), 0, 0, {}, world="mujoco", extra={"detection": {"sunny": row}}
+    )
+    page = markdown(result, {})
+    assert "| sunny | 80% | 10 | 3 | 83% |" in page
+    assert "learned detector" in page and "grasp success 85%" not in page
