@@ -6,6 +6,9 @@ import math
 
 import pytest
 
+from robocog.worlds.physics.gl import choose_gl
+
+choose_gl()  # offscreen GL chosen before mujoco loads
 pytest.importorskip("mujoco")
 
 import mujoco  # noqa: E402

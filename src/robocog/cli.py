@@ -21,6 +21,10 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "demo": ("robocog.experiments.demo", "run the garbage-collection demo with both minds"),
     "experiment": ("robocog.experiments.cli", "run one of the papers' case studies"),
     "sweep": ("robocog.experiments.sweep_cli", "run an experiment over a grid of settings"),
+    "train": (
+        "robocog.experiments.train_cli",
+        "train a learned part (the physical field's detector)",
+    ),
     "nar": ("robocog.nars.shell", "NARS shell speaking ONA's protocol on stdin/stdout"),
     "agent": ("robocog.bdi.cli", "run an AgentSpeak (Jason) program until it is idle"),
     "atomese": ("robocog.atomspace.cli", "load Atomese files and evaluate queries"),

@@ -12,7 +12,7 @@ import sys
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from robocog.argtypes import NEW_DIR, NEW_FILE, SEED, count, positive_int
+from robocog.argtypes import EXISTING_FILE, NEW_DIR, NEW_FILE, SEED, count, positive_int
 from robocog.worlds.garbage import LIGHTS
 
 if TYPE_CHECKING:
@@ -63,6 +63,27 @@ def configure_garbage(parser: argparse.ArgumentParser) -> None:
         help="rounds NARS collects before it is asked where trash accumulates (0: skip)",
     )
     parser.add_argument("--json", type=NEW_FILE, metavar="FILE", help="write the results as JSON")
+    parser.add_argument(
+        "--world",
+        choices=("2d", "mujoco"),
+        default="2d",
+        help="2d: the field of probability tables (default); mujoco: the physical field "
+        "(camera, learned detector, lidar, arm; needs the physics extra)",
+    )
+    parser.add_argument(
+        "--detection-frames",
+        type=count(100_000),
+        default=300,
+        metavar="N",
+        help="--world mujoco: frames rendered per light to measure Table I (default 300; 0 skips)",
+    )
+    parser.add_argument(
+        "--detector",
+        type=EXISTING_FILE,
+        metavar="MODEL.onnx",
+        help="--world mujoco: a YOLO model in ONNX (run by onnxruntime) in place of the "
+        "learned detector",
+    )
     parser.add_argument(
         "--over",
         choices=("process", "ros2"),
@@ -126,16 +147,29 @@ def run_garbage_args(args: argparse.Namespace) -> int:
         flush=True,
     )
 
+    world = getattr(args, "world", "2d")
+    if world == "mujoco":
+        try:
+            import robocog.worlds.mujoco_garbage  # noqa: F401
+        except ImportError as exc:
+            print(
+                f"robocog experiment: --world mujoco needs the physics extra ({exc})",
+                file=sys.stderr,
+            )
+            return 2
     with session(args, "robocog experiment garbage") as inspecting:
         result = run_garbage(
             specs,
             runs=args.runs,
             seed=args.seed,
             light=args.light,
-            rounds=args.rounds,
+            rounds=args.rounds if world == "2d" else 0,
             json_path=args.json,
             out=None if args.no_report else args.out,
             watch=inspecting.watcher() if inspecting else None,
+            world=world,
+            detection_frames=getattr(args, "detection_frames", 0),
+            detector_path=getattr(args, "detector", None),
         )
     return 0 if all(m.ok for m in result.minds.values()) else 1
 
@@ -176,9 +210,13 @@ def run_garbage(
     out: Path | None,
     config_overrides: dict[str, float] | None = None,
     watch: Watch | None = None,
+    world: str = "2d",
+    detection_frames: int = 0,
+    detector_path: Path | None = None,
 ) -> ExperimentResult:
     """Shared by ``experiment garbage`` and ``demo``: run, print the table, write files
-    (``watch`` hooks every loop, for ``--inspect``)."""
+    (``watch`` hooks every loop, for ``--inspect``). ``world="mujoco"`` runs the
+    physical field and measures Table I over ``detection_frames`` renders per light."""
     from rich.console import Console
     from rich.markup import escape
 
@@ -190,6 +228,37 @@ def run_garbage(
 
     console = Console()
     config = GarbageConfig(light=light, **(config_overrides or {}))  # type: ignore[arg-type]
+    make_world = None
+    detector = None
+    if world == "mujoco":
+        from robocog.experiments.garbage_physics import world_factory
+        from robocog.worlds.physics.trash_detector import load_or_train, model_path
+
+        report = None
+        if detector_path is not None:
+            from robocog.worlds.physics.onnx_detector import OnnxDetector
+
+            try:
+                detector = OnnxDetector(detector_path)
+            except ImportError as exc:
+                raise SystemExit(
+                    f"robocog experiment: --detector needs onnxruntime ({exc})"
+                ) from None
+            except Exception as exc:  # a model onnxruntime cannot load: say so in a line
+                raise SystemExit(f"robocog experiment: --detector {detector_path}: {exc}") from None
+        else:
+            if not model_path().exists():
+                console.print("training the detector on rendered frames (once per machine)...")
+            detector, report = load_or_train()
+        if report is not None:
+            console.print(
+                escape(
+                    f"detector: recall {report.recall:.1%}, labels {report.label_accuracy:.1%} "
+                    f"on {report.frames} held-out renders"
+                )
+            )
+        film: list[object] = []
+        make_world = world_factory(detector, film=film if out is not None else None)
     learner = next((s.name for s in specs if s.name in ("NARS", "ONA")), None)
     with Steps(console) as steps:
         missions = steps.add("garbage runs", runs * len(specs))
@@ -209,8 +278,37 @@ def run_garbage(
             advance=advance,
             watch=watch,
             on_round=None if learning is None else lambda _r: steps.advance(learning),
+            make_world=make_world,
         )
+        if world == "mujoco":
+            result.world = "mujoco"
+            if detection_frames > 0:
+                from robocog.experiments.garbage_physics import measure_detection
+
+                frames_task = steps.add("Table I frames", 3 * detection_frames)
+                steps.start(frames_task)
+                rates = measure_detection(
+                    detector,
+                    detection_frames,
+                    seed=seed + 1,
+                    camera_range=config.camera_range,
+                    progress=lambda _light, _n, _total: steps.advance(frames_task),
+                )
+                result.extra["detection_rates"] = {k: round(v.rate, 4) for k, v in rates.items()}
+                result.extra["detection"] = {k: v.as_dict() for k, v in rates.items()}
+    if world == "mujoco" and out is not None and film:
+        from robocog.experiments.garbage_physics import write_gif
+
+        write_gif(film, out / "mission.gif")
+        console.print(escape(f"the first mission's camera: {out / 'mission.gif'}"))
     console.print(fit(summary_table(result), console.width))
+    if "detection" in result.extra:
+        console.print("Table I, measured from rendered frames (paper beside):")
+        for light_name, row in result.extra["detection"].items():
+            console.print(
+                f"  {light_name:8} {row['rate']:6.1%}  ({row['detected']}/{row['in_view']} "
+                f"objects in view over {row['frames']} frames)   paper {row['paper']:.0%}"
+            )
     for m in result.minds.values():
         console.print(escape(mind_status(m)))
     acc = result.accumulation

@@ -208,6 +208,9 @@ class ExperimentResult:
     minds: dict[str, MindResult]
     accumulation: Accumulation | None = None
     wall_seconds: float = 0.0
+    #: "2d" or "mujoco"; the physical field adds what its camera measured
+    world: str = "2d"
+    extra: dict[str, Any] = field(default_factory=dict)
 
     def to_json(self) -> dict[str, Any]:
         """The JSON document of ``--json``: one entry per mind under ``minds``."""
@@ -225,7 +228,9 @@ class ExperimentResult:
             "minds": {name: m.summary() for name, m in self.minds.items()},
             "paper": PAPER,
             "wall_seconds": round(self.wall_seconds, 2),
+            "world": self.world,
         }
+        doc.update(self.extra)
         acc = self.accumulation
         if acc is not None:
             doc["question"] = {
@@ -260,15 +265,21 @@ def frame_budget(config: GarbageConfig, rounds: int = 1) -> int:
     return int(rounds * config.mission_time / config.frame_seconds) + 10
 
 
+#: makes the field of one mission: the 2D field, or the physical one
+WorldFactory = Callable[[GarbageConfig, int], GarbageField]
+
+
 def run_once(
     spec: MindSpec,
     config: GarbageConfig,
     seed: int,
     keep_path: bool = False,
     watch: Watch | None = None,
+    make_world: WorldFactory | None = None,
 ) -> RunResult:
-    """One mission of a fresh mind on a fresh field (``watch`` hooks its loop)."""
-    world = GarbageField(config, seed=seed)
+    """One mission of a fresh mind on a fresh field (``watch`` hooks its loop;
+    ``make_world`` makes the field, the 2D one by default)."""
+    world = (make_world or _field)(config, seed)
     mind = spec.make(world, seed)
     loop = Loop(world, mind)
     on_step = watch(world, mind, loop) if watch else None
@@ -283,6 +294,9 @@ def run_once(
         close = getattr(mind, "close", None)
         if callable(close):
             close()
+        release = getattr(world, "close", None)
+        if callable(release):
+            release()
     causes = dict.fromkeys(CAUSES, 0)
     items = []
     for t in world.objects():
@@ -321,12 +335,17 @@ def run_once(
     )
 
 
+def _field(config: GarbageConfig, seed: int) -> GarbageField:
+    return GarbageField(config, seed=seed)
+
+
 def run_mind(
     spec: MindSpec,
     config: GarbageConfig,
     seeds: Sequence[int],
     advance: Callable[[], None] | None = None,
     watch: Watch | None = None,
+    make_world: WorldFactory | None = None,
 ) -> MindResult:
     """Every run of one mind; a mind that cannot run is reported, not raised.
 
@@ -342,7 +361,9 @@ def run_mind(
         return result
     for i, seed in enumerate(seeds):
         try:
-            result.runs.append(run_once(spec, config, seed, keep_path=i == 0, watch=watch))
+            result.runs.append(
+                run_once(spec, config, seed, keep_path=i == 0, watch=watch, make_world=make_world)
+            )
         except Exception as exc:
             result.error = f"run {i} (seed {seed}) failed: {type(exc).__name__}: {exc}"
             break
@@ -447,6 +468,7 @@ def run_experiment(
     advance: Callable[[], None] | None = None,
     watch: Watch | None = None,
     on_round: Callable[[int], None] | None = None,
+    make_world: WorldFactory | None = None,
 ) -> ExperimentResult:
     """Every mind on the same ``runs`` seeds; then, if ``rounds``, NARS's learning phase.
 
@@ -460,7 +482,7 @@ def run_experiment(
     start = time.perf_counter()
     config = config or GarbageConfig()
     seeds = mission_seeds(seed, runs)
-    minds = {s.name: run_mind(s, config, seeds, advance, watch) for s in specs}
+    minds = {s.name: run_mind(s, config, seeds, advance, watch, make_world) for s in specs}
     accumulation = None
     learners = [s for s in specs if s.name in ("NARS", "ONA")]
     ready = [s for s in learners if minds[s.name].ok] or learners

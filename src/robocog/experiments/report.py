@@ -161,12 +161,19 @@ def explain(result: ExperimentResult) -> list[str]:
 def markdown(result: ExperimentResult, images: dict[str, str]) -> str:
     """The report page."""
     cfg = result.config
+    physical = getattr(result, "world", "2d") == "mujoco"
+    how = (
+        "on the physical field in MuJoCo (detections from rendered frames through the "
+        "learned detector, grasps by the arm)"
+        if physical
+        else f"(detection rate {_pct(cfg.detection_rate)}, grasp success "
+        f"{_pct(cfg.pick_success)} on a well-detected object)"
+    )
     lines = [
         "# Garbage collection (Hammer et al., Section V)",
         "",
         f"{result.runs} runs per mind, seed {result.seed}, {cfg.light} light "
-        f"(detection rate {_pct(cfg.detection_rate)}, grasp success "
-        f"{_pct(cfg.pick_success)} on a well-detected object), {cfg.objects} objects on a "
+        f"{how}, {cfg.objects} objects on a "
         f"{cfg.size:g} x {cfg.size:g} m field with {cfg.checkpoints} checkpoints, "
         f"{cfg.mission_time:.0f} s of battery per mission; robocog {__version__}. The full "
         "configuration is at the end of the page.",
@@ -177,6 +184,21 @@ def markdown(result: ExperimentResult, images: dict[str, str]) -> str:
         "|---|---|---|---|",
     ]
     lines += [f"| {a} | {b} | {c} | {d} |" for a, b, c, d in comparison_rows(result)]
+    detection = getattr(result, "extra", {}).get("detection")
+    if detection:
+        lines += [
+            "",
+            "## Detection by light (Table I), measured from rendered frames",
+            "",
+            "| light | detected | objects in view | frames | paper |",
+            "|---|---|---|---|---|",
+        ]
+        for light, row in detection.items():
+            paper = row.get("paper")
+            lines.append(
+                f"| {light} | {_pct(row['rate'])} | {row['in_view']} | {row['frames']} | "
+                f"{_pct(paper) if paper is not None else '-'} |"
+            )
     for name, m in result.minds.items():
         if m.unavailable:
             lines += ["", f"**{name} did not run:** {m.unavailable}"]

@@ -50,6 +50,14 @@ choose_gl()
 import mujoco  # noqa: E402
 
 from robocog.worlds.physics import field_scene as fs  # noqa: E402
+from robocog.worlds.physics.field_parts import (  # noqa: E402
+    CARRY,
+    STOW,
+    TRAY,
+    Costs,
+    Track,
+    arm_angles,
+)
 from robocog.worlds.physics.mobile_base import (  # noqa: E402
     BaseSpec,
     LidarSpec,
@@ -86,62 +94,12 @@ class PhysicalConfig:
     shadow_size: int = 1024
     grasp_height: float = 0.085
     grasp_reach: float = 0.62  # from the base's centre to the point between the pads
-    stand_off: float = 1.0  # where the approach stops to look again
+    #: how much further than the estimate the hand is driven: the approach stops a
+    #: few centimetres short (the wheels' rolling radius, the stopping tolerance)
+    overdrive: float = 0.025
+    stand_off: float = 1.3  # where the approach stops to look again (the whole object in view)
     track_radius: float = 0.6  # detections closer than this on the field are one object
-
-
-def arm_angles(x: float, z: float, pitch: float = 0.0) -> tuple[float, float, float]:
-    """Shoulder, elbow and wrist angles that put the grasp point at ``(x, z)`` in the
-    base's frame with the hand pointing at ``pitch`` below the horizon (elbow up).
-
-    Joint angles are positive downwards (rotation about the base's y axis).
-    """
-    sx, _sy, sz = fs.SHOULDER
-    wx = x - fs.PALM_TO_GRASP * math.cos(pitch) - sx
-    wz = z + fs.PALM_TO_GRASP * math.sin(pitch) - (sz)
-    down = -wz
-    r2 = wx * wx + down * down
-    c2 = (r2 - fs.UPPER**2 - fs.FORE**2) / (2 * fs.UPPER * fs.FORE)
-    c2 = max(-1.0, min(1.0, c2))
-    q2 = math.acos(c2)
-    q1 = math.atan2(down, wx) - math.atan2(fs.FORE * math.sin(q2), fs.UPPER + fs.FORE * c2)
-    q3 = pitch - q1 - q2
-    return q1, q2, wrap(q3)
-
-
-#: the arm's poses: folded over the chassis out of the camera's view, carrying, and
-#: over the tray (hand pointing back)
-STOW = (0.12, 0.40, math.pi)
-CARRY = (0.45, 0.42, 0.0)
-TRAY = (-0.12, 0.5, math.pi)
-
-
-@dataclass
-class Track:
-    """An object the camera has seen: its label and estimated place on the field."""
-
-    instance: str
-    label: str
-    x: float
-    y: float
-    seen: int = 1
-    #: where the latest frame put it (the approach aims at this, not the average)
-    last: tuple[float, float] = (0.0, 0.0)
-
-
-@dataclass
-class Costs:
-    """Where the wall-clock time went."""
-
-    frames: int = 0
-    render_seconds: float = 0.0
-    detections: int = 0
-    detect_seconds: float = 0.0
-    scans: int = 0
-    scan_seconds: float = 0.0
-    steps: int = 0
-    step_seconds: float = 0.0
-    extra: dict[str, float] = field(default_factory=dict)
+    camera: fs.CameraModel = field(default_factory=fs.CameraModel)
 
 
 class MujocoGarbageField(GarbageField):
@@ -206,6 +164,7 @@ class MujocoGarbageField(GarbageField):
             seed=seed,
         )
         self._renderer: mujoco.Renderer | None = None
+        self._noise = np.random.default_rng(seed + 104729)
         self._dt = float(self.model.opt.timestep)
         self._next_scan = 0.0
         self._scan: Scan | None = None
@@ -219,7 +178,8 @@ class MujocoGarbageField(GarbageField):
             t.upright = self._upright(t)
         self.last_frame: np.ndarray | None = None
         self.last_boxes: list[Box] = []
-        self._on_frame: Callable[[np.ndarray], None] | None = None
+        #: called with every camera frame the percepts come from (a recorder's hook)
+        self.on_frame: Callable[[np.ndarray], None] | None = None
 
     # ---- the detector -------------------------------------------------------------
 
@@ -249,6 +209,20 @@ class MujocoGarbageField(GarbageField):
             ("shoulder", "elbow", "wrist"), arm_angles(x, z, pitch), strict=True
         ):
             self._joint_ctrl(name, angle)
+
+    def _move_arm(self, x: float, z: float, pitch: float, seconds: float) -> None:
+        """Move the arm to a pose along a smooth joint path of ``seconds`` (a thrown
+        bottle is what a servo jumping to its goal would give)."""
+        names = ("shoulder", "elbow", "wrist")
+        begin = [float(self.data.ctrl[self.model.actuator(n).id]) for n in names]
+        end = arm_angles(x, z, pitch)
+        steps = max(1, int(seconds / (4 * self._dt)))
+        for i in range(1, steps + 1):
+            s = 0.5 - 0.5 * math.cos(math.pi * i / steps)
+            for n, a, b in zip(names, begin, end, strict=True):
+                self._joint_ctrl(n, a + (b - a) * s)
+            self._step(4)
+        self._settle(0.2)
 
     def _set_fingers(self, opening: float) -> None:
         self._joint_ctrl("finger_left", opening)
@@ -285,6 +259,29 @@ class MujocoGarbageField(GarbageField):
         self._step(max(1, int(round(seconds / self._dt))))
 
     def _advance(self, seconds: float) -> None:
+        self._settle(seconds)
+
+    def drive(self, v: float, w: float) -> None:
+        """Command the base's speed and turn rate until changed (for a driver of its
+        own, such as a ROS bridge or a benchmark; the commands do it themselves)."""
+        self._v, self._w = v, w
+
+    def step(self, n: int = 1) -> None:
+        """Advance the physics ``n`` steps with the sensors at their rates."""
+        self._step(n)
+
+    def detect(self, image: np.ndarray) -> list[Box]:
+        """Run the detector on a frame, counting its cost."""
+        import time as _time
+
+        t0 = _time.perf_counter()
+        boxes = self.detector.detect(image)
+        self.costs.detect_seconds += _time.perf_counter() - t0
+        self.costs.detections += 1
+        return boxes
+
+    def wait(self, seconds: float) -> None:
+        """Let ``seconds`` of simulated time pass with the robot standing still."""
         self._settle(seconds)
 
     def _drive_to(
@@ -358,9 +355,11 @@ class MujocoGarbageField(GarbageField):
 
         t0 = _time.perf_counter()
         if self._renderer is None:
-            self._renderer = mujoco.Renderer(self.model, self.physical.height, self.physical.width)
+            self._renderer = fs.prepare_renderer(
+                mujoco.Renderer(self.model, self.physical.height, self.physical.width)
+            )
         self._renderer.update_scene(self.data, camera="camera")
-        image = self._renderer.render()
+        image = self.physical.camera.expose(self._renderer.render(), self._noise)
         self.costs.frames += 1
         self.costs.render_seconds += _time.perf_counter() - t0
         return image
@@ -398,16 +397,12 @@ class MujocoGarbageField(GarbageField):
         )
 
     def _detections(self) -> list[Detection]:
-        import time as _time
 
         image = self.render()
-        t0 = _time.perf_counter()
-        boxes = self.detector.detect(image)
-        self.costs.detect_seconds += _time.perf_counter() - t0
-        self.costs.detections += 1
+        boxes = self.detect(image)
         self.last_frame, self.last_boxes = image, boxes
-        if self._on_frame is not None:
-            self._on_frame(image)
+        if self.on_frame is not None:
+            self.on_frame(image)
         ex, ey, et = self.base.estimate
         out = []
         for box in boxes:
@@ -669,28 +664,31 @@ class MujocoGarbageField(GarbageField):
             self._drive_to(ex + (track.x - ex) * k, ey + (track.y - ey) * k)
         ex, ey, _ = self.base.estimate
         self._face(math.atan2(track.y - ey, track.x - ex))
+        if distance < pc.stand_off - 0.1:
+            # too near to see where it stands on the ground (the frame cuts its foot
+            # off): back away to the stand-off first
+            k = pc.stand_off / max(distance, 1e-6)
+            self._back_to(track.x - (track.x - ex) * k, track.y - (track.y - ey) * k)
         again = self._aim(track.instance)
         if again is not None:
             track = again
         aim = track.last
         # 2. arm down, fingers open, then drive the hand around the object
         self._set_fingers(fs.FINGER_OPEN)
-        self._set_arm(pc.grasp_reach, pc.grasp_height, 0.0)
-        self._settle(2.0)
+        self._move_arm(pc.grasp_reach, pc.grasp_height, 0.0, 1.2)
         ex, ey, _ = self.base.estimate
         self._face(math.atan2(aim[1] - ey, aim[0] - ex), tolerance=0.008)
         ex, ey, _ = self.base.estimate
         d = math.hypot(aim[0] - ex, aim[1] - ey)
-        if d > pc.grasp_reach:
-            k = (d - pc.grasp_reach) / d
+        if d > pc.grasp_reach - pc.overdrive:
+            k = (d - pc.grasp_reach + pc.overdrive) / d
             self._drive_to(
-                ex + (aim[0] - ex) * k, ey + (aim[1] - ey) * k, speed=0.12, tolerance=0.015
+                ex + (aim[0] - ex) * k, ey + (aim[1] - ey) * k, speed=0.2, tolerance=0.015
             )
         # 3. close, lift, feel
         self._set_fingers(fs.FINGER_CLOSED)
-        self._settle(1.2)
-        self._set_arm(*CARRY)
-        self._settle(2.0)
+        self._settle(0.8)
+        self._move_arm(*CARRY, 1.2)
         held = self._gripper_holds()
         if held:
             self._holding_track = track
@@ -702,7 +700,7 @@ class MujocoGarbageField(GarbageField):
             self._log("pick", f"{track.instance}: held")
         else:
             self._set_fingers(fs.FINGER_OPEN)
-            self._set_arm(*STOW)
+            self._move_arm(*STOW, 1.0)
             if truth is not None and was_upright and not self._upright(truth):
                 truth.upright = False
                 truth.tipped_at = self.clock
@@ -716,8 +714,6 @@ class MujocoGarbageField(GarbageField):
         # 4. back to where the pick began, facing the same way
         self._back_to(*home)
         self._face(facing)
-        if not outcome.ok:
-            self._settle(1.0)
         if not was_upright:
             self.futile_seconds += self.clock - began
         return outcome
@@ -739,12 +735,10 @@ class MujocoGarbageField(GarbageField):
         if self._holding_track is None:
             self._advance(1.0)
             return Outcome.failure("the gripper is empty")
-        self._set_arm(*TRAY)
-        self._settle(2.0)
+        self._move_arm(*TRAY, 2.0)
         self._set_fingers(fs.FINGER_OPEN)
-        self._settle(1.0)
-        self._set_arm(*STOW)
-        self._settle(1.0)
+        self._settle(0.6)
+        self._move_arm(*STOW, 1.0)
         track = self._holding_track
         self._holding_track = None
         if track in self.tracks:

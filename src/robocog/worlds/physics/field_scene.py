@@ -63,14 +63,21 @@ class Lighting:
     ambient: float
     sky: tuple[float, float, float]
     shadows: bool = True
+    #: the air's haze: from ``haze[0]`` metres objects fade into the sky's colour,
+    #: wholly at ``haze[1]`` (a clear day's is far beyond the camera's range)
+    haze: tuple[float, float] = (200.0, 1000.0)
 
 
 #: the three lights of the paper's test days: a high bright sun; an overcast sky (no
 #: sun, flat bluish light); a low warm sun whose long shadows fall across the field
 LIGHTING: dict[str, Lighting] = {
     "sunny": Lighting(58.0, 200.0, (1.0, 0.98, 0.92), 0.75, 0.35, (0.95, 0.97, 1.0)),
-    "cloudy": Lighting(70.0, 180.0, (0.85, 0.88, 0.95), 0.22, 0.45, (0.8, 0.83, 0.9), False),
-    "evening": Lighting(9.0, 250.0, (1.0, 0.55, 0.28), 0.65, 0.12, (0.55, 0.45, 0.45)),
+    "cloudy": Lighting(
+        70.0, 180.0, (0.85, 0.88, 0.95), 0.08, 0.17, (0.8, 0.83, 0.9), False, (1.0, 14.0)
+    ),
+    "evening": Lighting(
+        9.0, 250.0, (1.0, 0.55, 0.28), 0.75, 0.175, (0.55, 0.45, 0.45), True, (4.0, 40.0)
+    ),
 }
 
 
@@ -253,7 +260,7 @@ def field_xml(
     base = base_fragment(spec, start[:2], start[2], children=_robot_children(spec))
     from robocog.worlds.physics.mobile_base import walls_xml
 
-    fence_xml = walls_xml(fence(size), height=1.0, thickness=0.06, rgba="0.62 0.6 0.55 1")
+    fence_xml = walls_xml(fence(size), height=1.0, thickness=0.06, rgba="0.16 0.3 0.22 1")
     markers = "".join(
         f'<geom name="cp_{n}" type="cylinder" size="0.25 0.002" pos="{_f(x, y, 0.002)}"'
         ' rgba="0.85 0.85 0.3 1" contype="0" conaffinity="0" group="1"/>'
@@ -287,7 +294,7 @@ def field_xml(
   <compiler angle="radian"/>
   <option timestep="0.005" integrator="implicitfast" cone="elliptic" impratio="4"/>
   <visual>
-    <quality shadowsize="{shadow_size}"/>
+    <quality offsamples="0" shadowsize="{shadow_size}"/>
     <map znear="0.02" zfar="60" shadowclip="12"/>
     <headlight ambient="0.3 0.3 0.3" diffuse="0 0 0" specular="0 0 0"/>
     <global offwidth="640" offheight="480"/>
@@ -338,3 +345,44 @@ def set_light(model: mujoco.MjModel, light: str, jitter: random.Random | None = 
     model.light_specular[sun] = np.array(spec.colour) * 0.1 * spec.strength
     model.light_castshadow[sun] = 1 if spec.shadows else 0
     model.vis.headlight.ambient[:] = np.array(spec.sky) * spec.ambient
+    # MuJoCo's fog distances are in units of the model's extent
+    extent = float(model.stat.extent) or 1.0
+    model.vis.map.fogstart = spec.haze[0] / extent
+    model.vis.map.fogend = spec.haze[1] / extent
+    model.vis.rgba.fog[:] = [*(np.array(spec.sky) * min(1.0, spec.ambient + spec.strength)), 1.0]
+
+
+def prepare_renderer(renderer: mujoco.Renderer) -> mujoco.Renderer:
+    """Turn on the haze (fog) a light may bring, and shadows."""
+    renderer.scene.flags[mujoco.mjtRndFlag.mjRND_FOG] = 1
+    renderer.scene.flags[mujoco.mjtRndFlag.mjRND_SHADOW] = 1
+    return renderer
+
+
+@dataclass(frozen=True)
+class CameraModel:
+    """The camera's sensor: auto-exposure and noise, as a small robot camera has them.
+
+    The renderer gives the light that reaches each pixel. The sensor collects it as
+    electrons (``full_well`` for a white pixel at unit gain) with shot noise (Poisson,
+    here its Gaussian approximation) and ``read_noise``; auto-exposure raises the gain
+    until the frame's mean brightness reaches ``target`` (up to ``max_gain``), so a dim
+    scene comes out as bright as a sunny one but noisier, as on a real camera.
+    """
+
+    target: float = 110.0
+    max_gain: float = 8.0
+    full_well: float = 900.0
+    read_noise: float = 6.0
+
+    def expose(self, image: np.ndarray, rng: np.random.Generator) -> np.ndarray:
+        """The frame the camera delivers for a rendered ``image`` (uint8 RGB)."""
+        raw = image[..., :3].astype(np.float32)
+        mean = float(raw.mean()) + 1e-3
+        gain = min(self.max_gain, max(1.0, self.target / mean))
+        electrons = raw * (self.full_well / 255.0)
+        noisy = electrons + rng.standard_normal(raw.shape, dtype=np.float32) * np.sqrt(
+            electrons + self.read_noise**2
+        )
+        out = noisy * gain * (255.0 / self.full_well)
+        return np.clip(out, 0, 255).astype(np.uint8)

@@ -528,6 +528,12 @@ class Localiser:
     def __post_init__(self) -> None:
         self._a, self._d, self._len, self._n = _segments(self.walls)
 
+    def reset(self, pose: tuple[float, float, float]) -> None:
+        """Set the estimate (a known start, an operator's placement); the next odometry
+        reading becomes the reference its motion is counted from."""
+        self.pose = pose
+        self._odom = None
+
     def predict(self, odometry: tuple[float, float, float]) -> None:
         """Move by the odometry's change since the last call."""
         if self._odom is None:

@@ -42,7 +42,7 @@ CLASSES = ("background", "bottle", "cup")
 FEATURES = 14
 #: a region needs this many pixels to be considered at all
 MIN_PIXELS = 6
-VERSION = 2
+VERSION = 4
 
 
 @dataclass(frozen=True)
@@ -261,37 +261,34 @@ class Frame:
     object_of_pixel: np.ndarray  # -1 background, else index into labels
     labels: list[str]
     light: str
+    #: each object's distance from the robot (metres)
+    distances: list[float] = field(default_factory=list)
 
 
 def _random_scene(
-    rng: random.Random, light: str
-) -> tuple[list, tuple[float, float, float], dict[str, tuple[float, float]]]:
+    rng: random.Random,
+) -> tuple[list, tuple[float, float], dict[str, tuple[float, float]]]:
+    """Objects scattered around a spot of the field, and two checkpoint markers."""
     from robocog.worlds.physics.field_scene import Placed
 
-    x, y = rng.uniform(4.0, 18.0), rng.uniform(4.0, 18.0)
-    theta = rng.uniform(-math.pi, math.pi)
+    cx, cy = rng.uniform(2.5, 19.5), rng.uniform(2.5, 19.5)
     objects = []
-    for i in range(rng.randint(4, 10)):
-        d = rng.uniform(0.9, 5.5)
-        a = theta + rng.uniform(-0.6, 0.6)
+    for i in range(rng.randint(6, 12)):
+        d = rng.uniform(0.0, 2.5)
+        a = rng.uniform(-math.pi, math.pi)
         pose = rng.choices(("upright", "leaning", "lying"), (0.6, 0.2, 0.2))[0]
         objects.append(
             Placed(
                 f"trash{i}",
                 rng.choice(("bottle", "cup")),
-                x + d * math.cos(a),
-                y + d * math.sin(a),
+                min(21.7, max(0.3, cx + d * math.cos(a))),
+                min(21.7, max(0.3, cy + d * math.sin(a))),
                 rng.uniform(-math.pi, math.pi),
                 pose,
             )
         )
-    markers = {
-        f"m{i}": (x + d * math.cos(theta + a), y + d * math.sin(theta + a))
-        for i, (d, a) in enumerate(
-            (rng.uniform(1.5, 8.0), rng.uniform(-0.5, 0.5)) for _ in range(2)
-        )
-    }
-    return objects, (x, y, theta), markers
+    markers = {f"m{i}": (cx + rng.uniform(-4, 4), cy + rng.uniform(-4, 4)) for i in range(2)}
+    return objects, (cx, cy), markers
 
 
 def render_frames(
@@ -302,48 +299,89 @@ def render_frames(
     lights: Sequence[str] = ("sunny", "cloudy", "evening"),
     jitter: bool = True,
     progress: Callable[[int], None] | None = None,
+    per_scene: int = 6,
+    camera: object | None = None,
 ) -> list[Frame]:
-    """``count`` labelled frames of random fields, the lights taken in turn."""
+    """``count`` labelled frames of random fields, the lights taken in turn.
+
+    Each scene (objects scattered round a spot, upright, leaning or lying) is seen from
+    ``per_scene`` robot poses 0.8 to 6 m from the spot, looking roughly at it; each
+    frame is rendered twice, in colour and as segmentation (which object each pixel
+    shows). With ``jitter`` the sun's height, bearing and strength vary per frame.
+    The colour frame goes through the camera's sensor model (``camera``, the field's
+    :class:`~robocog.worlds.physics.field_scene.CameraModel` by default).
+    """
     import mujoco
 
-    from robocog.worlds.physics.field_scene import field_xml, set_light
+    from robocog.worlds.physics.field_scene import (
+        CameraModel,
+        field_xml,
+        prepare_renderer,
+        set_light,
+    )
 
+    sensor = camera if camera is not None else CameraModel()
+    noise = np.random.default_rng(seed)
     rng = random.Random(seed)
     frames: list[Frame] = []
-    for n in range(count):
-        light = lights[n % len(lights)]
-        objects, start, markers = _random_scene(rng, light)
-        xml = field_xml(22.0, markers, objects, start)
+    while len(frames) < count:
+        objects, (cx, cy), markers = _random_scene(rng)
+        xml = field_xml(22.0, markers, objects, (cx - 3.0, cy, 0.0))
         model = mujoco.MjModel.from_xml_string(xml)
         data = mujoco.MjData(model)
         for _ in range(100):  # let leaning and lying objects settle
             mujoco.mj_step(model, data)
-        set_light(model, light, jitter=rng if jitter else None)
-        renderer = mujoco.Renderer(model, height, width)
-        try:
-            renderer.update_scene(data, camera="camera")
-            image = renderer.render().copy()
-            renderer.enable_segmentation_rendering()
-            renderer.update_scene(data, camera="camera")
-            seg = renderer.render()
-        finally:
-            renderer.close()
-        geom_obj = np.full(model.ngeom + 1, -1, dtype=np.int32)
         names = [p.name for p in objects]
+        geom_obj = np.full(model.ngeom + 1, -1, dtype=np.int32)
         for g in range(model.ngeom):
             body = model.body(int(model.geom_bodyid[g])).name
             if body in names:
                 geom_obj[g] = names.index(body)
-        ids = seg[..., 0].astype(np.int64)
-        is_geom = seg[..., 1] == int(mujoco.mjtObj.mjOBJ_GEOM)
-        ids = np.where(is_geom & (ids >= 0), ids, model.ngeom)
-        frames.append(Frame(image, geom_obj[ids], [p.label for p in objects], light))
-        if progress:
-            progress(n + 1)
+        body_ids = [model.body(n).id for n in names]
+        free = model.joint("robot_free").qposadr[0]
+        renderer = prepare_renderer(mujoco.Renderer(model, height, width))
+        try:
+            for _view in range(per_scene):
+                if len(frames) >= count:
+                    break
+                light = lights[len(frames) % len(lights)]
+                set_light(model, light, jitter=rng if jitter else None)
+                d = rng.uniform(0.8, 6.0)
+                a = rng.uniform(-math.pi, math.pi)
+                x = min(21.6, max(0.4, cx + d * math.cos(a)))
+                y = min(21.6, max(0.4, cy + d * math.sin(a)))
+                theta = math.atan2(cy - y, cx - x) + rng.uniform(-0.45, 0.45)
+                data.qpos[free : free + 7] = [
+                    x,
+                    y,
+                    0.0,
+                    math.cos(theta / 2),
+                    0.0,
+                    0.0,
+                    math.sin(theta / 2),
+                ]
+                mujoco.mj_forward(model, data)
+                renderer.disable_segmentation_rendering()
+                renderer.update_scene(data, camera="camera")
+                image = sensor.expose(renderer.render(), noise)  # type: ignore[attr-defined]
+                renderer.enable_segmentation_rendering()
+                renderer.update_scene(data, camera="camera")
+                seg = renderer.render()
+                ids = seg[..., 0].astype(np.int64)
+                is_geom = seg[..., 1] == int(mujoco.mjtObj.mjOBJ_GEOM)
+                ids = np.where(is_geom & (ids >= 0), ids, model.ngeom)
+                distances = [math.hypot(data.xpos[b][0] - x, data.xpos[b][1] - y) for b in body_ids]
+                frames.append(
+                    Frame(image, geom_obj[ids], [p.label for p in objects], light, distances)
+                )
+                if progress:
+                    progress(len(frames))
+        finally:
+            renderer.close()
     return frames
 
 
-def _match(
+def match_boxes(
     boxes: list[tuple[int, int, int, int]], frame: Frame, min_pixels: int
 ) -> tuple[list[int], dict[int, int]]:
     """Per box: the object it shows (by most pixels inside, -1 none); objects in view."""
@@ -403,7 +441,7 @@ def train(
         like = table[_quantise(f.image)]
         labels, count = _regions(like)
         feats, boxes, _ = region_features(f.image, like, labels, count)
-        matched, _visible = _match(boxes, f, MIN_PIXELS)
+        matched, _visible = match_boxes(boxes, f, MIN_PIXELS)
         for row, k in zip(feats, matched, strict=True):
             xs.append(row)
             ys.append(0 if k < 0 else CLASSES.index(f.labels[k]))
@@ -448,7 +486,7 @@ def evaluate(detector: TrashDetector, frames: Sequence[Frame], min_pixels: int =
     for f in frames:
         boxes = detector.detect(f.image)
         coords = [(b.u0, b.v0, b.u1, b.v1) for b in boxes]
-        matched, visible = _match(coords, f, MIN_PIXELS)
+        matched, visible = match_boxes(coords, f, MIN_PIXELS)
         wanted = {k for k, n in visible.items() if n >= min_pixels}
         hit: dict[int, str] = {}
         for box, k in zip(boxes, matched, strict=True):
@@ -468,7 +506,7 @@ def evaluate(detector: TrashDetector, frames: Sequence[Frame], min_pixels: int =
         labels, count = _regions(like)
         feats, rboxes, _ = region_features(f.image, like, labels, count)
         if len(feats):
-            truth, _ = _match(rboxes, f, MIN_PIXELS)
+            truth, _ = match_boxes(rboxes, f, MIN_PIXELS)
             guess = np.argmax(detector.classify(feats), axis=1)
             want = [0 if k < 0 else CLASSES.index(f.labels[k]) for k in truth]
             regions += len(want)
@@ -486,7 +524,12 @@ def evaluate(detector: TrashDetector, frames: Sequence[Frame], min_pixels: int =
 
 
 def _key(settings: TrainingSettings) -> str:
-    text = json.dumps({"v": VERSION, **asdict(settings)}, sort_keys=True)
+    """The settings, the lights and the camera the frames are rendered with: a change
+    to any of them makes another model."""
+    from robocog.worlds.physics.field_scene import LIGHTING, CameraModel
+
+    scene = {"lights": {k: asdict(v) for k, v in LIGHTING.items()}, "camera": asdict(CameraModel())}
+    text = json.dumps({"v": VERSION, **asdict(settings), **scene}, sort_keys=True)
     return hashlib.sha256(text.encode()).hexdigest()[:12]
 
 
