@@ -11,18 +11,20 @@ from __future__ import annotations
 import argparse
 import json
 import sys
-from pathlib import Path
+
+from robocog.argtypes import NEW_FILE, SEED, int_range
 
 
 def configure(parser: argparse.ArgumentParser) -> None:
     """``robocog train detector [options]``."""
     sub = parser.add_subparsers(dest="what", metavar="WHAT")
     p = sub.add_parser("detector", help="the garbage field's bottle-and-cup detector")
-    p.add_argument("--frames", type=int, default=96, help="training renders (default 96)")
-    p.add_argument("--held-out", type=int, default=32, help="held-out renders (default 32)")
-    p.add_argument("--seed", type=int, default=0, help="seed of the renders and the network")
+    renders = int_range(3, 10_000)
+    p.add_argument("--frames", type=renders, default=96, help="training renders (default 96)")
+    p.add_argument("--held-out", type=renders, default=32, help="held-out renders (default 32)")
+    p.add_argument("--seed", type=SEED, default=0, help="seed of the renders and the network")
     p.add_argument("--retrain", action="store_true", help="train even if a model is cached")
-    p.add_argument("--json", type=Path, metavar="FILE", help="write the report as JSON")
+    p.add_argument("--json", type=NEW_FILE, metavar="FILE", help="write the report as JSON")
 
 
 def run(args: argparse.Namespace) -> int:
@@ -30,12 +32,6 @@ def run(args: argparse.Namespace) -> int:
     if getattr(args, "what", None) != "detector":
         print("robocog train: name what to train: detector", file=sys.stderr)
         return 2
-    for name in ("frames", "held_out"):
-        value = getattr(args, name)
-        if not 3 <= value <= 10_000:
-            option = "--" + name.replace("_", "-")
-            print(f"robocog train: {option} must be between 3 and 10000", file=sys.stderr)
-            return 2
     try:
         from robocog.worlds.physics import trash_detector as td
     except ImportError as exc:
@@ -66,6 +62,5 @@ def run(args: argparse.Namespace) -> int:
         for light, (found, total) in sorted(doc.get("per_light", {}).items()):
             print(f"  {light:8} {found}/{total}")
     if args.json is not None:
-        args.json.parent.mkdir(parents=True, exist_ok=True)
         args.json.write_text(json.dumps({"model": str(path), **doc}, indent=2))
     return 0
