@@ -39,6 +39,7 @@ from robocog.bdi.terms import (
     sort_annots,
     term_str,
 )
+from robocog.limits import MESSAGE_CHARS, clip
 
 
 class ParseError(ValueError):
@@ -48,8 +49,8 @@ class ParseError(ValueError):
         self.line = line
         self.column = column
         self.source = source
-        self.reason = message
-        where = f"{source}:" if source else ""
+        self.reason = message = clip(message, MESSAGE_CHARS)
+        where = f"{clip(source, 200)}:" if source else ""
         super().__init__(f"{where}{line}:{column}: {message}")
 
 

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import os
 import re
+import stat
 import time as _time
 import zlib
 from pathlib import Path
@@ -27,6 +28,10 @@ HEADER_BYTES = 256
 #: decompressed (a small file can inflate a thousandfold)
 MAX_FILE_BYTES = 1 << 30
 MAX_JSON_BYTES = 2 << 30
+#: a compressed file may expand to at most this many times its size (robocog's memories
+#: expand about tenfold; a gzip bomb a thousandfold), and always to this many bytes
+MAX_EXPANSION = 100
+MIN_EXPANDED_BYTES = 64 << 20
 #: a temporary file of an interrupted save older than this is removed by the next save
 #: of the same memory (a save killed outright, e.g. by SIGKILL, cannot clean up itself)
 STALE_TMP_SECONDS = 600.0
@@ -81,13 +86,38 @@ def _glob_escape(name: str) -> str:
     return "".join(f"[{ch}]" if ch in "*?[" else ch for ch in name)
 
 
+def _open_regular(path: str | os.PathLike[str]) -> int:
+    """A descriptor of the regular file at ``path``; anything else (a FIFO, a device such
+    as /dev/zero, a socket, a folder) is refused at once, before any read could block
+    or run without end. (Opened without blocking, then checked on the descriptor, so
+    the file checked is the file read.)"""
+    name = str(path)
+    try:
+        fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK | getattr(os, "O_CLOEXEC", 0))
+    except IsADirectoryError:
+        raise MemoryFileError(f"{name}: is a directory") from None
+    except OSError as exc:
+        raise MemoryFileError(f"{name}: cannot be read: {exc.strerror or exc}") from None
+    mode = os.fstat(fd).st_mode
+    if not stat.S_ISREG(mode):
+        os.close(fd)
+        what = "a directory" if stat.S_ISDIR(mode) else "not a regular file"
+        raise MemoryFileError(f"{name}: {what}; a memory is read from a regular file only")
+    os.set_blocking(fd, True)
+    return fd
+
+
 def is_memory_file(path: str | os.PathLike[str]) -> bool:
     """True if the file at ``path`` starts as a robocog memory file does."""
     try:
-        with open(path, "rb") as f:
-            head = f.read(4096)
-    except OSError:
+        fd = _open_regular(path)
+    except MemoryFileError:
         return False
+    with os.fdopen(fd, "rb") as f:
+        try:
+            head = f.read(4096)
+        except OSError:
+            return False
     if head[:2] == b"\x1f\x8b":
         try:
             head = zlib.decompressobj(31).decompress(head, HEADER_BYTES)
@@ -96,33 +126,50 @@ def is_memory_file(path: str | os.PathLike[str]) -> bool:
     return HEADER.match(head) is not None
 
 
+def expansion_bound(compressed: int) -> int:
+    """The most bytes a compressed file of ``compressed`` bytes may expand to."""
+    return min(MAX_JSON_BYTES, max(MIN_EXPANDED_BYTES, MAX_EXPANSION * compressed))
+
+
 def read_file(path: str | os.PathLike[str]) -> bytes:
     """The JSON text of the memory file at ``path``, decompressed within the bounds."""
     name = str(path)
-    try:
-        with open(path, "rb") as f:
-            size = os.fstat(f.fileno()).st_size
-            if size > MAX_FILE_BYTES:
-                raise MemoryFileError(f"{name}: larger than {MAX_FILE_BYTES} bytes")
-            raw = f.read(MAX_FILE_BYTES + 1)
-    except IsADirectoryError:
-        raise MemoryFileError(f"{name}: is a directory") from None
-    except OSError as exc:
-        raise MemoryFileError(f"{name}: cannot be read: {exc.strerror or exc}") from None
+    fd = _open_regular(path)
+    with os.fdopen(fd, "rb") as f:
+        size = os.fstat(fd).st_size
+        if size > MAX_FILE_BYTES:
+            raise MemoryFileError(f"{name}: larger than {MAX_FILE_BYTES} bytes (MAX_FILE_BYTES)")
+        try:
+            # (the size on disk, not the bound: a read of n bytes reserves n at once)
+            raw = f.read(size + 1)
+        except OSError as exc:
+            raise MemoryFileError(f"{name}: cannot be read: {exc.strerror or exc}") from None
+    if len(raw) > MAX_FILE_BYTES:
+        raise MemoryFileError(f"{name}: larger than {MAX_FILE_BYTES} bytes (MAX_FILE_BYTES)")
     if not raw:
         raise MemoryFileError(f"{name}: empty file, not a robocog memory")
     if raw[:1] == b"\x80":
         raise MemoryFileError(f"{name}: {PICKLE_HINT}")
     if raw[:2] == b"\x1f\x8b":
         d = zlib.decompressobj(31)
+        bound = expansion_bound(len(raw))
         try:
-            data = d.decompress(raw, MAX_JSON_BYTES + 1)
+            data = d.decompress(raw, bound + 1)
         except zlib.error as exc:
             raise MemoryFileError(f"{name}: damaged compressed data ({exc})") from None
-        if len(data) > MAX_JSON_BYTES:
-            raise MemoryFileError(f"{name}: decompresses to more than {MAX_JSON_BYTES} bytes")
+        if len(data) > bound:
+            raise MemoryFileError(
+                f"{name}: decompresses to more than {bound} bytes ({MAX_EXPANSION} times its "
+                f"size, at least {MIN_EXPANDED_BYTES}, at most {MAX_JSON_BYTES}): not a "
+                "memory robocog saved"
+            )
         if not d.eof:
             raise MemoryFileError(f"{name}: truncated (the compressed data ends early)")
+        if d.unused_data:
+            raise MemoryFileError(
+                f"{name}: {len(d.unused_data)} bytes after the compressed memory "
+                "(a second member or trailing data); refused"
+            )
         raw = data
     if HEADER.match(raw[:HEADER_BYTES]) is None:
         start = raw[:16]

@@ -15,6 +15,8 @@ from functools import lru_cache
 
 from lark import Lark, Token, Transformer, UnexpectedEOF, UnexpectedInput, UnexpectedToken, v_args
 
+from robocog.limits import MESSAGE_CHARS, clip
+
 from .config import MAX_TIME
 from .terms import (
     EXT_SET,
@@ -70,6 +72,7 @@ class NarseseError(ValueError):
     """A line that is not Narsese; ``line`` and ``column`` are 1-based."""
 
     def __init__(self, line: int, column: int, message: str) -> None:
+        message = clip(message, MESSAGE_CHARS)
         super().__init__(f"line {line}, column {column}: {message}")
         self.line = line
         self.column = column
@@ -140,8 +143,13 @@ class _Build(Transformer):
         op = items[0]
         terms = items[1:]
         if op == "!" or len(terms) == 1:
-            if len(terms) != 1:
+            if op == "!" and len(terms) != 1:
                 raise ValueError("negation takes one term")
+            if op not in ("!", "*"):
+                # ONA has no one-component conjunction, sequence, intersection or image:
+                # ``(&&, a)`` would be a term its rules index out of (refused, as the
+                # infix ``(&& a)`` is)
+                raise ValueError(f"{op} needs two components")
             return compound(op, (terms[0],))  # type: ignore[arg-type]
         left = terms[0]
         for t in terms[1:]:
