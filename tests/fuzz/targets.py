@@ -179,7 +179,6 @@ def _shell_seeds() -> list[bytes]:
     return out
 
 
-_NAR: list[object] = []
 #: cycle lines above this are skipped: a long run is work asked for, not a fault
 SHELL_MAX_CYCLES = 200
 
@@ -189,11 +188,8 @@ def _shell(data: bytes) -> object:
     from robocog.nars.nar import NAR
     from robocog.nars.narsese import NarseseError
 
-    if not _NAR or len(_NAR) > 50:
-        _NAR[:] = [NAR(seed=1)]
-    nar = _NAR[0]
-    nar.output = lambda line: None  # type: ignore[attr-defined]
-    _NAR.append(None)
+    nar = NAR(seed=1)  # a fresh one: a kept case must fail again on its own
+    nar.output = lambda line: None  # type: ignore[method-assign]
     for raw in data.split(b"\n")[:200]:
         line = _text(raw).rstrip()
         if line.strip().isdigit() and int(line.strip()[:12]) > SHELL_MAX_CYCLES:
@@ -540,7 +536,14 @@ def _bridge(data: bytes) -> object:
     body = RobotBody(_Link())
 
     def num(x: object) -> float:
-        return float(x) if isinstance(x, int | float) and not isinstance(x, bool) else 0.0
+        # as a middleware's float64 field holds it (an integer past a double's range
+        # is infinite there)
+        if isinstance(x, bool) or not isinstance(x, int | float):
+            return 0.0
+        try:
+            return float(x)
+        except OverflowError:
+            return math.inf if x > 0 else -math.inf
 
     scan = msg.get("scan")
     if isinstance(scan, dict):

@@ -629,6 +629,12 @@ MAX_INCLUDE_DEPTH = 32
 _INCLUDE = re.compile(r'\s*include\s*\(\s*"((?:[^"\\]|\\.)*)"\s*(?:,\s*(\w+)\s*)?\)\s*\Z')
 
 
+#: the longest program (one file) the reader takes: an agent's program is a few
+#: kilobytes, and the parser reads a dense one of this size in about a second (time
+#: grows with the size; a megabyte would take half a minute)
+MAX_PROGRAM_CHARS = 64 * 1024
+
+
 def parse_program(
     text: str, source: str = "", search_path: Sequence[str | Path] = (), _depth: int = 0
 ) -> Program:
@@ -639,6 +645,14 @@ def parse_program(
     project's ``aslSourcePath``). A file that is not found, or a directive robocog does
     not know, is an error naming it, so nothing goes missing without a word.
     """
+    if isinstance(text, str) and len(text) > MAX_PROGRAM_CHARS:
+        raise ParseError(
+            f"a program is at most {MAX_PROGRAM_CHARS} characters (MAX_PROGRAM_CHARS); "
+            f"this one has {len(text)}",
+            1,
+            1,
+            source,
+        )
     items = _run("start", text, source)
     prog = Program()
     for kind, value in items:

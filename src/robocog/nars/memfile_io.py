@@ -30,8 +30,8 @@ MAX_FILE_BYTES = 1 << 30
 MAX_JSON_BYTES = 2 << 30
 #: a compressed file may expand to at most this many times its size (robocog's memories
 #: expand about tenfold; a gzip bomb a thousandfold), and always to this many bytes
-MAX_EXPANSION = 100
-MIN_EXPANDED_BYTES = 64 << 20
+MAX_EXPANSION = 40
+MIN_EXPANDED_BYTES = 32 << 20
 #: a temporary file of an interrupted save older than this is removed by the next save
 #: of the same memory (a save killed outright, e.g. by SIGKILL, cannot clean up itself)
 STALE_TMP_SECONDS = 600.0

@@ -138,6 +138,8 @@ class NAR(Reasoner):
             n = int(line)
             if n > MAX_CYCLES_PER_LINE:
                 raise NarseseError(1, 1, f"at most {MAX_CYCLES_PER_LINE} cycles per line")
+            if n and self.time >= MAX_TIME:
+                raise NarseseError(1, 1, f"the reasoner's time has reached {MAX_TIME}; *reset")
             emit(self, f"performing {n} inference steps:")
             cycle.cycles(self, n)
             emit(self, f"done with {n} additional inference steps.")
@@ -151,6 +153,8 @@ class NAR(Reasoner):
         """Enter a parsed sentence: beliefs and goals run one cycle, questions are answered."""
         if self.time >= MAX_TIME:
             raise NarseseError(1, 1, f"the reasoner's time has reached {MAX_TIME}; *reset")
+        if self.stamp_base >= MAX_TIME and s.punctuation != "?":
+            raise NarseseError(1, 1, f"the stamp ids have reached {MAX_TIME}; *reset")
         if s.punctuation == "?":
             questions.answer(self, s.term, s.tense)
             return

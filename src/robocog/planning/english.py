@@ -107,7 +107,7 @@ class _ToStatement(Transformer):
 
 #: the longest sentence and the longest text read (a request a person types)
 MAX_SENTENCE_CHARS = 1_000
-MAX_TEXT_CHARS = 1 << 20
+MAX_TEXT_CHARS = 100_000
 _SENTENCE = re.compile(r"[^.]*\.|[^.]+$")
 
 

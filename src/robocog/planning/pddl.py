@@ -34,11 +34,13 @@ class PDDLError(ValueError):
         super().__init__(clip(message, MESSAGE_CHARS))
 
 
-#: the largest PDDL file :func:`read_file` takes (a domain or problem a person wrote)
-MAX_PDDL_BYTES = 16 << 20
+#: the longest PDDL text (file) read: the domains and problems this planner solves are a
+#: few kilobytes, and the reader takes about a second for this many characters
+MAX_PDDL_BYTES = 128 << 10
 #: the most ground actions :func:`ground` makes; a domain and problem past it (three
-#: parameters over 200 objects: eight million) are refused before any is made
-MAX_GROUND_ACTIONS = 200_000
+#: parameters over 200 objects: eight million) are refused before any is made; a search
+#: over more would not end in useful time anyway
+MAX_GROUND_ACTIONS = 50_000
 
 
 @dataclass
@@ -133,7 +135,9 @@ def _literals(expr: Sexpr, source: str) -> list[Literal]:
 
 
 def read_domain(text: str, source: str = "<domain>") -> Domain:
-    """Parse a STRIPS domain."""
+    """Parse a STRIPS domain (at most ``MAX_PDDL_BYTES`` characters)."""
+    if len(text) > MAX_PDDL_BYTES:
+        raise PDDLError(f"{clip(source)}: longer than {MAX_PDDL_BYTES} characters (MAX_PDDL_BYTES)")
     try:
         exprs = parse(text, source)
     except SexprError as exc:
@@ -200,7 +204,9 @@ def _read_action(section: SList, source: str) -> Action:
 
 
 def read_problem(text: str, source: str = "<problem>") -> Problem:
-    """Parse a problem."""
+    """Parse a problem (at most ``MAX_PDDL_BYTES`` characters)."""
+    if len(text) > MAX_PDDL_BYTES:
+        raise PDDLError(f"{clip(source)}: longer than {MAX_PDDL_BYTES} characters (MAX_PDDL_BYTES)")
     try:
         exprs = parse(text, source)
     except SexprError as exc:
