@@ -32,8 +32,9 @@ MAX_JSON_BYTES = 2 << 30
 #: expand about tenfold; a gzip bomb a thousandfold), and always to this many bytes
 MAX_EXPANSION = 40
 MIN_EXPANDED_BYTES = 32 << 20
-#: a temporary file of an interrupted save older than this is removed by the next save
-#: of the same memory (a save killed outright, e.g. by SIGKILL, cannot clean up itself)
+#: a temporary file of a save is removed by the next save of the same memory (or the
+#: start of a session saving it) once its writer is gone, or in any case once it is older
+#: than this (a save killed outright, e.g. by SIGKILL, cannot clean up itself)
 STALE_TMP_SECONDS = 600.0
 PICKLE_HINT = (
     "it is a pickle (robocog's memory format before version 1, or any pickle), refused "
@@ -76,10 +77,18 @@ def _sweep_stale(target: Path) -> None:
     cutoff = _time.time() - STALE_TMP_SECONDS
     for p in folder.glob(f".{_glob_escape(target.name)}.*.tmp"):
         try:
-            if p.is_file() and not p.is_symlink() and p.stat().st_mtime < cutoff:
+            if not p.is_file() or p.is_symlink():
+                continue
+            if not atomic.writer_alive(p, target.name) or p.stat().st_mtime < cutoff:
                 p.unlink()
         except OSError:
             pass
+
+
+def sweep_stale(path: str | os.PathLike[str]) -> None:
+    """Remove what killed saves of ``path`` left behind (a session's start does this
+    for its ``--save`` file, a save for its own)."""
+    _sweep_stale(Path(path))
 
 
 def _glob_escape(name: str) -> str:

@@ -28,10 +28,17 @@ from .terms import Term, atom, sweep_early
 #: the most cycles one input line may ask for (a bare number): ONA's examples ask for
 #: a thousand at most; a hundred million is hours of work, so more is a typo
 MAX_CYCLES_PER_LINE = 100_000_000
+#: a cycles line runs in slices of this many cycles, asking ``NAR.stop_requested``
+#: between them (a hundred cycles of a full memory take a few tenths of a second)
+CYCLE_SLICE = 100
 
 
 class NAR(Reasoner):
     """A Non-Axiomatic Reasoner with ONA's behaviour and a bounded memory."""
+
+    #: asked between slices of a cycles line; true ends the line early (the shell sets
+    #: it to stop on SIGINT and SIGTERM, the inspector's console to its stop command)
+    stop_requested: Callable[[], bool] | None = None
 
     def __init__(self, seed: int = 666, ona: str = "0.9.2", **config_overrides: object) -> None:
         # ``ona``: whose behaviour to follow, ONA 0.9.2's (the papers') or 0.9.3's
@@ -141,8 +148,17 @@ class NAR(Reasoner):
             if n and self.time >= MAX_TIME:
                 raise NarseseError(1, 1, f"the reasoner's time has reached {MAX_TIME}; *reset")
             emit(self, f"performing {n} inference steps:")
-            cycle.cycles(self, n)
-            emit(self, f"done with {n} additional inference steps.")
+            done = 0
+            while done < n:
+                # in slices, asking between them whether to stop (a signal to the
+                # shell, a stop button): a long line ends within a slice's time
+                k = min(n - done, CYCLE_SLICE)
+                cycle.cycles(self, k)
+                done += k
+                stop = self.stop_requested
+                if stop is not None and done < n and stop():
+                    break
+            emit(self, f"done with {done} additional inference steps.")
             return
         if line.startswith("*"):
             self._command(line)
