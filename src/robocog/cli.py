@@ -8,11 +8,15 @@ subcommand module provides ``configure(parser)`` to declare its arguments and
 
 from __future__ import annotations
 
-import argparse
-import importlib
+# Only what the interpreter has loaded already: a Ctrl-C while this module is imported
+# would otherwise end in a traceback (``main`` takes over at once, see there)
 import signal
 import sys
-from collections.abc import Sequence
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    import argparse
+    from collections.abc import Sequence
 
 #: name -> (module, one-line help)
 COMMANDS: dict[str, tuple[str, str]] = {
@@ -34,6 +38,8 @@ COMMANDS: dict[str, tuple[str, str]] = {
 
 
 def _load(name: str):  # noqa: ANN202 - a module object
+    import importlib
+
     module_name = COMMANDS[name][0]
     try:
         return importlib.import_module(module_name)
@@ -47,6 +53,8 @@ def _load(name: str):  # noqa: ANN202 - a module object
 
 def build_parser(argv: Sequence[str]) -> argparse.ArgumentParser:
     """Build the top-level parser; only the chosen subcommand's module is imported."""
+    import argparse
+
     from robocog import __version__
 
     parser = argparse.ArgumentParser(
@@ -66,17 +74,34 @@ def build_parser(argv: Sequence[str]) -> argparse.ArgumentParser:
 def main(argv: Sequence[str] | None = None) -> int:
     """Entry point of the ``robocog`` console script."""
     argv = list(sys.argv[1:] if argv is None else argv)
+    # while the command's modules are imported (a second or more), Ctrl-C ends the
+    # process quietly: an interrupt inside an import would otherwise print a traceback
+    # from whichever module it hit
+    before = signal.getsignal(signal.SIGINT)
+    if before is signal.default_int_handler:
+        signal.signal(signal.SIGINT, _quit_quietly)
     try:
         parser = build_parser(argv)
         args = parser.parse_args(argv)
         if args.command is None:
             parser.print_help()
             return 2
-        return int(_load(args.command).run(args) or 0)
+        module = _load(args.command)
+        if before is signal.default_int_handler:
+            signal.signal(signal.SIGINT, before)
+        return int(module.run(args) or 0)
     except KeyboardInterrupt as stop:
         # Ctrl-C (or a SIGTERM a command turned into the same) ends a command without a
         # traceback, with the shell's code for it: 128 + the signal's number
         return 128 + int(getattr(stop, "signum", signal.SIGINT))
+
+
+def _quit_quietly(signum: int, frame: object) -> None:
+    """SIGINT before a command runs: leave at once with 130, without a word."""
+    sys.stderr.flush()
+    import os
+
+    os._exit(128 + signum)
 
 
 if __name__ == "__main__":
