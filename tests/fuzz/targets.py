@@ -168,6 +168,10 @@ def _narsese(data: bytes) -> object:
 
     if parse_pattern(str(s.term)) is not s.term:
         raise Violation(f"{s.term} does not read back as itself")
+    from robocog.nars.narsese import read_canonical
+
+    if read_canonical(str(s.term)) is not s.term:  # (the saved memories' reader)
+        raise Violation(f"{s.term} does not read back as itself from a memory")
     return s
 
 

@@ -54,7 +54,7 @@ def test_mutated_texts_are_judged_as_the_grammar_judges_them() -> None:
     pieces = ["<", ">", "(", ")", "{", "}", "[", "]", " ", "-->", "&&", "*", "!", "a", "$1", "  "]
     texts = [str(parse_sentence(line).term) for line in LINES]
     checked = 0
-    for _ in range(3000):
+    for _ in range(10000):
         s = rng.choice(texts)
         i = rng.randrange(len(s) + 1)
         if rng.random() < 0.5:

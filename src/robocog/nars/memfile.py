@@ -367,7 +367,8 @@ def _obj(v: object, where: str, keys: tuple[str, ...]) -> dict[str, Any]:
     want = _KEYSETS.get(keys)
     if want is None:
         want = _KEYSETS[keys] = frozenset(keys)
-    if type(v) is dict and v.keys() == want:
+    if type(v) is dict and (tuple(v) == keys or v.keys() == want):
+        # (the writer's order first: a tuple compares faster than a set is built)
         return v
     if not (isinstance(v, dict)):
         raise _Bad(where, "is not an object")
@@ -627,6 +628,50 @@ class _Reader:
         return tuple(_int(x, f"{where}[{i}]", 0, CLOCK_MAX) for i, x in enumerate(ids))
 
     def event(self, v: object, where: str, config: dict[str, object]) -> Event:
+        # The fast path: an event as robocog writes it (fields in the writer's order, of
+        # the writer's types, every value in range) is built without a call per field;
+        # anything else goes the checked way below, which says what is wrong.
+        if type(v) is dict and tuple(v) == _EVENT:
+            term, kind, truth, stamp, occ, created, dt, processed, is_input = v.values()
+            terms = self.terms
+            if (
+                type(term) is int
+                and 0 <= term < len(terms)
+                and (kind == BELIEF or kind == GOAL)
+                and type(occ) is int
+                and EVENT_TIME_MIN <= occ <= EVENT_TIME_MAX
+                and type(created) is int
+                and EVENT_TIME_MIN <= created <= EVENT_TIME_MAX
+                and type(dt) is float
+                and -MAX_TIME <= dt <= MAX_TIME
+                and (processed is True or processed is False)
+                and (is_input is True or is_input is False)
+                and type(stamp) is list
+                and len(stamp) <= _MAX_STAMP
+                and all(type(x) is int and 0 <= x <= CLOCK_MAX for x in stamp)
+                and type(truth) is list
+                and len(truth) == 2
+            ):
+                f, c = truth
+                t = self.truths.get((f, c)) if type(f) is float and type(c) is float else None
+                if t is None and type(f) is float and type(c) is float:
+                    if 0.0 <= f <= 1.0 and 0.0 <= c < 1.0:
+                        t = self.truths[f, c] = Truth(f, c)
+                if t is not None:
+                    return Event(
+                        terms[term],
+                        kind,
+                        t,
+                        tuple(stamp),
+                        ETERNAL if occ == ETERNAL else occ,
+                        created,
+                        dt,
+                        processed,
+                        is_input,
+                    )
+        return self._checked_event(v, where)
+
+    def _checked_event(self, v: object, where: str) -> Event:
         e = _obj(v, where, _EVENT)
         kind = e["type"]
         if kind not in (BELIEF, GOAL):
@@ -682,7 +727,64 @@ class _Reader:
         by_id: dict[int, Concept] = {}
         seen_terms: set[Term] = set()
         last_id = 0
+        events = self.event_list
+        n_events = len(events)
+        n_terms = len(self.terms)
+        ops, size = memory.operations, memory.table_size
         for i, x in enumerate(_list(v, "concepts", _MAX_ITEMS)):
+            # the fast path: a concept as robocog writes it, without tables (most are),
+            # with every field of its type and in range; else the checked way below
+            if type(x) is dict and tuple(x) == _CONCEPT:
+                (cid, term_i, live, uses, last, b, bs, pb, gs, pre, links, prio, pt, st, pid,
+                 timed) = x.values()  # fmt: skip
+                if (
+                    type(cid) is int
+                    and 1 <= cid < next_id
+                    and cid not in by_id
+                    and type(term_i) is int
+                    and 0 <= term_i < n_terms
+                    and (live is True or live is False)
+                    and (not live or cid > last_id)
+                    and type(uses) is int
+                    and 0 <= uses <= 1 << 62
+                    and type(last) is int
+                    and EVENT_TIME_MIN <= last <= EVENT_TIME_MAX
+                    and pre is None
+                    and links is None
+                    and type(prio) is float
+                    and 0.0 <= prio <= 1.0
+                    and type(pt) is int
+                    and 0 <= pt <= EVENT_TIME_MAX
+                    and type(st) is int
+                    and 0 <= st <= EVENT_TIME_MAX
+                    and type(pid) is int
+                    and 0 <= pid <= 1 << 62
+                    and (timed is True or timed is False)
+                    and all(
+                        e is None or (type(e) is int and 0 <= e < n_events) for e in (b, bs, pb, gs)
+                    )
+                ):
+                    term = self.terms[term_i]
+                    if live:
+                        if term in seen_terms:
+                            raise _Bad(f"concepts[{i}].term", f"{term} has two concepts")
+                        seen_terms.add(term)
+                        last_id = cid
+                    c = Concept(cid, term, 0, ops, size)
+                    c.use_count = uses
+                    c.last_used = last
+                    c.belief = None if b is None else events[b]
+                    c.belief_spike = None if bs is None else events[bs]
+                    c.predicted_belief = None if pb is None else events[pb]
+                    c.goal_spike = None if gs is None else events[gs]
+                    c.priority = prio
+                    c.priority_time = pt
+                    c.selected_time = st
+                    c.process_id = pid
+                    c.timed = timed
+                    by_id[cid] = c
+                    out.append((c, live))
+                    continue
             where = f"concepts[{i}]"
             d = _obj(x, where, _CONCEPT)
             cid = _int(d["id"], where + ".id", 1, next_id - 1)
