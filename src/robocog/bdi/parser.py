@@ -691,7 +691,11 @@ def _include(
     if Path(name).is_absolute():
         candidates = [Path(name)]
     for path in candidates:
-        if path.is_file():
+        try:
+            found = path.is_file()
+        except OSError:  # a name too long for the file system, say: no such file
+            found = False
+        if found:
             prog = parse_program(read_source(path), str(path), search_path, depth + 1)
             ns = m.group(2)
             if ns and ns != DEFAULT_NS:
@@ -701,7 +705,9 @@ def _include(
                 prog.plans = [_plan_in(p, ns) for p in prog.plans]
             return prog
     looked = ", ".join(str(c) for c in candidates)
-    raise ParseError(f"include: no file {name!r} (looked at {looked})", line, column, source)
+    raise ParseError(
+        f"include: no file {clip(name)!r} (looked at {clip(looked, 300)})", line, column, source
+    )
 
 
 #: the largest source file the reader takes (a program is text a person wrote)
