@@ -8,7 +8,7 @@ the ratio of the two term readers on the same texts. ONA has no saved memories, 
 the grammar is the peer here.
 
     python benchmarks/nars_memory_load.py                   # ~285 KB memory
-    python benchmarks/nars_memory_load.py --links 4000      # a smaller one
+    python benchmarks/nars_memory_load.py --links 1200      # a larger one (~450 KB)
 """
 
 from __future__ import annotations
@@ -44,7 +44,7 @@ def build(links: int, path: Path) -> None:
 
 def main() -> None:
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    p.add_argument("--links", type=int, default=9_000, help="taxonomy links in the session")
+    p.add_argument("--links", type=int, default=850, help="taxonomy links in the session")
     p.add_argument("--rounds", type=int, default=5)
     args = p.parse_args()
     with tempfile.TemporaryDirectory() as d:
@@ -52,11 +52,12 @@ def main() -> None:
         build(args.links, path)
         size = os.path.getsize(path)
         NAR(seed=1)  # the rule table, built once per process
-        loads = []
+        loads, cpu = [], []
         for _ in range(args.rounds):
-            t0 = time.perf_counter()
+            t0, c0 = time.perf_counter(), time.process_time()
             NAR.load(path)
             loads.append(time.perf_counter() - t0)
+            cpu.append(time.process_time() - c0)
         texts = json.loads(read_file(path))["terms"]
         t0 = time.perf_counter()
         for t in texts:

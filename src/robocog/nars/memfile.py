@@ -1,7 +1,8 @@
 """Saved memories: a versioned data format that holds data and nothing else.
 
 A memory file is gzip-compressed JSON (plain JSON is read too). Terms are written as
-Narsese text and read back through the Narsese parser; everything else is numbers,
+Narsese text and read back by ``narsese.read_canonical`` (the printed form only, without
+the grammar: thousands of terms a file); everything else is numbers,
 strings, lists and objects, checked for type, range and size before any of it reaches
 a reasoner, so a file from anywhere can at worst be refused. The layout, field by
 field, is documented in ``docs/nars.md`` ("Saved memories").
