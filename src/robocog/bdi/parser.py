@@ -646,6 +646,9 @@ def parse_program(
     not know, is an error naming it, so nothing goes missing without a word.
     """
     if isinstance(text, str) and len(text) > MAX_PROGRAM_CHARS:
+        for number, line in enumerate(text.split("\n"), start=1):
+            if len(line) > MAX_LINE_CHARS:  # (the more precise error first)
+                raise ParseError(f"line longer than {MAX_LINE_CHARS} characters", number, 1, source)
         raise ParseError(
             f"a program is at most {MAX_PROGRAM_CHARS} characters (MAX_PROGRAM_CHARS); "
             f"this one has {len(text)}",

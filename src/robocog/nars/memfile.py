@@ -15,7 +15,6 @@ message on how to convert one that is trusted (``tools/convert_pickle_memory.py`
 from __future__ import annotations
 
 import json
-import math
 import os
 from collections import deque
 from collections.abc import Iterable
@@ -23,10 +22,18 @@ from dataclasses import dataclass, field
 from typing import Any, Protocol
 
 from robocog import __version__
-from robocog.limits import clip
 
 from .config import MAX_TIME, NEWER_PARAMETERS, Config, checked_value
 from .event import BELIEF, ETERNAL, GOAL, Event, Implication
+from .memfile_checks import Bad as _Bad
+from .memfile_checks import boolean as _bool
+from .memfile_checks import check as _check
+from .memfile_checks import float_in as _float
+from .memfile_checks import int_in as _int
+from .memfile_checks import list_of as _list
+from .memfile_checks import object_of as _obj
+from .memfile_checks import show as _show
+from .memfile_checks import string as _str
 from .memfile_io import FORMAT, MemoryFileError, read_file, zlib_gzip
 from .memfile_io import is_memory_file as is_memory_file  # (for the shell)
 from .memfile_io import path_in as path_in  # (for the *save/*load commands)
@@ -294,100 +301,6 @@ def decode(data: bytes, source: str = "memory") -> Snapshot:
         return _Reader(doc).snapshot()
     except _Bad as exc:
         raise MemoryFileError(f"{source}: {exc.where}: {exc.what}") from None
-
-
-class _Bad(Exception):
-    def __init__(self, where: str, what: str) -> None:
-        super().__init__(f"{where}: {what}")
-        self.where = where
-        self.what = what
-
-
-def _check(ok: bool, where: str, what: str) -> None:
-    if not ok:
-        raise _Bad(where, what)
-
-
-# Each check has a fast path for a value that passes (a file has hundreds of thousands
-# of fields, and building the message of a failure that does not happen would be most
-# of the loading time); the slow path says what is wrong.
-def _int(v: object, where: str, lo: int, hi: int) -> int:
-    if type(v) is int and lo <= v <= hi:
-        return v
-    if not (isinstance(v, int) and not isinstance(v, bool)):
-        raise _Bad(where, f"{_show(v)} is not an integer")
-    if not (lo <= v <= hi):  # type: ignore[operator]
-        raise _Bad(where, f"{_show(v)} is out of range [{lo}, {hi}]")
-    return v  # type: ignore[return-value]
-
-
-def _float(v: object, where: str, lo: float, hi: float) -> float:
-    if type(v) is float and lo <= v <= hi and v - v == 0.0:
-        return v
-    ok = isinstance(v, int | float) and not isinstance(v, bool)
-    if not ok:
-        raise _Bad(where, f"{_show(v)} is not a number")
-    if isinstance(v, float) and not math.isfinite(v):
-        raise _Bad(where, f"{v!r} is not finite")
-    if not (lo <= v <= hi):  # type: ignore[operator]
-        raise _Bad(where, f"{_show(v)} is out of range [{lo:g}, {hi:g}]")
-    return float(v)  # type: ignore[arg-type]
-
-
-def _show(v: object) -> str:
-    """A value from the file as an error message shows it: at most 40 characters."""
-    try:
-        text = repr(v)
-    except ValueError:  # an integer past Python's digit limit for text
-        return "a huge number"
-    return clip(text, 40)
-
-
-def _bool(v: object, where: str) -> bool:
-    if v is True or v is False:
-        return v
-    if not (isinstance(v, bool)):
-        raise _Bad(where, f"{_show(v)} is not true or false")
-    return v  # type: ignore[return-value]
-
-
-def _list(v: object, where: str, most: int) -> list[Any]:
-    if type(v) is list and len(v) <= most:
-        return v
-    if not (isinstance(v, list)):
-        raise _Bad(where, "is not a list")
-    if not (len(v) <= most):  # type: ignore[arg-type]
-        raise _Bad(where, f"has {len(v)} items, at most {most} are allowed")
-    return v  # type: ignore[return-value]
-
-
-_KEYSETS: dict[tuple[str, ...], frozenset[str]] = {}
-
-
-def _obj(v: object, where: str, keys: tuple[str, ...]) -> dict[str, Any]:
-    want = _KEYSETS.get(keys)
-    if want is None:
-        want = _KEYSETS[keys] = frozenset(keys)
-    if type(v) is dict and (tuple(v) == keys or v.keys() == want):
-        # (the writer's order first: a tuple compares faster than a set is built)
-        return v
-    if not (isinstance(v, dict)):
-        raise _Bad(where, "is not an object")
-    missing = sorted(want - v.keys())  # type: ignore[union-attr]
-    if not (not missing):
-        raise _Bad(where, f"lacks {', '.join(missing)}")
-    extra = sorted(v.keys() - want)  # type: ignore[union-attr]
-    if not (not extra):
-        raise _Bad(where, f"has unknown fields {', '.join(extra)}")
-    return v  # type: ignore[return-value]
-
-
-def _str(v: object, where: str, most: int) -> str:
-    if not (isinstance(v, str)):
-        raise _Bad(where, f"{_show(v)} is not a string")
-    if not (len(v) <= most):  # type: ignore[arg-type]
-        raise _Bad(where, f"longer than {most} characters")
-    return v  # type: ignore[return-value]
 
 
 _TOP = (
