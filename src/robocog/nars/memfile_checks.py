@@ -15,6 +15,8 @@ from robocog.limits import clip
 
 
 class Bad(Exception):
+    """A field that fails its check: ``where`` names it, ``what`` says why."""
+
     def __init__(self, where: str, what: str) -> None:
         super().__init__(f"{where}: {what}")
         self.where = where
@@ -22,11 +24,13 @@ class Bad(Exception):
 
 
 def check(ok: bool, where: str, what: str) -> None:
+    """Raise Bad(where, what) unless ``ok``."""
     if not ok:
         raise Bad(where, what)
 
 
 def int_in(v: object, where: str, lo: int, hi: int) -> int:
+    """``v`` if it is an integer (not a boolean) in [lo, hi]."""
     if type(v) is int and lo <= v <= hi:
         return v
     if not (isinstance(v, int) and not isinstance(v, bool)):
@@ -37,6 +41,7 @@ def int_in(v: object, where: str, lo: int, hi: int) -> int:
 
 
 def float_in(v: object, where: str, lo: float, hi: float) -> float:
+    """``v`` as a float if it is a finite number (not a boolean) in [lo, hi]."""
     if type(v) is float and lo <= v <= hi and v - v == 0.0:
         return v
     ok = isinstance(v, int | float) and not isinstance(v, bool)
@@ -59,6 +64,7 @@ def show(v: object) -> str:
 
 
 def boolean(v: object, where: str) -> bool:
+    """``v`` if it is true or false."""
     if v is True or v is False:
         return v
     if not (isinstance(v, bool)):
@@ -67,6 +73,7 @@ def boolean(v: object, where: str) -> bool:
 
 
 def list_of(v: object, where: str, most: int) -> list[Any]:
+    """``v`` if it is a list of at most ``most`` items."""
     if type(v) is list and len(v) <= most:
         return v
     if not (isinstance(v, list)):
@@ -80,6 +87,7 @@ _KEYSETS: dict[tuple[str, ...], frozenset[str]] = {}
 
 
 def object_of(v: object, where: str, keys: tuple[str, ...]) -> dict[str, Any]:
+    """``v`` if it is an object with exactly the fields ``keys``."""
     want = _KEYSETS.get(keys)
     if want is None:
         want = _KEYSETS[keys] = frozenset(keys)
@@ -98,6 +106,7 @@ def object_of(v: object, where: str, keys: tuple[str, ...]) -> dict[str, Any]:
 
 
 def string(v: object, where: str, most: int) -> str:
+    """``v`` if it is a string of at most ``most`` characters."""
     if not (isinstance(v, str)):
         raise Bad(where, f"{show(v)} is not a string")
     if not (len(v) <= most):  # type: ignore[arg-type]
