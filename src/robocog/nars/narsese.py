@@ -310,6 +310,11 @@ class _NotCanonical(ValueError):
     pass
 
 
+_NAME_TEXT = _NAME_RE.pattern
+#: the commonest term of a memory, a statement between two names, read in one match
+_SIMPLE_TERM = re.compile(f"<({_NAME_TEXT}) (-->|<->|==>|<=>|=/>|\\|->) ({_NAME_TEXT})>")
+
+
 def read_canonical(text: str) -> Term:
     """The term whose printed form (``str(term)``) is exactly ``text``, without the
     grammar: what a saved memory holds, read at a few microseconds a term.
@@ -318,6 +323,10 @@ def read_canonical(text: str) -> Term:
     (any other text, Narsese or not, raises ValueError): variables keep their names,
     compounds are binary, sets hold distinct elements. Terms nested past Python's
     recursion limit raise RecursionError, as the grammar's builder does."""
+    simple = _SIMPLE_TERM.fullmatch(text)
+    if simple is not None:
+        a, cop, b = simple.groups()
+        return compound(cop, (atom(a), atom(b)))
     try:
         term, end = _read_at(text, 0)
     except IndexError:
