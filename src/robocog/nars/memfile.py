@@ -22,6 +22,7 @@ from dataclasses import dataclass, field
 from typing import Any, Protocol
 
 from robocog import __version__
+from robocog.limits import MESSAGE_CHARS, clip
 
 from .config import MAX_TIME, NEWER_PARAMETERS, Config, checked_value
 from .event import BELIEF, ETERNAL, GOAL, Event, Implication
@@ -296,11 +297,12 @@ def decode(data: bytes, source: str = "memory") -> Snapshot:
     except RecursionError:
         raise MemoryFileError(f"{source}: nested too deeply") from None
     except ValueError as exc:
-        raise MemoryFileError(f"{source}: not valid JSON: {exc}") from None
+        raise MemoryFileError(f"{source}: not valid JSON: {clip(str(exc), 200)}") from None
     try:
         return _Reader(doc).snapshot()
     except _Bad as exc:
-        raise MemoryFileError(f"{source}: {exc.where}: {exc.what}") from None
+        where, what = clip(exc.where, 200), clip(exc.what, MESSAGE_CHARS)
+        raise MemoryFileError(f"{source}: {where}: {what}") from None
 
 
 _TOP = (

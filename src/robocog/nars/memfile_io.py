@@ -140,6 +140,23 @@ def expansion_bound(compressed: int) -> int:
     return min(MAX_JSON_BYTES, max(MIN_EXPANDED_BYTES, MAX_EXPANSION * compressed))
 
 
+def _expanded_size(raw: bytes, bound: int, name: str) -> int:
+    """How many bytes ``raw`` decompresses to, counted up to ``bound + 1``."""
+    d = zlib.decompressobj(31)
+    total = 0
+    data = raw
+    try:
+        while total <= bound and not d.eof:
+            got = len(d.decompress(data, 1 << 20))
+            total += got
+            data = d.unconsumed_tail
+            if not data and not got:
+                break  # all input taken, no output pending: a truncated stream
+    except zlib.error as exc:
+        raise MemoryFileError(f"{name}: damaged compressed data ({exc})") from None
+    return total
+
+
 def read_file(path: str | os.PathLike[str]) -> bytes:
     """The JSON text of the memory file at ``path``, decompressed within the bounds."""
     name = str(path)
@@ -160,13 +177,16 @@ def read_file(path: str | os.PathLike[str]) -> bytes:
     if raw[:1] == b"\x80":
         raise MemoryFileError(f"{name}: {PICKLE_HINT}")
     if raw[:2] == b"\x1f\x8b":
-        d = zlib.decompressobj(31)
         bound = expansion_bound(len(raw))
+        # a first pass measures the expansion a megabyte at a time, holding none of
+        # it, so that a gzip bomb is refused without ever being held
+        size = _expanded_size(raw, bound, name)
+        d = zlib.decompressobj(31)
         try:
-            data = d.decompress(raw, bound + 1)
+            data = d.decompress(raw, min(size, bound) + 1) if size <= bound else b""
         except zlib.error as exc:
             raise MemoryFileError(f"{name}: damaged compressed data ({exc})") from None
-        if len(data) > bound:
+        if size > bound or len(data) > bound:
             raise MemoryFileError(
                 f"{name}: decompresses to more than {bound} bytes ({MAX_EXPANSION} times its "
                 f"size, at least {MIN_EXPANDED_BYTES}, at most {MAX_JSON_BYTES}): not a "
