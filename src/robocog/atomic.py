@@ -27,6 +27,8 @@ def write_bytes(path: str | os.PathLike[str], data: bytes, mode: int | None = No
     """
     target = Path(path)
     target.parent.mkdir(parents=True, exist_ok=True)
+    # the writer's process id is in the name: a later writer removes at once the
+    # temporary file of one killed outright (see ``writer_alive``)
     fd, tmp = _create_beside(target)
     try:
         with os.fdopen(fd, "wb") as f:
@@ -54,12 +56,31 @@ def _create_beside(target: Path) -> tuple[int, Path]:
     """
     flags = os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_CLOEXEC", 0)
     for _ in range(100):
-        tmp = target.parent / f".{target.name}.{secrets.token_hex(4)}.tmp"
+        tmp = target.parent / f".{target.name}.{os.getpid()}.{secrets.token_hex(4)}.tmp"
         try:
             return os.open(tmp, flags, 0o666), tmp
         except FileExistsError:
             continue
     raise FileExistsError(f"{target.parent}: no free name for a temporary file")
+
+
+def writer_alive(temporary: str | os.PathLike[str], target_name: str) -> bool:
+    """Whether the process that made ``temporary`` (a file :func:`write_bytes` made for
+    ``target_name``) may still be writing it: False once that process is gone."""
+    rest = Path(temporary).name[len(target_name) + 2 :]
+    pid_text = rest.split(".", 1)[0]
+    if not pid_text.isdigit():
+        return True  # (a name from before process ids were in it: age decides)
+    pid = int(pid_text)
+    if pid == os.getpid():
+        return False  # this process writes one file at a time, in write_bytes
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except (PermissionError, OverflowError, OSError):
+        return True
+    return True
 
 
 def write_text(path: str | os.PathLike[str], text: str) -> None:

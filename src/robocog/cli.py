@@ -8,13 +8,15 @@ subcommand module provides ``configure(parser)`` to declare its arguments and
 
 from __future__ import annotations
 
-import argparse
-import importlib
-import os
+# Only what the interpreter has loaded already: a Ctrl-C while this module is imported
+# would otherwise end in a traceback (``main`` takes over at once, see there)
 import signal
 import sys
-from collections.abc import Sequence
-from typing import NoReturn
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    import argparse
+    from collections.abc import Sequence
 
 #: name -> (module, one-line help)
 COMMANDS: dict[str, tuple[str, str]] = {
@@ -44,6 +46,8 @@ COMMANDS: dict[str, tuple[str, str]] = {
 
 
 def _load(name: str):  # noqa: ANN202 - a module object
+    import importlib
+
     module_name = COMMANDS[name][0]
     try:
         return importlib.import_module(module_name)
@@ -55,22 +59,29 @@ def _load(name: str):  # noqa: ANN202 - a module object
         raise
 
 
-class Parser(argparse.ArgumentParser):
+def _parser_class() -> type[argparse.ArgumentParser]:
     """argparse's parser whose errors are one line: what was wrong and where the help is.
 
     (argparse prints the whole usage first, which for most commands is longer than the
     error and pushes it out of sight.) Every subcommand's parser, nested ones too, is of
-    this class, as argparse makes subparsers of their parent's class."""
+    this class, as argparse makes subparsers of their parent's class. Made when the
+    command line is read, since argparse is imported only then (see the imports)."""
+    import argparse
+    from typing import NoReturn
 
-    def error(self, message: str) -> NoReturn:  # noqa: D102 - argparse's hook
-        self.exit(2, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
+    class Parser(argparse.ArgumentParser):
+        def error(self, message: str) -> NoReturn:  # noqa: D102 - argparse's hook
+            self.exit(2, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
+
+    return Parser
 
 
 def build_parser(argv: Sequence[str]) -> argparse.ArgumentParser:
     """Build the top-level parser; only the chosen subcommand's module is imported."""
+
     from robocog import __version__
 
-    parser = Parser(
+    parser = _parser_class()(
         prog="robocog",
         description="A reasoning mind for robots: NARS, AgentSpeak and an AtomSpace planner.",
     )
@@ -87,16 +98,27 @@ def build_parser(argv: Sequence[str]) -> argparse.ArgumentParser:
 def main(argv: Sequence[str] | None = None) -> int:
     """Entry point of the ``robocog`` console script."""
     argv = list(sys.argv[1:] if argv is None else argv)
+    # while the command's modules are imported (a second or more), Ctrl-C ends the
+    # process quietly: an interrupt inside an import would otherwise print a traceback
+    # from whichever module it hit
+    before = signal.getsignal(signal.SIGINT)
+    if before is signal.default_int_handler:
+        signal.signal(signal.SIGINT, _quit_quietly)
     try:
         parser = build_parser(argv)
         args = parser.parse_args(argv)
         if args.command is None:
             parser.print_help()
             return 2
-        return int(_load(args.command).run(args) or 0)
+        module = _load(args.command)
+        if before is signal.default_int_handler:
+            signal.signal(signal.SIGINT, before)
+        return int(module.run(args) or 0)
     except Exception as exc:
         # the last guard of "no traceback reaches a user": an error no command turned into
         # its own message is still one line, with the way to see where it came from
+        import os
+
         if os.environ.get("ROBOCOG_TRACEBACK"):
             raise
         name = " ".join(["robocog", *argv[:1]]) if argv and argv[0] in COMMANDS else "robocog"
@@ -112,6 +134,14 @@ def main(argv: Sequence[str] | None = None) -> int:
         # Ctrl-C (or a SIGTERM a command turned into the same) ends a command without a
         # traceback, with the shell's code for it: 128 + the signal's number
         return 128 + int(getattr(stop, "signum", signal.SIGINT))
+
+
+def _quit_quietly(signum: int, frame: object) -> None:
+    """SIGINT before a command runs: leave at once with 130, without a word."""
+    sys.stderr.flush()
+    import os
+
+    os._exit(128 + signum)
 
 
 if __name__ == "__main__":

@@ -27,6 +27,7 @@ from robocog.atomspace.values import (
     TruthValue,
     Value,
 )
+from robocog.limits import clip
 
 SCHEMA_VERSION = "1"
 
@@ -78,9 +79,9 @@ class SQLiteStore:
                 )
             elif row[0] != SCHEMA_VERSION:
                 raise StoreError(f"{path}: schema version {row[0]}, expected {SCHEMA_VERSION}")
-        except sqlite3.DatabaseError as exc:
+        except (sqlite3.DatabaseError, ValueError) as exc:  # (text that is not UTF-8)
             self._db.close()
-            raise StoreError(f"{path}: not an AtomSpace store ({exc})") from None
+            raise StoreError(f"{path}: not an AtomSpace store ({clip(str(exc), 200)})") from None
 
     def close(self) -> None:
         """Close the database."""
@@ -189,8 +190,16 @@ class SQLiteStore:
     def load(self, space: AtomSpace | None = None, types: Iterable[str] | None = None) -> AtomSpace:
         """Load every atom (or only the atoms of ``types``, with their outgoing atoms)
         into ``space`` (a new one by default) and return it."""
-        with bulk():
-            return self._load(space, types)
+        try:
+            with bulk():
+                return self._load(space, types)
+        except StoreError:
+            raise
+        except (sqlite3.DatabaseError, ValueError, TypeError, KeyError, RecursionError) as exc:
+            # a damaged or foreign file: every row is data from outside, so whatever it
+            # holds ends in one error naming the file
+            why = clip(f"{type(exc).__name__}: {exc}", 200)
+            raise StoreError(f"{self.path}: not a readable AtomSpace store ({why})") from None
 
     def _load(self, space: AtomSpace | None, types: Iterable[str] | None) -> AtomSpace:
         if space is None:

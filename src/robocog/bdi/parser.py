@@ -40,6 +40,7 @@ from robocog.bdi.terms import (
     sort_annots,
     term_str,
 )
+from robocog.limits import MESSAGE_CHARS, clip
 
 
 class ParseError(ValueError):
@@ -49,8 +50,8 @@ class ParseError(ValueError):
         self.line = line
         self.column = column
         self.source = source
-        self.reason = message
-        where = f"{source}:" if source else ""
+        self.reason = message = clip(message, MESSAGE_CHARS)
+        where = f"{clip(source, 200)}:" if source else ""
         super().__init__(f"{where}{line}:{column}: {message}")
 
 
@@ -636,6 +637,12 @@ MAX_INCLUDE_DEPTH = 32
 _INCLUDE = re.compile(r'\s*include\s*\(\s*"((?:[^"\\]|\\.)*)"\s*(?:,\s*(\w+)\s*)?\)\s*\Z')
 
 
+#: the longest program (one file) the reader takes: an agent's program is a few
+#: kilobytes, and the parser reads a dense one of this size in about a second (time
+#: grows with the size; a megabyte would take half a minute)
+MAX_PROGRAM_CHARS = 64 * 1024
+
+
 def parse_program(
     text: str, source: str = "", search_path: Sequence[str | Path] = (), _depth: int = 0
 ) -> Program:
@@ -646,6 +653,17 @@ def parse_program(
     project's ``aslSourcePath``). A file that is not found, or a directive robocog does
     not know, is an error naming it, so nothing goes missing without a word.
     """
+    if isinstance(text, str) and len(text) > MAX_PROGRAM_CHARS:
+        for number, line in enumerate(text.split("\n"), start=1):
+            if len(line) > MAX_LINE_CHARS:  # (the more precise error first)
+                raise ParseError(f"line longer than {MAX_LINE_CHARS} characters", number, 1, source)
+        raise ParseError(
+            f"a program is at most {MAX_PROGRAM_CHARS} characters (MAX_PROGRAM_CHARS); "
+            f"this one has {len(text)}",
+            1,
+            1,
+            source,
+        )
     items = _run("start", text, source)
     prog = Program()
     for kind, value in items:
@@ -685,7 +703,11 @@ def _include(
     if Path(name).is_absolute():
         candidates = [Path(name)]
     for path in candidates:
-        if path.is_file():
+        try:
+            found = path.is_file()
+        except OSError:  # a name too long for the file system, say: no such file
+            found = False
+        if found:
             prog = parse_program(read_source(path), str(path), search_path, depth + 1)
             ns = m.group(2)
             if ns and ns != DEFAULT_NS:
@@ -695,7 +717,9 @@ def _include(
                 prog.plans = [_plan_in(p, ns) for p in prog.plans]
             return prog
     looked = ", ".join(str(c) for c in candidates)
-    raise ParseError(f"include: no file {name!r} (looked at {looked})", line, column, source)
+    raise ParseError(
+        f"include: no file {clip(name)!r} (looked at {clip(looked, 300)})", line, column, source
+    )
 
 
 #: the largest source file the reader takes (a program is text a person wrote)

@@ -33,6 +33,7 @@ from robocog.bdi.agent import Agent
 from robocog.bdi.mas import MultiAgentSystem
 from robocog.bdi.parser import ParseError, parse_literal, read_source
 from robocog.bdi.terms import Literal
+from robocog.limits import clip
 
 #: the most agents one project may start (a typo in ``#N`` should not eat the machine)
 MAX_AGENTS = 10_000
@@ -117,10 +118,19 @@ def _class_ref(kind: str, tree: lark.Tree) -> ClassRef:
     return ref
 
 
+#: the largest project file read: a .mas2j names a few agents (lark reads one of this
+#: size in about a second)
+MAX_PROJECT_CHARS = 64 << 10
+
+
 def read_project(path: str | Path) -> Project:
     """Read a ``.mas2j`` file; a malformed one is a ParseError with line and column."""
     p = Path(path)
     text = read_source(p)
+    if len(text) > MAX_PROJECT_CHARS:
+        raise ParseError(
+            f"larger than {MAX_PROJECT_CHARS} characters (MAX_PROJECT_CHARS)", 1, 1, str(p)
+        )
     with _lock:
         try:
             tree = _grammar().parse(text)
@@ -156,7 +166,11 @@ def _expected(exc: lark.exceptions.UnexpectedInput) -> str:
     if isinstance(exc, lark.exceptions.UnexpectedCharacters):
         return f"unexpected {exc.char!r}"
     if isinstance(exc, lark.exceptions.UnexpectedToken):
-        return "unexpected end of file" if exc.token.type == "$END" else f"unexpected {exc.token!s}"
+        return (
+            "unexpected end of file"
+            if exc.token.type == "$END"
+            else f"unexpected {clip(str(exc.token), 40)}"
+        )
     return "unexpected end of file"
 
 

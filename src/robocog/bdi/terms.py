@@ -605,10 +605,20 @@ def sort_annots(annots: Iterable[Term]) -> tuple:
     """Annotations in Jason's order, without duplicates (a tail ``|T`` last)."""
     seen: list[Term] = []
     tail = None
+    # a set of the annotations seen keeps this linear (a list's ``in`` made 20,000
+    # annotations take half a minute); terms are hashable, equal ones hash equally
+    known: set[Term] = set()
     for a in annots:
         if a.__class__ is AnnotTail:
             tail = a
-        elif a not in seen:
+        else:
+            try:
+                if a in known:
+                    continue
+                known.add(a)
+            except TypeError:  # an unhashable term (none is, but a caller may pass one)
+                if a in seen:
+                    continue
             seen.append(a)
     if len(seen) > 1:
         seen.sort(key=_Key)

@@ -144,7 +144,11 @@ class RobotBody:
         and counted: it cannot say where an obstacle is (+inf ranges are ROS's "no
         return" and stay)."""
         numbers = (scan.angle_min, scan.angle_increment, scan.range_min, scan.range_max)
-        if not all(math.isfinite(v) for v in numbers) or any(math.isnan(r) for r in scan.ranges):
+        if (
+            not all(math.isfinite(v) for v in numbers)
+            or any(math.isnan(r) for r in scan.ranges)
+            or not _sane_scan(scan)
+        ):
             self.drop_reading("scan")
             return
         with self._lock:
@@ -171,7 +175,8 @@ class RobotBody:
 
     def on_pose(self, pose: PoseReading) -> None:
         """The robot's pose arrived; one that is not finite is dropped and counted."""
-        if not all(math.isfinite(v) for v in (pose.x, pose.y, pose.yaw)):
+        values = (pose.x, pose.y, pose.yaw)
+        if not all(math.isfinite(v) for v in values) or max(map(abs, values)) > MAX_COORDINATE:
             self.drop_reading("pose")
             return
         with self._lock:
@@ -227,12 +232,16 @@ class RobotBody:
             self._lock.notify_all()
 
     def drop_reading(self, sensor: str) -> None:
-        """Count a reading refused for NaN or infinite values (it never reaches a mind)."""
+        """Count a reading refused for NaN, infinite or absurd values (it never reaches
+        a mind)."""
         with self._lock:
             count = self.dropped.get(sensor, 0) + 1
             self.dropped[sensor] = count
         if count == 1:
-            log.warning("dropped a %s reading with NaN or infinite values (counted)", sensor)
+            log.warning(
+                "dropped a %s reading with NaN, infinite or out-of-range values (counted)",
+                sensor,
+            )
 
     def _touch(self) -> None:
         self._last_reading = time.monotonic()
@@ -473,8 +482,33 @@ class RobotBody:
         return Outcome.failure(f"the gripper did not confirm {text!r}")
 
 
+#: the largest coordinate (metres, pixels) a reading may hold: a robot's world and its
+#: camera are far smaller; a value past it is a fault of the sender, dropped and counted
+MAX_COORDINATE = 1e6
+#: the largest scan angle (radians) taken, for the first ray and for the step between rays
+MAX_SCAN_ANGLE = 4 * math.pi
+
+
 def _finite_box(box: BoxReading) -> bool:
-    return all(math.isfinite(v) for v in (box.score, box.center_x, *box.position))
+    """A detection a mind may get: finite, a score (confidence) in [0, 1], coordinates
+    within ``MAX_COORDINATE``."""
+    values = (box.score, box.center_x, *box.position)
+    if not all(math.isfinite(v) for v in values):
+        return False
+    return 0.0 <= box.score <= 1.0 and max(map(abs, values)) <= MAX_COORDINATE
+
+
+def _sane_scan(scan: ScanReading) -> bool:
+    """Scan angles within ``MAX_SCAN_ANGLE`` (the last ray's angle finite), limits within
+    ``MAX_COORDINATE``."""
+    last = abs(scan.angle_min) + abs(scan.angle_increment) * max(0, len(scan.ranges) - 1)
+    return (
+        abs(scan.angle_min) <= MAX_SCAN_ANGLE
+        and abs(scan.angle_increment) <= MAX_SCAN_ANGLE
+        and math.isfinite(last)
+        and 0.0 <= scan.range_min <= MAX_COORDINATE
+        and abs(scan.range_max) <= MAX_COORDINATE
+    )
 
 
 def _goal_outcome(status: str) -> Outcome:

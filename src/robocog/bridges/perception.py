@@ -66,7 +66,10 @@ def nearest_obstacle(
     for i, r in enumerate(scan.ranges):
         if not math.isfinite(r) or r < scan.range_min or r > scan.range_max:
             continue
-        angle = _wrap(scan.angle_min + i * scan.angle_increment)
+        raw = scan.angle_min + i * scan.angle_increment
+        if not math.isfinite(raw):
+            continue  # (absurd angles: a ray with no direction)
+        angle = _wrap(raw)
         if abs(angle) > half_width:
             continue
         if r < best:

@@ -41,7 +41,7 @@ MAX_QUEUED = 64
 CONSOLE = 200
 #: the mind command kinds the console offers
 MIND_COMMANDS = ("tell", "ask", "belief", "goal", "query", "english")
-CONTROL = ("pause", "resume", "step")
+CONTROL = ("pause", "resume", "step", "stop")
 
 
 class Recorder:
@@ -94,6 +94,7 @@ class Inspector:
         self._queue: deque[Json] = deque()
         self.console: deque[Json] = deque(maxlen=CONSOLE)
         self._next_id = 1
+        self._stop_command = False
         self.paused = False
         self._steps = 0
         self.closed = False
@@ -254,6 +255,11 @@ class Inspector:
                     self.paused = True
                 self._steps += 1
                 entry.update(status="ok", reply="one cycle")
+            elif kind == "stop":
+                # the console command running now ends at its next slice (a NARS
+                # cycles line every hundred cycles); the ones queued behind it still run
+                self._stop_command = True
+                entry.update(status="ok", reply="stopping the running command")
             else:
                 if not self.live:
                     raise ValueError("this is a recorded run: there is no mind to instruct")
@@ -273,9 +279,12 @@ class Inspector:
             self._queue.clear()
         for entry in todo:
             view = self._mind_view
+            self._stop_command = False
             try:
                 if view is None:
                     raise ValueError("this mind offers no console")
+                if hasattr(view, "should_stop"):
+                    view.should_stop = self.command_stopped
                 reply = view.command(entry["kind"], entry["text"])
                 status = "ok"
             except Exception as exc:  # the engine's reader names line and column
@@ -285,6 +294,13 @@ class Inspector:
                 entry["status"] = status
                 entry["cycle"] = self._cycle
         return True
+
+    def command_stopped(self) -> bool:
+        """Whether the console command running now should end (the page's ``stop``, the
+        inspector closing, or the command's Ctrl-C): asked by the mind's view between
+        slices of its work."""
+        interrupted = self.interrupted
+        return self._stop_command or self.closed or bool(interrupted and interrupted())
 
     def console_entries(self, after: int = 0) -> list[Json]:
         """Console entries with an id above ``after`` (copies)."""

@@ -29,6 +29,7 @@ from typing import Any
 from robocog.inspector.hub import MAX_INPUT, Inspector
 from robocog.inspector.snapshot import Snapshot
 from robocog.inspector.snapshot import dumps as snapshot_dumps
+from robocog.limits import clip
 
 #: the largest request body accepted (bytes)
 MAX_BODY = MAX_INPUT * 4 + 256
@@ -45,6 +46,18 @@ def is_loopback(host: str) -> bool:
         return ipaddress.ip_address(host.strip("[]")).is_loopback
     except ValueError:
         return False
+
+
+def same_origin(origin: str, host: str) -> bool:
+    """True when an ``Origin`` header names the address the request was sent to
+    (``http://`` and the ``Host`` header's name and port)."""
+    from urllib.parse import urlsplit
+
+    try:
+        parts = urlsplit(origin)
+    except ValueError:
+        return False
+    return parts.scheme in ("http", "https") and bool(host) and parts.netloc.lower() == host.lower()
 
 
 def new_token() -> str:
@@ -260,7 +273,9 @@ def make_app(
             if not isinstance(kind, str) or not isinstance(text, str):
                 raise TypeError("kind and text are strings")
         except (ValueError, KeyError, TypeError) as exc:
-            return reply({"error": f"bad command: {exc}"}, 400)
+            return reply({"error": f"bad command: {clip(str(exc), 200)}"}, 400)
+        except RecursionError:
+            return reply({"error": "bad command: JSON nested too deeply"}, 400)
         try:
             entry = inspector.submit(kind, text)
         except ValueError as exc:
@@ -321,6 +336,12 @@ def make_app(
             refused = None
             if not allow_any_host and not is_loopback(host):
                 refused = (421, "this inspector answers loopback names only")
+            origin = hdrs.get("origin")
+            if refused is None and origin is not None and scope.get("method") != "GET":
+                # a command from a page of another site (or any client naming one):
+                # only the inspector's own page may send commands
+                if not same_origin(origin, hdrs.get("host", "")):
+                    refused = (403, "commands are taken from the inspector's own page only")
             if token is not None:
                 given = hdrs.get("x-robocog-token", "")
                 if not given:

@@ -338,6 +338,8 @@ class NarsView:
 
         self.nar = nar
         self.mind = mind
+        #: set by the inspector: true ends a console command at its next slice
+        self.should_stop: Callable[[], bool] | None = None
         self.decisions: deque[Json] = deque(maxlen=LINES)
         self.answers: deque[str] = deque(maxlen=LINES)
         self._before = nar.output
@@ -469,7 +471,15 @@ class NarsView:
                 return "Answer: None."
             return f"Answer: {answer.term}. Truth: frequency={answer.truth.f:f}, confidence={answer.truth.c:f}"
         if kind == "tell":
-            nar.add_input(text)
+            # a cycles line runs in slices, asking between them whether to stop: a
+            # hundred million cycles do not hold the loop (nor, compiled, the server's
+            # thread) past the page's stop or the end of the process
+            before = nar.stop_requested
+            nar.stop_requested = self.should_stop
+            try:
+                nar.add_input(text)
+            finally:
+                nar.stop_requested = before
             return f"Input: {text.strip()}"
         raise ValueError(f"NARS takes tell or ask, not {kind}")
 

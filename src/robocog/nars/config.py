@@ -224,11 +224,12 @@ def checked_value(name: str, value: object) -> object:
         return value
     if isinstance(value, bool) or not isinstance(value, int | float):
         raise ValueError(f"{name} is a number, not {value!r}")
-    if not math.isfinite(value):
+    if isinstance(value, float) and not math.isfinite(value):
         raise ValueError(f"{name} must be a finite number, not {value!r}")
     lo, hi = RANGES[name]
     if not lo <= value <= hi:
-        raise ValueError(f"{name}={value!r} is out of range [{lo:g}, {hi:g}]")
+        shown = repr(value) if len(repr(value)) <= 40 else f"{repr(value)[:40]}..."
+        raise ValueError(f"{name}={shown} is out of range [{lo:g}, {hi:g}]")
     if kind is int:
         if value != int(value):
             raise ValueError(f"{name} is a whole number, not {value!r}")

@@ -1,7 +1,8 @@
 """Saved memories: a versioned data format that holds data and nothing else.
 
 A memory file is gzip-compressed JSON (plain JSON is read too). Terms are written as
-Narsese text and read back through the Narsese parser; everything else is numbers,
+Narsese text and read back by ``narsese.read_canonical`` (the printed form only, without
+the grammar: thousands of terms a file); everything else is numbers,
 strings, lists and objects, checked for type, range and size before any of it reaches
 a reasoner, so a file from anywhere can at worst be refused. The layout, field by
 field, is documented in ``docs/nars.md`` ("Saved memories").
@@ -14,7 +15,6 @@ message on how to convert one that is trusted (``tools/convert_pickle_memory.py`
 from __future__ import annotations
 
 import json
-import math
 import os
 from collections import deque
 from collections.abc import Iterable
@@ -22,15 +22,26 @@ from dataclasses import dataclass, field
 from typing import Any, Protocol
 
 from robocog import __version__
+from robocog.limits import MESSAGE_CHARS, clip
 
 from .config import MAX_TIME, NEWER_PARAMETERS, Config, checked_value
 from .event import BELIEF, ETERNAL, GOAL, Event, Implication
+from .memfile_checks import Bad as _Bad
+from .memfile_checks import boolean as _bool
+from .memfile_checks import check as _check
+from .memfile_checks import float_in as _float
+from .memfile_checks import int_in as _int
+from .memfile_checks import list_of as _list
+from .memfile_checks import object_of as _obj
+from .memfile_checks import show as _show
+from .memfile_checks import string as _str
 from .memfile_io import FORMAT, MemoryFileError, read_file, zlib_gzip
 from .memfile_io import is_memory_file as is_memory_file  # (for the shell)
 from .memfile_io import path_in as path_in  # (for the *save/*load commands)
 from .memfile_io import write_file as write_file  # (for NAR.save)
 from .memory import Concept, EventQueue, Memory
-from .narsese import NarseseError, parse_pattern
+from .narsese import parse_pattern, read_canonical
+from .state import DEFAULT_OPERATIONS
 from .table import Table, restored_table
 from .terms import Term
 from .truth import Truth
@@ -40,6 +51,14 @@ VERSION = 1
 #: term's text, one operation's name
 MAX_TERM_CHARS = 65_536
 MAX_NAME_CHARS = 1_024
+#: the clock and stamp ids a file may hold. The reasoner takes input until its clock or
+#: its stamp ids reach MAX_TIME (``*currenttime`` and ``*stampid`` set at most that), and
+#: a cycles line runs at most MAX_CYCLES_PER_LINE past it: twice MAX_TIME leaves room
+#: for any session, so every memory a session reaches can be saved and loaded back
+CLOCK_MAX = 2 * MAX_TIME
+#: an event's times: the clock plus or minus a ``dt`` (at most MAX_TIME either way)
+EVENT_TIME_MIN = -2 * MAX_TIME
+EVENT_TIME_MAX = 4 * MAX_TIME
 
 
 class _State(Protocol):
@@ -184,7 +203,17 @@ class _Writer:
 
 
 def encode(nar: _State) -> bytes:
-    """The reasoner's whole state as the bytes of a memory file."""
+    """The reasoner's whole state as the bytes of a memory file.
+
+    A state the reader would refuse is not written: a clock or stamp id past
+    ``CLOCK_MAX`` (only a program driving the reasoner past MAX_TIME itself gets there)
+    raises MemoryFileError saying so."""
+    for what, value in (("time", nar.time), ("next stamp id", nar.stamp_base)):
+        if not 1 <= value <= CLOCK_MAX:
+            raise MemoryFileError(
+                f"the reasoner's {what} {value} is outside [1, {CLOCK_MAX}] (CLOCK_MAX), "
+                "which no memory file holds; not saved (*reset starts the clock again)"
+            )
     w = _Writer()
     mem = nar.memory
     live = list(mem.concepts.values())
@@ -268,64 +297,12 @@ def decode(data: bytes, source: str = "memory") -> Snapshot:
     except RecursionError:
         raise MemoryFileError(f"{source}: nested too deeply") from None
     except ValueError as exc:
-        raise MemoryFileError(f"{source}: not valid JSON: {exc}") from None
+        raise MemoryFileError(f"{source}: not valid JSON: {clip(str(exc), 200)}") from None
     try:
         return _Reader(doc).snapshot()
     except _Bad as exc:
-        raise MemoryFileError(f"{source}: {exc.where}: {exc.what}") from None
-
-
-class _Bad(Exception):
-    def __init__(self, where: str, what: str) -> None:
-        super().__init__(f"{where}: {what}")
-        self.where = where
-        self.what = what
-
-
-def _check(ok: bool, where: str, what: str) -> None:
-    if not ok:
-        raise _Bad(where, what)
-
-
-def _int(v: object, where: str, lo: int, hi: int) -> int:
-    _check(isinstance(v, int) and not isinstance(v, bool), where, f"{v!r} is not an integer")
-    _check(lo <= v <= hi, where, f"{v} is out of range [{lo}, {hi}]")  # type: ignore[operator]
-    return v  # type: ignore[return-value]
-
-
-def _float(v: object, where: str, lo: float, hi: float) -> float:
-    ok = isinstance(v, int | float) and not isinstance(v, bool)
-    _check(ok, where, f"{v!r} is not a number")
-    _check(math.isfinite(v), where, f"{v!r} is not finite")  # type: ignore[arg-type]
-    _check(lo <= v <= hi, where, f"{v} is out of range [{lo:g}, {hi:g}]")  # type: ignore[operator]
-    return float(v)  # type: ignore[arg-type]
-
-
-def _bool(v: object, where: str) -> bool:
-    _check(isinstance(v, bool), where, f"{v!r} is not true or false")
-    return v  # type: ignore[return-value]
-
-
-def _list(v: object, where: str, most: int) -> list[Any]:
-    _check(isinstance(v, list), where, "is not a list")
-    _check(len(v) <= most, where, f"has {len(v)} items, at most {most} are allowed")  # type: ignore[arg-type]
-    return v  # type: ignore[return-value]
-
-
-def _obj(v: object, where: str, keys: Iterable[str]) -> dict[str, Any]:
-    _check(isinstance(v, dict), where, "is not an object")
-    want = set(keys)
-    missing = sorted(want - v.keys())  # type: ignore[union-attr]
-    _check(not missing, where, f"lacks {', '.join(missing)}")
-    extra = sorted(v.keys() - want)  # type: ignore[union-attr]
-    _check(not extra, where, f"has unknown fields {', '.join(extra)}")
-    return v  # type: ignore[return-value]
-
-
-def _str(v: object, where: str, most: int) -> str:
-    _check(isinstance(v, str), where, f"{v!r} is not a string")
-    _check(len(v) <= most, where, f"longer than {most} characters")  # type: ignore[arg-type]
-    return v  # type: ignore[return-value]
+        where, what = clip(exc.where, 200), clip(exc.what, MESSAGE_CHARS)
+        raise MemoryFileError(f"{source}: {where}: {what}") from None
 
 
 _TOP = (
@@ -390,14 +367,17 @@ class _Reader:
 
     def __init__(self, doc: object) -> None:
         self.doc = _obj(doc, "file", _TOP) if isinstance(doc, dict) else None
-        _check(self.doc is not None, "file", "is not a JSON object")
+        if not (self.doc is not None):
+            raise _Bad("file", "is not a JSON object")
 
     def snapshot(self) -> Snapshot:
         d = self.doc
         assert d is not None
-        _check(d["format"] == FORMAT, "format", f"{d['format']!r} is not {FORMAT!r}")
+        if not (d["format"] == FORMAT):
+            raise _Bad("format", f"{_show(d['format'])} is not {FORMAT!r}")
         v = _int(d["version"], "version", 0, 1 << 30)
-        _check(v == VERSION, "version", f"version {v}; this robocog reads version {VERSION}")
+        if not (v == VERSION):
+            raise _Bad("version", f"version {v}; this robocog reads version {VERSION}")
         version = _str(d["robocog"], "robocog", 64)
         config = self.config(d["config"])
         self.terms = self.term_list(d["terms"])
@@ -416,7 +396,7 @@ class _Reader:
             "memory",
             ("capacity", "operations", "table_size", "next_concept_id", "evictions"),
         )
-        now = _int(r["time"], "reasoner.time", 1, MAX_TIME)
+        now = _int(r["time"], "reasoner.time", 1, CLOCK_MAX)
         memory = Memory(
             _int(m["capacity"], "memory.capacity", 1, 100_000_000),
             _int(m["operations"], "memory.operations", 1, 10_000),
@@ -435,7 +415,8 @@ class _Reader:
             self.queue(q, f"goal_layers[{i}]")
             for i, q in enumerate(_list(d["goal_layers"], "goal_layers", 1_000))
         ]
-        _check(bool(goal_layers), "goal_layers", "is empty")
+        if not (bool(goal_layers)):
+            raise _Bad("goal_layers", "is empty")
         ti = _obj(d["time_index"], "time_index", ("size", "concepts"))
         size = _int(ti["size"], "time_index.size", 1, 10_000_000)
         ids = _list(ti["concepts"], "time_index.concepts", size)
@@ -447,7 +428,8 @@ class _Reader:
         for i, row in enumerate(_list(d["table_index"], "table_index", 10_001)):
             where = f"table_index[{i}]"
             pair = _list(row, where, 2)
-            _check(len(pair) == 2, where, "is not [operation, concepts]")
+            if not (len(pair) == 2):
+                raise _Bad(where, "is not [operation, concepts]")
             op = _int(pair[0], where + "[0]", 0, memory.operations)
             cs = _list(pair[1], where + "[1]", _MAX_ITEMS)
             table_index[op] = {
@@ -457,7 +439,8 @@ class _Reader:
         for i, row in enumerate(_list(d["links_by_subject"], "links_by_subject", _MAX_ITEMS)):
             where = f"links_by_subject[{i}]"
             pair = _list(row, where, 2)
-            _check(len(pair) == 2, where, "is not [subject, links]")
+            if not (len(pair) == 2):
+                raise _Bad(where, "is not [subject, links]")
             ts = _list(pair[1], where + "[1]", _MAX_ITEMS)
             links[self.term(pair[0], where + "[0]")] = {
                 self.term(x, f"{where}[1][{j}]"): None for j, x in enumerate(ts)
@@ -475,14 +458,16 @@ class _Reader:
             for i, x in enumerate(_list(d["recent_goal_concepts"], "recent_goal_concepts", 10_000))
         }
         stats = _obj(r["stats"], "reasoner.stats", _STATS)
-        ops = _list(d["operations"], "operations", config["operations_max"])  # type: ignore[arg-type]
+        # (a reasoner starts with the default names, however few operations it allows)
+        most = max(config["operations_max"], len(DEFAULT_OPERATIONS))  # type: ignore[call-overload]
+        ops = _list(d["operations"], "operations", most)
         op_names = [self.op_name(x, f"operations[{i}]") for i, x in enumerate(ops)]
         return Snapshot(
             config=config,
             seed=_int(r["seed"], "reasoner.seed", -(1 << 63), (1 << 64) - 1),
             rand=_int(r["rand"], "reasoner.rand", -(1 << 63), (1 << 64) - 1),
             time=now,
-            stamp_base=_int(r["stamp_base"], "reasoner.stamp_base", 1, MAX_TIME),
+            stamp_base=_int(r["stamp_base"], "reasoner.stamp_base", 1, CLOCK_MAX),
             concept_threshold=_float(r["concept_threshold"], "reasoner.concept_threshold", 0, 1),
             matched_total=_int(r["matched_total"], "reasoner.matched_total", 0, 1 << 62),
             process_id=_int(r["process_id"], "reasoner.process_id", 0, 1 << 62),
@@ -506,7 +491,7 @@ class _Reader:
         if isinstance(v, dict):
             # a memory saved before a parameter existed has that parameter's default
             v = {k: defaults[k] for k in NEWER_PARAMETERS if k not in v} | v
-        c = _obj(v, "config", names)
+        c = _obj(v, "config", tuple(names))
         out: dict[str, object] = {}
         for k in names:
             try:
@@ -515,7 +500,8 @@ class _Reader:
                 raise _Bad(f"config.{k}", str(exc)) from None
             if isinstance(out[k], int) and not isinstance(out[k], bool):
                 # a whole float would pass ``checked_value``; the file holds integers
-                _check(isinstance(c[k], int), f"config.{k}", f"{c[k]!r} is not an integer")
+                if not (isinstance(c[k], int)):
+                    raise _Bad(f"config.{k}", f"{c[k]!r} is not an integer")
         return out
 
     def term_list(self, v: object) -> list[Term]:
@@ -524,13 +510,15 @@ class _Reader:
             where = f"terms[{i}]"
             text = _str(x, where, MAX_TERM_CHARS)
             try:
-                t = parse_pattern(text)
+                # the printed form only, read without the grammar (a memory holds
+                # thousands of terms); anything else is refused
+                t = read_canonical(text)
             except RecursionError:
                 raise _Bad(where, "term nested too deeply") from None
-            except Exception as exc:  # noqa: BLE001 - the parser's errors, reported as one line
-                msg = exc.message if isinstance(exc, NarseseError) else type(exc).__name__
-                raise _Bad(where, f"{text[:80]!r} is not a Narsese term ({msg})") from None
-            _check(str(t) == text, where, f"{text[:80]!r} is not in canonical form")
+            except ValueError as exc:
+                raise _Bad(
+                    where, f"{text[:80]!r} is not a Narsese term in canonical form ({exc})"
+                ) from None
             out.append(t)
         return out
 
@@ -540,10 +528,12 @@ class _Reader:
 
     def truth(self, v: object, where: str) -> Truth:
         pair = _list(v, where, 2)
-        _check(len(pair) == 2, where, "is not [frequency, confidence]")
+        if not (len(pair) == 2):
+            raise _Bad(where, "is not [frequency, confidence]")
         f = _float(pair[0], where + "[0]", 0.0, 1.0)
         c = _float(pair[1], where + "[1]", 0.0, 1.0)
-        _check(c < 1.0, where + "[1]", "a confidence is below 1")
+        if not (c < 1.0):
+            raise _Bad(where + "[1]", "a confidence is below 1")
         t = self.truths.get((f, c))
         if t is None:
             t = self.truths[f, c] = Truth(f, c)
@@ -551,20 +541,65 @@ class _Reader:
 
     def stamp(self, v: object, where: str) -> tuple[int, ...]:
         ids = _list(v, where, _MAX_STAMP)
-        return tuple(_int(x, f"{where}[{i}]", 0, MAX_TIME) for i, x in enumerate(ids))
+        return tuple(_int(x, f"{where}[{i}]", 0, CLOCK_MAX) for i, x in enumerate(ids))
 
     def event(self, v: object, where: str, config: dict[str, object]) -> Event:
+        # The fast path: an event as robocog writes it (fields in the writer's order, of
+        # the writer's types, every value in range) is built without a call per field;
+        # anything else goes the checked way below, which says what is wrong.
+        if type(v) is dict and tuple(v) == _EVENT:
+            term, kind, truth, stamp, occ, created, dt, processed, is_input = v.values()
+            terms = self.terms
+            if (
+                type(term) is int
+                and 0 <= term < len(terms)
+                and (kind == BELIEF or kind == GOAL)
+                and type(occ) is int
+                and EVENT_TIME_MIN <= occ <= EVENT_TIME_MAX
+                and type(created) is int
+                and EVENT_TIME_MIN <= created <= EVENT_TIME_MAX
+                and type(dt) is float
+                and -MAX_TIME <= dt <= MAX_TIME
+                and (processed is True or processed is False)
+                and (is_input is True or is_input is False)
+                and type(stamp) is list
+                and len(stamp) <= _MAX_STAMP
+                and all(type(x) is int and 0 <= x <= CLOCK_MAX for x in stamp)
+                and type(truth) is list
+                and len(truth) == 2
+            ):
+                f, c = truth
+                t = self.truths.get((f, c)) if type(f) is float and type(c) is float else None
+                if t is None and type(f) is float and type(c) is float:
+                    if 0.0 <= f <= 1.0 and 0.0 <= c < 1.0:
+                        t = self.truths[f, c] = Truth(f, c)
+                if t is not None:
+                    return Event(
+                        terms[term],
+                        kind,
+                        t,
+                        tuple(stamp),
+                        ETERNAL if occ == ETERNAL else occ,
+                        created,
+                        dt,
+                        processed,
+                        is_input,
+                    )
+        return self._checked_event(v, where)
+
+    def _checked_event(self, v: object, where: str) -> Event:
         e = _obj(v, where, _EVENT)
         kind = e["type"]
-        _check(kind in (BELIEF, GOAL), where + ".type", f"{kind!r} is not '.' or '!'")
-        occ = _int(e["occurrence_time"], where + ".occurrence_time", -MAX_TIME, 2 * MAX_TIME)
+        if kind not in (BELIEF, GOAL):
+            raise _Bad(where + ".type", f"{_show(kind)} is not '.' or '!'")
+        occ = _int(e["occurrence_time"], where + ".occurrence_time", EVENT_TIME_MIN, EVENT_TIME_MAX)
         return Event(
             self.term(e["term"], where + ".term"),
             kind,
             self.truth(e["truth"], where + ".truth"),
             self.stamp(e["stamp"], where + ".stamp"),
             ETERNAL if occ == ETERNAL else occ,
-            _int(e["creation_time"], where + ".creation_time", -MAX_TIME, 2 * MAX_TIME),
+            _int(e["creation_time"], where + ".creation_time", EVENT_TIME_MIN, EVENT_TIME_MAX),
             _float(e["dt"], where + ".dt", -MAX_TIME, MAX_TIME),
             _bool(e["processed"], where + ".processed"),
             _bool(e["is_input"], where + ".is_input"),
@@ -578,7 +613,7 @@ class _Reader:
             self.truth(m["truth"], where + ".truth"),
             self.stamp(m["stamp"], where + ".stamp"),
             _float(m["dt"], where + ".dt", -MAX_TIME, MAX_TIME),
-            _int(m["creation_time"], where + ".creation_time", -MAX_TIME, 2 * MAX_TIME),
+            _int(m["creation_time"], where + ".creation_time", EVENT_TIME_MIN, EVENT_TIME_MAX),
             None if source is None else self.term(source, where + ".source"),
         )
 
@@ -597,7 +632,8 @@ class _Reader:
             for i, x in enumerate(_list(t["items"], where + ".items", size))
         ]
         keys = {(m.term, m.dt == 0.0) for m in items}
-        _check(len(keys) == len(items), where, "holds one link of a kind twice")
+        if not (len(keys) == len(items)):
+            raise _Bad(where, "holds one link of a kind twice")
         return restored_table(size, items)
 
     def concepts(
@@ -607,23 +643,83 @@ class _Reader:
         by_id: dict[int, Concept] = {}
         seen_terms: set[Term] = set()
         last_id = 0
+        events = self.event_list
+        n_events = len(events)
+        n_terms = len(self.terms)
+        ops, size = memory.operations, memory.table_size
         for i, x in enumerate(_list(v, "concepts", _MAX_ITEMS)):
+            # the fast path: a concept as robocog writes it, without tables (most are),
+            # with every field of its type and in range; else the checked way below
+            if type(x) is dict and tuple(x) == _CONCEPT:
+                (cid, term_i, live, uses, last, b, bs, pb, gs, pre, links, prio, pt, st, pid,
+                 timed) = x.values()  # fmt: skip
+                if (
+                    type(cid) is int
+                    and 1 <= cid < next_id
+                    and cid not in by_id
+                    and type(term_i) is int
+                    and 0 <= term_i < n_terms
+                    and (live is True or live is False)
+                    and (not live or cid > last_id)
+                    and type(uses) is int
+                    and 0 <= uses <= 1 << 62
+                    and type(last) is int
+                    and EVENT_TIME_MIN <= last <= EVENT_TIME_MAX
+                    and pre is None
+                    and links is None
+                    and type(prio) is float
+                    and 0.0 <= prio <= 1.0
+                    and type(pt) is int
+                    and 0 <= pt <= EVENT_TIME_MAX
+                    and type(st) is int
+                    and 0 <= st <= EVENT_TIME_MAX
+                    and type(pid) is int
+                    and 0 <= pid <= 1 << 62
+                    and (timed is True or timed is False)
+                    and all(
+                        e is None or (type(e) is int and 0 <= e < n_events) for e in (b, bs, pb, gs)
+                    )
+                ):
+                    term = self.terms[term_i]
+                    if live:
+                        if term in seen_terms:
+                            raise _Bad(f"concepts[{i}].term", f"{term} has two concepts")
+                        seen_terms.add(term)
+                        last_id = cid
+                    c = Concept(cid, term, 0, ops, size)
+                    c.use_count = uses
+                    c.last_used = last
+                    c.belief = None if b is None else events[b]
+                    c.belief_spike = None if bs is None else events[bs]
+                    c.predicted_belief = None if pb is None else events[pb]
+                    c.goal_spike = None if gs is None else events[gs]
+                    c.priority = prio
+                    c.priority_time = pt
+                    c.selected_time = st
+                    c.process_id = pid
+                    c.timed = timed
+                    by_id[cid] = c
+                    out.append((c, live))
+                    continue
             where = f"concepts[{i}]"
             d = _obj(x, where, _CONCEPT)
             cid = _int(d["id"], where + ".id", 1, next_id - 1)
-            _check(cid not in by_id, where + ".id", f"{cid} occurs twice")
+            if not (cid not in by_id):
+                raise _Bad(where + ".id", f"{cid} occurs twice")
             live = _bool(d["in_memory"], where + ".in_memory")
             term = self.term(d["term"], where + ".term")
             if live:
                 # the memory's order is the order concepts were made in (eviction ties
                 # and the order of related concepts follow it)
-                _check(cid > last_id, where + ".id", "concepts in memory are not in order")
-                _check(term not in seen_terms, where + ".term", f"{term} has two concepts")
+                if not (cid > last_id):
+                    raise _Bad(where + ".id", "concepts in memory are not in order")
+                if not (term not in seen_terms):
+                    raise _Bad(where + ".term", f"{term} has two concepts")
                 seen_terms.add(term)
                 last_id = cid
             c = Concept(cid, term, 0, memory.operations, memory.table_size)
             c.use_count = _int(d["use_count"], where + ".use_count", 0, 1 << 62)
-            c.last_used = _int(d["last_used"], where + ".last_used", -MAX_TIME, 2 * MAX_TIME)
+            c.last_used = _int(d["last_used"], where + ".last_used", EVENT_TIME_MIN, EVENT_TIME_MAX)
             for slot in ("belief", "belief_spike", "predicted_belief", "goal_spike"):
                 setattr(c, slot, self.event_ref(d[slot], f"{where}.{slot}"))
             tables = d["precondition_beliefs"]
@@ -637,12 +733,13 @@ class _Reader:
                 built = [
                     self.table(t, f"{where}.precondition_beliefs[{j}]") for j, t in enumerate(ts)
                 ]
-                _check(None not in built, where + ".precondition_beliefs", "a table is null")
+                if not (None not in built):
+                    raise _Bad(where + ".precondition_beliefs", "a table is null")
                 c.precondition_beliefs = built  # type: ignore[assignment]
             c.implication_links = self.table(d["implication_links"], where + ".implication_links")
             c.priority = _float(d["priority"], where + ".priority", 0.0, 1.0)
-            c.priority_time = _int(d["priority_time"], where + ".priority_time", 0, 2 * MAX_TIME)
-            c.selected_time = _int(d["selected_time"], where + ".selected_time", 0, 2 * MAX_TIME)
+            c.priority_time = _int(d["priority_time"], where + ".priority_time", 0, EVENT_TIME_MAX)
+            c.selected_time = _int(d["selected_time"], where + ".selected_time", 0, EVENT_TIME_MAX)
             c.process_id = _int(d["process_id"], where + ".process_id", 0, 1 << 62)
             c.timed = _bool(d["timed"], where + ".timed")
             by_id[cid] = c
@@ -652,7 +749,8 @@ class _Reader:
     def concept_ref(self, v: object, by_id: dict[int, Concept], where: str) -> Concept:
         cid = _int(v, where, 1, MAX_TIME)
         c = by_id.get(cid)
-        _check(c is not None, where, f"no concept has id {cid}")
+        if not (c is not None):
+            raise _Bad(where, f"no concept has id {cid}")
         return c  # type: ignore[return-value]
 
     def queue(self, v: object, where: str) -> EventQueue:
@@ -663,16 +761,19 @@ class _Reader:
         for i, row in enumerate(items):
             w = f"{where}.items[{i}]"
             pair = _list(row, w, 2)
-            _check(len(pair) == 2, w, "is not [priority, event]")
+            if not (len(pair) == 2):
+                raise _Bad(w, "is not [priority, event]")
             prio = _float(pair[0], w + "[0]", 0.0, 1.0)
             e = self.event_ref(pair[1], w + "[1]")
-            _check(e is not None, w + "[1]", "is null")
+            if not (e is not None):
+                raise _Bad(w + "[1]", "is null")
             queue.push(e, prio)  # type: ignore[arg-type]
         return queue
 
     def op_name(self, v: object, where: str) -> str:
         name = _str(v, where, MAX_NAME_CHARS)
-        _check(is_operation_name(name), where, f"{name[:80]!r} is not an operation name")
+        if not (is_operation_name(name)):
+            raise _Bad(where, f"{name[:80]!r} is not an operation name")
         return name
 
 

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import os
 import re
+import stat
 import time as _time
 import zlib
 from pathlib import Path
@@ -27,8 +28,13 @@ HEADER_BYTES = 256
 #: decompressed (a small file can inflate a thousandfold)
 MAX_FILE_BYTES = 1 << 30
 MAX_JSON_BYTES = 2 << 30
-#: a temporary file of an interrupted save older than this is removed by the next save
-#: of the same memory (a save killed outright, e.g. by SIGKILL, cannot clean up itself)
+#: a compressed file may expand to at most this many times its size (robocog's memories
+#: expand about tenfold; a gzip bomb a thousandfold), and always to this many bytes
+MAX_EXPANSION = 40
+MIN_EXPANDED_BYTES = 32 << 20
+#: a temporary file of a save is removed by the next save of the same memory (or the
+#: start of a session saving it) once its writer is gone, or in any case once it is older
+#: than this (a save killed outright, e.g. by SIGKILL, cannot clean up itself)
 STALE_TMP_SECONDS = 600.0
 PICKLE_HINT = (
     "it is a pickle (robocog's memory format before version 1, or any pickle), refused "
@@ -71,23 +77,56 @@ def _sweep_stale(target: Path) -> None:
     cutoff = _time.time() - STALE_TMP_SECONDS
     for p in folder.glob(f".{_glob_escape(target.name)}.*.tmp"):
         try:
-            if p.is_file() and not p.is_symlink() and p.stat().st_mtime < cutoff:
+            if not p.is_file() or p.is_symlink():
+                continue
+            if not atomic.writer_alive(p, target.name) or p.stat().st_mtime < cutoff:
                 p.unlink()
         except OSError:
             pass
+
+
+def sweep_stale(path: str | os.PathLike[str]) -> None:
+    """Remove what killed saves of ``path`` left behind (a session's start does this
+    for its ``--save`` file, a save for its own)."""
+    _sweep_stale(Path(path))
 
 
 def _glob_escape(name: str) -> str:
     return "".join(f"[{ch}]" if ch in "*?[" else ch for ch in name)
 
 
+def _open_regular(path: str | os.PathLike[str]) -> int:
+    """A descriptor of the regular file at ``path``; anything else (a FIFO, a device such
+    as /dev/zero, a socket, a folder) is refused at once, before any read could block
+    or run without end. (Opened without blocking, then checked on the descriptor, so
+    the file checked is the file read.)"""
+    name = str(path)
+    try:
+        fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK | getattr(os, "O_CLOEXEC", 0))
+    except IsADirectoryError:
+        raise MemoryFileError(f"{name}: is a directory") from None
+    except OSError as exc:
+        raise MemoryFileError(f"{name}: cannot be read: {exc.strerror or exc}") from None
+    mode = os.fstat(fd).st_mode
+    if not stat.S_ISREG(mode):
+        os.close(fd)
+        what = "a directory" if stat.S_ISDIR(mode) else "not a regular file"
+        raise MemoryFileError(f"{name}: {what}; a memory is read from a regular file only")
+    os.set_blocking(fd, True)
+    return fd
+
+
 def is_memory_file(path: str | os.PathLike[str]) -> bool:
     """True if the file at ``path`` starts as a robocog memory file does."""
     try:
-        with open(path, "rb") as f:
-            head = f.read(4096)
-    except OSError:
+        fd = _open_regular(path)
+    except MemoryFileError:
         return False
+    with os.fdopen(fd, "rb") as f:
+        try:
+            head = f.read(4096)
+        except OSError:
+            return False
     if head[:2] == b"\x1f\x8b":
         try:
             head = zlib.decompressobj(31).decompress(head, HEADER_BYTES)
@@ -96,33 +135,70 @@ def is_memory_file(path: str | os.PathLike[str]) -> bool:
     return HEADER.match(head) is not None
 
 
+def expansion_bound(compressed: int) -> int:
+    """The most bytes a compressed file of ``compressed`` bytes may expand to."""
+    return min(MAX_JSON_BYTES, max(MIN_EXPANDED_BYTES, MAX_EXPANSION * compressed))
+
+
+def _expanded_size(raw: bytes, bound: int, name: str) -> int:
+    """How many bytes ``raw`` decompresses to, counted up to ``bound + 1``."""
+    d = zlib.decompressobj(31)
+    total = 0
+    data = raw
+    try:
+        while total <= bound and not d.eof:
+            got = len(d.decompress(data, 1 << 20))
+            total += got
+            data = d.unconsumed_tail
+            if not data and not got:
+                break  # all input taken, no output pending: a truncated stream
+    except zlib.error as exc:
+        raise MemoryFileError(f"{name}: damaged compressed data ({exc})") from None
+    return total
+
+
 def read_file(path: str | os.PathLike[str]) -> bytes:
     """The JSON text of the memory file at ``path``, decompressed within the bounds."""
     name = str(path)
-    try:
-        with open(path, "rb") as f:
-            size = os.fstat(f.fileno()).st_size
-            if size > MAX_FILE_BYTES:
-                raise MemoryFileError(f"{name}: larger than {MAX_FILE_BYTES} bytes")
-            raw = f.read(MAX_FILE_BYTES + 1)
-    except IsADirectoryError:
-        raise MemoryFileError(f"{name}: is a directory") from None
-    except OSError as exc:
-        raise MemoryFileError(f"{name}: cannot be read: {exc.strerror or exc}") from None
+    fd = _open_regular(path)
+    with os.fdopen(fd, "rb") as f:
+        size = os.fstat(fd).st_size
+        if size > MAX_FILE_BYTES:
+            raise MemoryFileError(f"{name}: larger than {MAX_FILE_BYTES} bytes (MAX_FILE_BYTES)")
+        try:
+            # (the size on disk, not the bound: a read of n bytes reserves n at once)
+            raw = f.read(size + 1)
+        except OSError as exc:
+            raise MemoryFileError(f"{name}: cannot be read: {exc.strerror or exc}") from None
+    if len(raw) > MAX_FILE_BYTES:
+        raise MemoryFileError(f"{name}: larger than {MAX_FILE_BYTES} bytes (MAX_FILE_BYTES)")
     if not raw:
         raise MemoryFileError(f"{name}: empty file, not a robocog memory")
     if raw[:1] == b"\x80":
         raise MemoryFileError(f"{name}: {PICKLE_HINT}")
     if raw[:2] == b"\x1f\x8b":
+        bound = expansion_bound(len(raw))
+        # a first pass measures the expansion a megabyte at a time, holding none of
+        # it, so that a gzip bomb is refused without ever being held
+        size = _expanded_size(raw, bound, name)
         d = zlib.decompressobj(31)
         try:
-            data = d.decompress(raw, MAX_JSON_BYTES + 1)
+            data = d.decompress(raw, min(size, bound) + 1) if size <= bound else b""
         except zlib.error as exc:
             raise MemoryFileError(f"{name}: damaged compressed data ({exc})") from None
-        if len(data) > MAX_JSON_BYTES:
-            raise MemoryFileError(f"{name}: decompresses to more than {MAX_JSON_BYTES} bytes")
+        if size > bound or len(data) > bound:
+            raise MemoryFileError(
+                f"{name}: decompresses to more than {bound} bytes ({MAX_EXPANSION} times its "
+                f"size, at least {MIN_EXPANDED_BYTES}, at most {MAX_JSON_BYTES}): not a "
+                "memory robocog saved"
+            )
         if not d.eof:
             raise MemoryFileError(f"{name}: truncated (the compressed data ends early)")
+        if d.unused_data:
+            raise MemoryFileError(
+                f"{name}: {len(d.unused_data)} bytes after the compressed memory "
+                "(a second member or trailing data); refused"
+            )
         raw = data
     if HEADER.match(raw[:HEADER_BYTES]) is None:
         start = raw[:16]

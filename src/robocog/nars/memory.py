@@ -110,7 +110,10 @@ class Concept:
 
     def usefulness(self, now: int) -> float:
         """u/(u+1) with u = uses per cycle since the last use."""
-        u = self.use_count / (now - self.last_used + 1)
+        span = now - self.last_used + 1
+        if span < 1:
+            span = 1  # (a clock set back by ``*currenttime``: used just now)
+        u = self.use_count / span
         return u / (u + 1.0)
 
 
@@ -530,7 +533,10 @@ _GONE = (-1, -1)
 
 def _usefulness(n: Count, last: Cycle, now1: Cycle) -> float:
     """u/(u+1) of a group: u = ``n`` uses per cycle since ``last``, ``now1`` one after now."""
-    u: float = n / (now1 - last)
+    span = now1 - last
+    if span < 1:
+        span = 1  # (a clock set back by ``*currenttime``: used just now)
+    u: float = n / span
     return u / (u + 1.0)
 
 

@@ -28,10 +28,17 @@ from .terms import Term, atom, sweep_early
 #: the most cycles one input line may ask for (a bare number): ONA's examples ask for
 #: a thousand at most; a hundred million is hours of work, so more is a typo
 MAX_CYCLES_PER_LINE = 100_000_000
+#: a cycles line runs in slices of this many cycles, asking ``NAR.stop_requested``
+#: between them (a hundred cycles of a full memory take a few tenths of a second)
+CYCLE_SLICE = 100
 
 
 class NAR(Reasoner):
     """A Non-Axiomatic Reasoner with ONA's behaviour and a bounded memory."""
+
+    #: asked between slices of a cycles line; true ends the line early (the shell sets
+    #: it to stop on SIGINT and SIGTERM, the inspector's console to its stop command)
+    stop_requested: Callable[[], bool] | None = None
 
     def __init__(self, seed: int = 666, ona: str = "0.9.2", **config_overrides: object) -> None:
         # ``ona``: whose behaviour to follow, ONA 0.9.2's (the papers') or 0.9.3's
@@ -138,9 +145,20 @@ class NAR(Reasoner):
             n = int(line) if len(line) <= 12 else MAX_CYCLES_PER_LINE + 1
             if n > MAX_CYCLES_PER_LINE:
                 raise NarseseError(1, 1, f"at most {MAX_CYCLES_PER_LINE} cycles per line")
+            if n and self.time >= MAX_TIME:
+                raise NarseseError(1, 1, f"the reasoner's time has reached {MAX_TIME}; *reset")
             emit(self, f"performing {n} inference steps:")
-            cycle.cycles(self, n)
-            emit(self, f"done with {n} additional inference steps.")
+            done = 0
+            while done < n:
+                # in slices, asking between them whether to stop (a signal to the
+                # shell, a stop button): a long line ends within a slice's time
+                k = min(n - done, CYCLE_SLICE)
+                cycle.cycles(self, k)
+                done += k
+                stop = self.stop_requested
+                if stop is not None and done < n and stop():
+                    break
+            emit(self, f"done with {done} additional inference steps.")
             return
         if line.startswith("*"):
             self._command(line)
@@ -151,6 +169,8 @@ class NAR(Reasoner):
         """Enter a parsed sentence: beliefs and goals run one cycle, questions are answered."""
         if self.time >= MAX_TIME:
             raise NarseseError(1, 1, f"the reasoner's time has reached {MAX_TIME}; *reset")
+        if self.stamp_base >= MAX_TIME and s.punctuation != "?":
+            raise NarseseError(1, 1, f"the stamp ids have reached {MAX_TIME}; *reset")
         if s.punctuation == "?":
             questions.answer(self, s.term, s.tense)
             return

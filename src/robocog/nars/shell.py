@@ -31,6 +31,7 @@ from .config import (
     concepts_for_memory,
     parse_size,
 )
+from .memfile_io import sweep_stale
 from .nar import NAR
 from .narsese import NarseseError
 
@@ -154,6 +155,7 @@ def check_save_path(path: str) -> str | None:
         return f"--save {path}: the folder {folder} does not exist"
     if target.exists() and not memfile.is_memory_file(target):
         return f"--save {path}: exists and is not a robocog memory; not overwritten"
+    sweep_stale(target)
     try:  # a real write, since permission bits do not tell (root, read-only mounts)
         fd, probe = tempfile.mkstemp(dir=folder, prefix=f".{target.name}.", suffix=".tmp")
         os.close(fd)
@@ -167,17 +169,20 @@ class _Stop(BaseException):
     """Raised by the signal handler to leave a blocking read of the input."""
 
 
-class _Abort(BaseException):
-    """A second signal before the first was acted on: end without saving."""
-
-
 class _Signals:
-    """SIGINT and SIGTERM end the session after the line in progress, saving first when
-    ``--save`` was given; a second signal ends it at once (without saving)."""
+    """SIGINT and SIGTERM end the session: a read of the input is left at once, a line
+    in progress ends (a cycles line at its next slice of cycles, ``CYCLE_SLICE``), then
+    the memory is saved when ``--save`` was given. Further signals change nothing: the
+    session is already ending, and the save is not cut short (it replaces the file
+    atomically, but a session must not end unsaved because a key was pressed twice).
+
+    The handler raises only while the shell waits for input (``reading``), so a signal
+    arriving anywhere else (at the end of the input, during a line or the save) is
+    noted and acted on where the shell checks it, never a traceback."""
 
     def __init__(self) -> None:
         self.received: int | None = None
-        self.busy = False
+        self.reading = False
         self.old: dict[int, object] = {}
 
     def install(self) -> None:
@@ -194,11 +199,15 @@ class _Signals:
             signal.signal(sig, old)  # type: ignore[arg-type]
 
     def handle(self, signum: int, frame: FrameType | None) -> None:
-        if self.received is not None:
-            raise _Abort
-        self.received = signum
-        if not self.busy:
+        if self.received is None:
+            self.received = signum
+        if self.reading:
+            self.reading = False
             raise _Stop
+
+    def stop_requested(self) -> bool:
+        """Asked by the reasoner between slices of a cycles line."""
+        return self.received is not None
 
 
 def _decoded(raw: bytes, lineno: int) -> tuple[str | None, str | None]:
@@ -291,31 +300,35 @@ def _session(nar: NAR, args: argparse.Namespace) -> int:
     nar.output = lambda line: out.write(line + "\n")
     nar.config.print_derivations = True
     signals = _Signals()
+    nar.stop_requested = signals.stop_requested
     signals.install()
-    aborted = False
+    lines = iter(sys.stdin.buffer)
+    lineno = 0
     try:
-        for lineno, raw in enumerate(sys.stdin.buffer, start=1):
-            signals.busy = True
+        while signals.received is None:
+            signals.reading = True
             try:
-                if _line(nar, raw, lineno, out):
-                    break
+                raw = next(lines, None)
             finally:
-                signals.busy = False
-            if signals.received is not None:
+                signals.reading = False
+            if raw is None:
                 break
+            lineno += 1
+            if _line(nar, raw, lineno, out):
+                break
+        signals.reading = False
     except _Stop:
         pass
-    except _Abort:
-        aborted = True
     signals.ignore()
+    nar.stop_requested = None
     code = 0 if signals.received is None else 128 + signals.received
-    if args.save and not aborted:
+    if args.save:
         try:
             nar.save(args.save)
         except (OSError, ValueError) as exc:
             print(f"robocog nar: {exc}", file=sys.stderr)
             code = code or 1
-    if not args.quiet and not aborted:
+    if not args.quiet:
         for line in nar.statistics():
             out.write(line + "\n")
     try:

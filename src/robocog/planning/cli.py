@@ -22,6 +22,7 @@ from robocog.argtypes import EXISTING_FILE, NEW_FILE, positive_int, seconds
 from robocog.atomic import write_text
 from robocog.planning.english import EnglishError
 from robocog.planning.pddl import PDDLError, ground, read_domain, read_problem, scene_problem
+from robocog.planning.pddl import read_file as read_pddl
 from robocog.planning.planner import (
     ALL_MODES,
     Planner,
@@ -91,8 +92,8 @@ def run(args: argparse.Namespace) -> int:
     try:
         if args.pddl:
             dom_path, prob_path = (Path(p) for p in args.pddl)
-            domain = read_domain(dom_path.read_text(), str(dom_path))
-            problem = read_problem(prob_path.read_text(), str(prob_path))
+            domain = read_domain(read_pddl(dom_path), str(dom_path))
+            problem = read_problem(read_pddl(prob_path), str(prob_path))
             task = ground(domain, problem)
             names = {a for lit in problem.goal for a in lit[1][1:]}
             result = solve_task(

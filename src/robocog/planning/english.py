@@ -24,6 +24,8 @@ from importlib import resources
 
 from lark import Lark, Transformer, UnexpectedInput, v_args
 
+from robocog.limits import clip
+
 
 @dataclass(frozen=True)
 class Statement:
@@ -62,7 +64,8 @@ class EnglishError(ValueError):
     """A sentence the grammar cannot read; says which sentence and where."""
 
     def __init__(self, message: str, sentence: str, number: int, line: int, column: int) -> None:
-        super().__init__(f"line {line}, column {column}: sentence {number} {sentence!r}: {message}")
+        shown = clip(sentence)
+        super().__init__(f"line {line}, column {column}: sentence {number} {shown!r}: {message}")
         self.sentence = sentence
         self.number = number
         self.line = line
@@ -102,6 +105,9 @@ class _ToStatement(Transformer):
         return (predicate[0], subject, predicate[1])
 
 
+#: the longest sentence and the longest text read (a request a person types)
+MAX_SENTENCE_CHARS = 1_000
+MAX_TEXT_CHARS = 100_000
 _SENTENCE = re.compile(r"[^.]*\.|[^.]+$")
 
 
@@ -125,13 +131,21 @@ def _describe(exc: UnexpectedInput) -> str:
     }
     want = ", ".join(dict.fromkeys(words.get(e, e.lower()) for e in expected)) or "something else"
     if token is not None and str(token):
-        return f"cannot read {str(token)!r} here; expected {want}"
+        return f"cannot read {clip(str(token), 40)!r} here; expected {want}"
     return f"the sentence stops too early; expected {want}"
 
 
 def read_sentence(text: str, number: int = 1, line: int = 1, column: int = 1) -> Statement:
     """Read one sentence; *line*/*column* say where it starts in a longer text."""
     stripped = text.strip()
+    if len(stripped) > MAX_SENTENCE_CHARS:
+        raise EnglishError(
+            f"longer than {MAX_SENTENCE_CHARS} characters (MAX_SENTENCE_CHARS)",
+            stripped,
+            number,
+            line,
+            column,
+        )
     try:
         tree = _parser().parse(stripped)
     except UnexpectedInput as exc:
@@ -148,6 +162,10 @@ def read_sentence(text: str, number: int = 1, line: int = 1, column: int = 1) ->
 
 def read_sentences(text: str) -> list[Statement]:
     """Read every sentence of *text* (sentences end with a full stop)."""
+    if len(text) > MAX_TEXT_CHARS:
+        raise EnglishError(
+            f"the text is longer than {MAX_TEXT_CHARS} characters (MAX_TEXT_CHARS)", text, 1, 1, 1
+        )
     out: list[Statement] = []
     number = 0
     for lineno, line in enumerate(text.splitlines() or [text], start=1):

@@ -11,10 +11,13 @@ and negated atoms. Errors name the line and column.
 
 from __future__ import annotations
 
+import os
+import stat
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from itertools import product
 
+from robocog.limits import MESSAGE_CHARS, clip
 from robocog.planning.sexpr import Sexpr, SexprError, SList, Symbol, parse
 from robocog.planning.task import PLACE, TAKE, Fact, Operator, Task, fact_text, intern_bit
 
@@ -22,7 +25,22 @@ Literal = tuple[bool, tuple[str, ...]]  # (positive?, (predicate, terms...))
 
 
 class PDDLError(ValueError):
-    """PDDL text the reader cannot take; the message starts with source:line:column."""
+    """PDDL text the reader cannot take; the message starts with source:line:column.
+
+    A message is at most ``MESSAGE_CHARS`` long: names from the input (a 10 MB one, say)
+    are not repeated whole."""
+
+    def __init__(self, message: str) -> None:
+        super().__init__(clip(message, MESSAGE_CHARS))
+
+
+#: the longest PDDL text (file) read: the domains and problems this planner solves are a
+#: few kilobytes, and the reader takes about a second for this many characters
+MAX_PDDL_BYTES = 128 << 10
+#: the most ground actions :func:`ground` makes; a domain and problem past it (three
+#: parameters over 200 objects: eight million) are refused before any is made; a search
+#: over more would not end in useful time anyway
+MAX_GROUND_ACTIONS = 50_000
 
 
 @dataclass
@@ -117,7 +135,9 @@ def _literals(expr: Sexpr, source: str) -> list[Literal]:
 
 
 def read_domain(text: str, source: str = "<domain>") -> Domain:
-    """Parse a STRIPS domain."""
+    """Parse a STRIPS domain (at most ``MAX_PDDL_BYTES`` characters)."""
+    if len(text) > MAX_PDDL_BYTES:
+        raise PDDLError(f"{clip(source)}: longer than {MAX_PDDL_BYTES} characters (MAX_PDDL_BYTES)")
     try:
         exprs = parse(text, source)
     except SexprError as exc:
@@ -184,7 +204,9 @@ def _read_action(section: SList, source: str) -> Action:
 
 
 def read_problem(text: str, source: str = "<problem>") -> Problem:
-    """Parse a problem."""
+    """Parse a problem (at most ``MAX_PDDL_BYTES`` characters)."""
+    if len(text) > MAX_PDDL_BYTES:
+        raise PDDLError(f"{clip(source)}: longer than {MAX_PDDL_BYTES} characters (MAX_PDDL_BYTES)")
     try:
         exprs = parse(text, source)
     except SexprError as exc:
@@ -201,6 +223,8 @@ def read_problem(text: str, source: str = "<problem>") -> Problem:
             raise _err("expected a section such as (:init ...)", section, source)
         key = section.head()
         if key == ":domain":
+            if len(section.items) != 2:
+                raise _err("expected (:domain NAME)", section, source)
             problem.domain = _sym(section.items[1], source, "the domain name")
         elif key == ":objects":
             problem.objects = _typed_list(section.items[1:], source)
@@ -215,6 +239,30 @@ def read_problem(text: str, source: str = "<problem>") -> Problem:
         else:
             raise _err(f"unknown section {key!r}", section, source)
     return problem
+
+
+def read_file(path: str | os.PathLike[str]) -> str:
+    """The text of a PDDL file: at most ``MAX_PDDL_BYTES``, UTF-8 (a byte that is not
+    is a PDDLError naming its line and column)."""
+    name = str(path)
+    try:
+        with open(path, "rb") as f:
+            if not stat.S_ISREG(os.fstat(f.fileno()).st_mode):
+                raise PDDLError(f"{name}: not a regular file")
+            data = f.read(MAX_PDDL_BYTES + 1)
+    except OSError as exc:
+        raise PDDLError(f"{name}: cannot be read: {exc.strerror or exc}") from None
+    if len(data) > MAX_PDDL_BYTES:
+        raise PDDLError(f"{name}: larger than {MAX_PDDL_BYTES} bytes (MAX_PDDL_BYTES)")
+    try:
+        return data.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        before = data[: exc.start].decode("utf-8", "replace")
+        line = before.count("\n") + 1
+        column = len(before) - (before.rfind("\n") + 1) + 1
+        raise PDDLError(
+            f"{name}:{line}:{column}: not UTF-8 (byte 0x{data[exc.start]:02x})"
+        ) from None
 
 
 def _subtypes(domain: Domain) -> dict[str, set[str]]:
@@ -251,6 +299,20 @@ def ground(domain: Domain, problem: Problem, hand: str = "holding") -> Task:
     of_type: dict[str, list[str]] = {}
     for typ in sub:
         of_type[typ] = [n for n, t in problem.objects if t in sub[typ] or typ == "object"]
+    total = 0
+    for action in domain.actions:
+        count = 1
+        for _, t in action.parameters:
+            count *= len(of_type.get(t, []))
+            if count > MAX_GROUND_ACTIONS:
+                break
+        total += count
+        if total > MAX_GROUND_ACTIONS:
+            raise PDDLError(
+                f"grounding would make more than {MAX_GROUND_ACTIONS} actions "
+                f"(MAX_GROUND_ACTIONS; action {clip(action.name)} over "
+                f"{len(objects)} objects): give fewer objects or parameters"
+            )
     facts: list[Fact] = []
     index: dict[Fact, int] = {}
 

@@ -9,12 +9,18 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from robocog.limits import MESSAGE_CHARS, clip
+
+#: how deep lists may nest: the readers above walk them recursively, and no domain,
+#: problem or rule file a person writes comes near it
+MAX_DEPTH = 200
+
 
 class SexprError(ValueError):
     """Malformed s-expression input, with the line and column (1-based) of the fault."""
 
     def __init__(self, message: str, line: int, column: int, source: str = "<input>") -> None:
-        super().__init__(f"{source}:{line}:{column}: {message}")
+        super().__init__(f"{clip(source)}:{line}:{column}: {clip(message, MESSAGE_CHARS)}")
         self.line = line
         self.column = column
         self.source = source
@@ -73,6 +79,10 @@ def parse(text: str, source: str = "<input>") -> list[Sexpr]:
                 i += 1
             continue
         if ch == "(":
+            if len(stack) > MAX_DEPTH:
+                raise SexprError(
+                    f"lists nested deeper than {MAX_DEPTH} (MAX_DEPTH)", line, col, source
+                )
             stack.append(([], line, col))
             i, col = i + 1, col + 1
             continue

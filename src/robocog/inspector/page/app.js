@@ -63,7 +63,7 @@ function showState(st) {
   if (!st.live) { badge.textContent = "recorded"; badge.className = "badge recorded"; }
   else if (st.paused) { badge.textContent = "paused"; badge.className = "badge paused"; }
   else { badge.textContent = "running"; badge.className = "badge running"; }
-  for (const id of ["pause", "step", "resume"]) $(id).disabled = !st.live;
+  for (const id of ["pause", "step", "resume", "stop"]) $(id).disabled = !st.live;
   const tl = $("timeline");
   tl.min = st.first; tl.max = Math.max(st.first, st.last);
   if (ui.follow) tl.value = st.last;
@@ -126,6 +126,7 @@ function askAbout(kind, text) {
 $("pause").onclick = () => send("pause");
 $("step").onclick = () => send("step");
 $("resume").onclick = () => send("resume");
+$("stop").onclick = () => send("stop");
 $("follow").onchange = (ev) => { ui.follow = ev.target.checked; if (ui.follow) getJSON("/api/snapshot").then(receive); };
 $("timeline").oninput = async (ev) => {
   ui.follow = false; $("follow").checked = false;
