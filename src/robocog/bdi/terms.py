@@ -12,10 +12,11 @@ lists as ``[1,2]`` and annotations as ``p(a)[source(self)]``.
 from __future__ import annotations
 
 import itertools
-import math
 import re
 from collections.abc import Iterable, Iterator
 from typing import Any
+
+from robocog.bdi.numbers import java_double_str, number_str  # noqa: F401 - part of this API
 
 Term = Any  # Var | Literal | Cons | Nil | Arith | Rel | And | Or | Not | Body | str | int | float
 
@@ -611,14 +612,8 @@ def sort_annots(annots: Iterable[Term]) -> tuple:
     for a in annots:
         if a.__class__ is AnnotTail:
             tail = a
-        else:
-            try:
-                if a in known:
-                    continue
-                known.add(a)
-            except TypeError:  # an unhashable term (none is, but a caller may pass one)
-                if a in seen:
-                    continue
+        elif a not in known:
+            known.add(a)
             seen.append(a)
     if len(seen) > 1:
         seen.sort(key=_Key)
@@ -629,52 +624,6 @@ def sort_annots(annots: Iterable[Term]) -> tuple:
 
 # ---------------------------------------------------------------------------
 # Printing, as Jason's toString
-
-
-def number_str(x: int | float) -> str:
-    """Jason prints integral numbers without a decimal part, others as Java doubles."""
-    if x.__class__ is int:
-        return str(x)
-    if x != x:
-        return "NaN"
-    if math.isinf(x):
-        return "Infinity" if x > 0 else "-Infinity"
-    if math.isfinite(x) and x == int(x) and abs(x) < 9.2e18:
-        return str(int(x))
-    return java_double_str(x)
-
-
-def java_double_str(x: float) -> str:
-    """``Double.toString``: plain notation in [1e-3, 1e7), scientific otherwise."""
-    if math.isnan(x):
-        return "NaN"
-    if math.isinf(x):
-        return "Infinity" if x > 0 else "-Infinity"
-    ax = abs(x)
-    if ax == 0 or 1e-3 <= ax < 1e7:
-        s = repr(x)
-        if "e" in s or "E" in s:
-            s = f"{x:f}".rstrip("0")
-        if "." not in s:
-            s += ".0"
-        if s.endswith("."):
-            s += "0"
-        return s
-    # shortest round-trip digits of x, re-expressed as d.dddE<exp>
-    sign = "-" if x < 0 else ""
-    digits = repr(ax)
-    if "e" in digits:
-        mant, _, e2 = digits.partition("e")
-        if "." not in mant:
-            mant += ".0"
-        return f"{sign}{mant}E{int(e2)}"
-    whole, _, frac = digits.partition(".")
-    if whole != "0":
-        exp_i = len(whole) - 1
-    else:
-        exp_i = -(len(frac) - len(frac.lstrip("0")) + 1)
-    sig = (whole + frac).lstrip("0").rstrip("0") or "0"
-    return f"{sign}{sig[0]}.{sig[1:] or '0'}E{exp_i}"
 
 
 _PLAIN_ATOM = set("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.")
