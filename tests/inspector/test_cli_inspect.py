@@ -216,7 +216,7 @@ def test_a_signal_ends_a_running_mind_and_closes_its_recording(tmp_path: Path, s
 # ---- a console line of a hundred million cycles -----------------------------------------
 
 #: how long a page file may take to come while the line runs (it takes a few hundredths
-#: of a second; the issue's bound is 1 s)
+#: of a second; a second is already a page that hangs)
 SERVED_WITHIN = 1.0
 #: how long the process may take to end on a signal while the line runs (measured: 0.26
 #: to 0.71 s in 20 trials on a loaded two-core machine; the goal is 2 s, and this bound
