@@ -90,6 +90,9 @@ class Parsed:
         return [f.atom for f in self.forms]
 
 
+# strings are written as an unrolled loop (runs of plain characters between escapes, the
+# loop possessive): ``(?:[^"\\]|\\.)*`` made the regex engine keep a backtracking mark per
+# character, some 150 bytes each, so a 10 MB string took gigabytes to read
 _TOKEN = re.compile(
     r"""
     (?P<ws>[ \t\r\f\v]+)
@@ -97,8 +100,8 @@ _TOKEN = re.compile(
   | (?P<comment>;[^\n]*)
   | (?P<open>\()
   | (?P<close>\))
-  | (?P<string>"(?:[^"\\]|\\.)*")
-  | (?P<badstring>"(?:[^"\\]|\\.)*\\?\Z)
+  | (?P<string>"[^"\\]*(?:\\.[^"\\]*)*+")
+  | (?P<badstring>"[^"\\]*(?:\\.[^"\\]*)*+\\?\Z)
   | (?P<quote>'[^\s()";']+)
   | (?P<symbol>[^\s()";']+)
   | (?P<other>.)

@@ -194,6 +194,8 @@ class Parameter:
 
 
 # ---------------------------------------------------------------------- reader
+# a string is an unrolled, possessive loop: no backtracking mark per character (see the
+# Atomese reader's tokens)
 _TOKEN = re.compile(
     r"""
     (?P<ws>[ \t\r\f\v]+)
@@ -206,7 +208,7 @@ _TOKEN = re.compile(
   | (?P<open>[(\[])
   | (?P<close>[)\]])
   | (?P<vopen>\#\()
-  | (?P<string>"(?:[^"\\]|\\.)*")
+  | (?P<string>"[^"\\]*(?:\\.[^"\\]*)*+")
   | (?P<badstring>")
   | (?P<quote>'|`|,@|,)
   | (?P<char>\#\\(?:[A-Za-z]+|.))
