@@ -106,6 +106,9 @@ class MujocoGarbageField(GarbageField):
     """The garbage field in MuJoCo: a ``Body`` with ``percepts()``, ``execute()``,
     ``time()``, and the 2D field's bookkeeping for the experiment's report."""
 
+    #: The MuJoCo base is larger than the 2D robot's disc: it keeps further off the fence.
+    fence_margin = 0.5
+
     def __init__(
         self,
         config: GarbageConfig | None = None,
@@ -550,33 +553,9 @@ class MujocoGarbageField(GarbageField):
         return math.hypot(ex - sx, ey - sy)
 
     def _forward(self, distance: float) -> Outcome:
-        c = self.config
-        margin = 0.5
         ex, ey, et = self.base.estimate
         x, y = ex + distance * math.cos(et), ey + distance * math.sin(et)
-        cx = min(max(x, margin), c.size - margin)
-        cy = min(max(y, margin), c.size - margin)
-        self._move_to(cx, cy, turn=distance >= 0)
-        if (cx, cy) != (x, y):
-            self._log("blocked", "fence")
-            return Outcome.failure("blocked by the fence")
-        return Outcome.success()
-
-    def drive_to(self, x: float, y: float, heading: float | None = None) -> Outcome:
-        """Drive to a point of the field, then face ``heading`` if given."""
-        if self.out_of_time:
-            return Outcome.failure("battery spent")
-        c = self.config
-        margin = 0.5
-        cx = min(max(x, margin), c.size - margin)
-        cy = min(max(y, margin), c.size - margin)
-        self._move_to(cx, cy)
-        if (cx, cy) != (x, y):
-            self._log("blocked", "fence")
-            return Outcome.failure("blocked by the fence")
-        if heading is not None:
-            self._face(heading)
-        return Outcome.success()
+        return self._fenced_move(x, y, turn=distance >= 0)
 
     def _turn(self, angle: float) -> Outcome:
         self._face(wrap(self.base.estimate[2] + angle))
