@@ -505,16 +505,9 @@ class MujocoGarbageField(GarbageField):
         return zz > math.cos(math.radians(40))
 
     def _book_sighting(self, x: float, y: float) -> None:
-        best = None
-        for t in self.trash:
-            if not t.on_field:
-                continue
-            tx, ty, _ = self._true_xy(t)
-            d = math.hypot(tx - x, ty - y)
-            if d < 0.7 and (best is None or d < best[0]):
-                best = (d, t)
-        if best:
-            best[1].times_seen += 1
+        t = self._nearest_true(x, y)
+        if t is not None:
+            t.times_seen += 1
 
     def _nearest_true(self, x: float, y: float, radius: float = 0.7) -> Trash | None:
         best = None
