@@ -454,17 +454,26 @@ class GarbageField:
             self.route_complete = True
             self._log("goto", "start: route complete")
             return Outcome.success()
-        name = self.route[index]
-        self._move_to(*self.checkpoints[name])
+        return self._reach_checkpoint(index)
+
+    def _reach_checkpoint(self, index: int) -> Outcome:
+        """Go to checkpoint ``index`` of the route and face along it (a subclass drives
+        there its own way and books the arrival alike)."""
+        self._move_to(*self.checkpoints[self.route[index]])
         self.theta = self._heading_at(index)
+        self._book_arrival(index)
+        return Outcome.success()
+
+    def _book_arrival(self, index: int, note: str = "") -> None:
+        """The report's bookkeeping of an arrival at checkpoint ``index``."""
+        name = self.route[index]
         self.last_checkpoint = index
         if name not in self.visited:
             self.visited.append(name)
         self.arrivals[name] += 1
         if any(self.detection_probability(t) > 0.0 for t in self.trash):
             self.arrivals_with_trash[name] += 1
-        self._log("goto", name)
-        return Outcome.success()
+        self._log("goto", name + note)
 
     def _target(self, target: str) -> Trash | None:
         """The object the pick procedure aims at: the nearest one it can see that

@@ -554,25 +554,10 @@ class MujocoGarbageField(GarbageField):
         self._face(wrap(self.base.estimate[2] + angle))
         return Outcome.success()
 
-    def _goto(self, place: str) -> Outcome:
-        index = self._resolve_place(place)
-        if index is None:
-            return Outcome.failure(f"unknown place {place!r}")
-        if index >= len(self.route):
-            self._move_to(*self.start)
-            self.route_complete = True
-            self._log("goto", "start: route complete")
-            return Outcome.success()
-        name = self.route[index]
-        arrived = self._drive_to(*self.checkpoints[name])
+    def _reach_checkpoint(self, index: int) -> Outcome:
+        arrived = self._drive_to(*self.checkpoints[self.route[index]])
         self._face(self._heading_at(index))
-        self.last_checkpoint = index
-        if name not in self.visited:
-            self.visited.append(name)
-        self.arrivals[name] += 1
-        if any(self.detection_probability(t) > 0.0 for t in self.trash):
-            self.arrivals_with_trash[name] += 1
-        self._log("goto", name + ("" if arrived else " (not reached)"))
+        self._book_arrival(index, "" if arrived else " (not reached)")
         if self.out_of_time:
             return Outcome.failure("battery spent")
         return Outcome.success()
