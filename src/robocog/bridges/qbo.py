@@ -42,7 +42,7 @@ from robocog.bridges.perception import yaw_of
 from robocog.bridges.ros2 import messages as m
 from robocog.bridges.ros2.link import RELIABLE, SENSOR, serve_readers, typed
 from robocog.robot.commands import Command, Forward, Look, Outcome, Turn
-from robocog.robot.percepts import Detection, Obstacle, Percept, Pose, Range
+from robocog.robot.percepts import Detection, Percept, Pose, Range, sonar_obstacle
 
 log = logging.getLogger("robocog.bridges")
 
@@ -205,16 +205,7 @@ class QboRos2Body:
             if name in ranges:
                 out.append(Range(name, ranges[name]))
         if len(ranges) == 2:
-            left, right = ranges["us_left"], ranges["us_right"]
-            if left < OBSTACLE_RANGE and right < OBSTACLE_RANGE:
-                sector = "front"
-            elif left < OBSTACLE_RANGE:
-                sector = "left"
-            elif right < OBSTACLE_RANGE:
-                sector = "right"
-            else:
-                sector = "none"
-            out.append(Obstacle(sector, min(left, right)))  # type: ignore[arg-type]
+            out.append(sonar_obstacle(ranges["us_left"], ranges["us_right"], OBSTACLE_RANGE))
         out.extend(detections)
         return out
 

@@ -33,7 +33,7 @@ import random
 from dataclasses import dataclass, field
 
 from robocog.robot.commands import Command, Forward, Look, Outcome, Turn
-from robocog.robot.percepts import Detection, Obstacle, Percept, Pose, Range
+from robocog.robot.percepts import Detection, Percept, Pose, Range, sonar_obstacle
 from robocog.worlds.room_geometry import (
     Segment,
     cast,
@@ -157,21 +157,12 @@ class RoomBody:
     def percepts(self) -> list[Percept]:
         """Pose, both ultrasonic sensors, the obstacle ahead, and the last look's areas."""
         left, right = self.sonars()  # type: ignore[attr-defined]
-        nearest = min(left, right)
         reach = self.config.obstacle_range  # type: ignore[attr-defined]
-        if left < reach and right < reach:
-            sector = "front"
-        elif left < reach:
-            sector = "left"
-        elif right < reach:
-            sector = "right"
-        else:
-            sector = "none"
         out: list[Percept] = [
             self._pose(),
             Range("us_left", left),
             Range("us_right", right),
-            Obstacle(sector, nearest),  # type: ignore[arg-type]
+            sonar_obstacle(left, right, reach),
         ]
         out.extend(self.detections)  # type: ignore[attr-defined]
         return out
