@@ -62,42 +62,31 @@ COUNTERS = [
 ]
 NUMBER = re.compile(r"-?\d+(?:\.\d+)?(?:[eE][-+]?\d+)?")
 
+#: the contract-net projects' random bids, masked (the three variants print alike)
+CNP_BIDS: list[tuple[str, str]] = [
+    (r"Sending CFP to \[.*\]", "Sending CFP to <participants>"),
+    (r"\[offer\(.*\)\]", "[offers]"),
+    (r"Winner is \w+ with \S+", "Winner is <who> with <bid>"),
+    (r"My proposal '[^']*' won CNP (\d+)", r"<won or lost> CNP \1"),
+    (r"I lost CNP (\d+)\.", r"<won or lost> CNP \1"),
+    (r" for [a-z(),]+!$", ""),
+]
+
 #: per project, how its lines are made comparable (regex, replacement) and why
 NORMALIZE: dict[str, tuple[str, list[tuple[str, str]]]] = {
     "examples/contract-net-protocol": (
         "random bids: the amounts, the winner and the order of the offers vary in Jason; "
         "the order of the participants the directory gives depends on the order Jason's "
         "threads registered them",
-        [
-            (r"Sending CFP to \[.*\]", "Sending CFP to <participants>"),
-            (r"\[offer\(.*\)\]", "[offers]"),
-            (r"Winner is \w+ with \S+", "Winner is <who> with <bid>"),
-            (r"My proposal '[^']*' won CNP (\d+)", r"<won or lost> CNP \1"),
-            (r"I lost CNP (\d+)\.", r"<won or lost> CNP \1"),
-            (r" for [a-z(),]+!$", ""),
-        ],
+        CNP_BIDS,
     ),
     "examples/contract-net-protocol-er": (
         "random bids, as in contract-net-protocol",
-        [
-            (r"Sending CFP to \[.*\]", "Sending CFP to <participants>"),
-            (r"\[offer\(.*\)\]", "[offers]"),
-            (r"Winner is \w+ with \S+", "Winner is <who> with <bid>"),
-            (r"My proposal '[^']*' won CNP (\d+)", r"<won or lost> CNP \1"),
-            (r"I lost CNP (\d+)\.", r"<won or lost> CNP \1"),
-            (r" for [a-z(),]+!$", ""),
-        ],
+        CNP_BIDS,
     ),
     "examples/contract-net-protocol-module": (
         "random bids, as in contract-net-protocol",
-        [
-            (r"Sending CFP to \[.*\]", "Sending CFP to <participants>"),
-            (r"\[offer\(.*\)\]", "[offers]"),
-            (r"Winner is \w+ with \S+", "Winner is <who> with <bid>"),
-            (r"My proposal '[^']*' won CNP (\d+)", r"<won or lost> CNP \1"),
-            (r"I lost CNP (\d+)\.", r"<won or lost> CNP \1"),
-            (r" for [a-z(),]+!$", ""),
-        ],
+        CNP_BIDS,
     ),
     "demos/search": ("the time the searches take (milliseconds)", [(r"\d+ ?ms", "<ms> ms")]),
     "examples/st-claus": (

@@ -192,40 +192,37 @@ class Scheme:
                 raise exc.located(form.line, form.col, self.source) from None
             raise
         except Throw as t:
-            raise SchemeError(
+            raise self._error_at(
+                form,
                 "uncaught-throw",
                 f"uncaught throw to {shorten(to_text(t.key))}: {shorten(to_text(t.args))}",
-                getattr(form, "line", 0),
-                getattr(form, "col", 0),
-                self.source,
             ) from None
         except ControlFlow as exc:  # an escaping continuation used after its extent
-            raise SchemeError(
-                "misc-error",
-                f"continuation called outside its extent ({type(exc).__name__})",
-                getattr(form, "line", 0),
-                getattr(form, "col", 0),
-                self.source,
+            raise self._error_at(
+                form, "misc-error", f"continuation called outside its extent ({type(exc).__name__})"
             ) from None
         except RecursionError:
-            raise SchemeError(
+            raise self._error_at(
+                form,
                 "stack-overflow",
                 f"recursion deeper than the limit ({MAX_DEPTH} Python frames)",
-                getattr(form, "line", 0),
-                getattr(form, "col", 0),
-                self.source,
             ) from None
         except Exception as exc:  # noqa: BLE001 - the documented error type, always
-            raise SchemeError(
+            raise self._error_at(
+                form,
                 _KEYS.get(type(exc).__name__, "misc-error"),
                 shorten(str(exc) or type(exc).__name__, MAX_MESSAGE),
-                getattr(form, "line", 0),
-                getattr(form, "col", 0),
-                self.source,
             ) from None
         finally:
             if old_limit < MAX_DEPTH:
                 sys.setrecursionlimit(old_limit)
+
+    def _error_at(self, form: Any, key: str, message: str) -> SchemeError:
+        """A top-level failure as the SchemeError ``key``, placed at ``form`` (0, 0 for a
+        datum that carries no place)."""
+        return SchemeError(
+            key, message, getattr(form, "line", 0), getattr(form, "col", 0), self.source
+        )
 
     def apply(self, f: Any, args: list) -> Any:
         """Call a Scheme procedure (or primitive) with evaluated arguments."""

@@ -472,15 +472,8 @@ def _text(x: Any, write: bool, parts: list[str], depth: int) -> None:  # noqa: C
         parts.append(_float_text(x))
     elif isinstance(x, int | Fraction):
         parts.append(str(x))
-    elif isinstance(x, Vector):
-        parts.append("#(")
-        for i, y in enumerate(x):
-            if i:
-                parts.append(" ")
-            _text(y, write, parts, depth + 1)
-        parts.append(")")
-    elif isinstance(x, list):
-        parts.append("(")
+    elif isinstance(x, list):  # a vector (``#(...)``) or a proper list held as one
+        parts.append("#(" if isinstance(x, Vector) else "(")
         for i, y in enumerate(x):
             if i:
                 parts.append(" ")

@@ -717,16 +717,10 @@ def _write(t: Term, out: list[str]) -> None:
         out.append(f" {t.op} ")
         _write(t.right, out)
         out.append(")")
-    elif c is And:
+    elif c is And or c is Or:
         out.append("(")
         _write(t.left, out)
-        out.append(" & ")
-        _write(t.right, out)
-        out.append(")")
-    elif c is Or:
-        out.append("(")
-        _write(t.left, out)
-        out.append(" | ")
+        out.append(" & " if c is And else " | ")
         _write(t.right, out)
         out.append(")")
     elif c is Not:

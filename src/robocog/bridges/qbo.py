@@ -32,19 +32,17 @@ from collections.abc import Callable
 from typing import Any
 
 import numpy as np
-from cyclonedds.core import InstanceState, ReadCondition, SampleState, ViewState, WaitSet
 from cyclonedds.domain import DomainParticipant
 from cyclonedds.pub import DataWriter
-from cyclonedds.sub import DataReader, InvalidSample
+from cyclonedds.sub import DataReader
 from cyclonedds.topic import Topic
-from cyclonedds.util import duration
 
 from robocog.bridges.config import BridgeConfig
 from robocog.bridges.perception import yaw_of
 from robocog.bridges.ros2 import messages as m
-from robocog.bridges.ros2.link import RELIABLE, SENSOR, typed
+from robocog.bridges.ros2.link import RELIABLE, SENSOR, serve_readers, typed
 from robocog.robot.commands import Command, Forward, Look, Outcome, Turn
-from robocog.robot.percepts import Detection, Obstacle, Percept, Pose, Range
+from robocog.robot.percepts import Detection, Percept, Pose, Range, sonar_obstacle
 
 log = logging.getLogger("robocog.bridges")
 
@@ -207,16 +205,7 @@ class QboRos2Body:
             if name in ranges:
                 out.append(Range(name, ranges[name]))
         if len(ranges) == 2:
-            left, right = ranges["us_left"], ranges["us_right"]
-            if left < OBSTACLE_RANGE and right < OBSTACLE_RANGE:
-                sector = "front"
-            elif left < OBSTACLE_RANGE:
-                sector = "left"
-            elif right < OBSTACLE_RANGE:
-                sector = "right"
-            else:
-                sector = "none"
-            out.append(Obstacle(sector, min(left, right)))  # type: ignore[arg-type]
+            out.append(sonar_obstacle(ranges["us_left"], ranges["us_right"], OBSTACLE_RANGE))
         out.extend(detections)
         return out
 
@@ -434,18 +423,4 @@ class QboRos2Body:
             self.clock = max(self.clock, float(msg.clock.sec) + float(msg.clock.nanosec) * 1e-9)
 
     def _listen(self) -> None:
-        waitset = WaitSet(self.dp)
-        mask = SampleState.NotRead | ViewState.Any | InstanceState.Any
-        for r, _handler in self._readers:
-            waitset.attach(ReadCondition(r, mask))
-        while not self._stop.is_set():
-            waitset.wait(duration(milliseconds=50))
-            for r, handler in self._readers:
-                try:
-                    samples = r.take(32)
-                except Exception as exc:  # noqa: BLE001 - a malformed sample
-                    log.warning("could not read %s: %s", r.topic.name, exc)
-                    continue
-                for sample in samples:
-                    if not isinstance(sample, InvalidSample):
-                        handler(sample)
+        serve_readers(self.dp, self._readers, self._stop, log)

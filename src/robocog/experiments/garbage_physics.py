@@ -61,7 +61,7 @@ def measure_detection(
     """Table I measured: ``frames`` renders per light of random fields (the held-out
     kind: another seed than the detector's training), the same scenes and poses under
     every light."""
-    from robocog.worlds.physics.trash_detector import match_boxes, render_frames
+    from robocog.worlds.physics.trash_detector import render_frames, score_frame
 
     out: dict[str, DetectionRate] = {}
     for light in lights:
@@ -75,19 +75,16 @@ def measure_detection(
         in_view = detected = right = false_pos = 0
         for f in shot:
             boxes = detector.detect(f.image)
-            coords = [(b.u0, b.v0, b.u1, b.v1) for b in boxes]
-            matched, visible = match_boxes(coords, f, MIN_VISIBLE)
-            wanted = {k for k in visible if not f.distances or f.distances[k] <= camera_range}
-            hit: dict[int, str] = {}
-            for box, k in zip(boxes, matched, strict=True):
-                if k < 0:
-                    false_pos += 1
-                elif k not in hit:
-                    hit[k] = box.label
-            in_view += len(wanted)
-            got = [k for k in wanted if k in hit]
-            detected += len(got)
-            right += sum(hit[k] == f.labels[k] for k in got)
+            score = score_frame(
+                boxes,
+                f,
+                MIN_VISIBLE,
+                lambda k, _n, f=f: not f.distances or f.distances[k] <= camera_range,
+            )
+            false_pos += score.false_positives
+            in_view += len(score.wanted)
+            detected += len(score.found)
+            right += score.labelled_right
         out[light] = DetectionRate(light, len(shot), in_view, detected, right, false_pos)
     return out
 

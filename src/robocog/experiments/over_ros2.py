@@ -52,6 +52,37 @@ def random_domain() -> int:
     return random.SystemRandom().randrange(1, 231)
 
 
+def bridge_argv(domain: int, mind: str, seed: int, *options: str) -> list[str]:
+    """The command line of a ``robocog bridge ros2`` process on the loopback, with the
+    options a run adds; one place, so that every remote run starts its bridge alike."""
+    return [
+        sys.executable,
+        "-m",
+        "robocog.cli",
+        "bridge",
+        "ros2",
+        "--loopback",
+        "--domain",
+        str(domain),
+        "--mind",
+        mind,
+        "--seed",
+        str(seed),
+        *options,
+    ]
+
+
+def stop_bridge(bridge: subprocess.Popen[str]) -> None:
+    """End a bridge process still running: asked first, killed after 10 s."""
+    if bridge.poll() is None:
+        bridge.terminate()
+        try:
+            bridge.wait(timeout=10)
+        except subprocess.TimeoutExpired:
+            bridge.kill()
+            bridge.wait(timeout=10)
+
+
 def run_mission(
     mind: str,
     config: GarbageConfig,
@@ -83,19 +114,10 @@ def run_mission(
         max_frames=frame_budget(config),
         on_message=recorder.write if recorder is not None else None,
     )
-    argv = [
-        sys.executable,
-        "-m",
-        "robocog.cli",
-        "bridge",
-        "ros2",
-        "--loopback",
-        "--domain",
-        str(domain),
-        "--mind",
+    argv = bridge_argv(
+        domain,
         mind,
-        "--seed",
-        str(seed),
+        seed,
         "--robot",
         "garbage",
         "--lockstep",
@@ -103,7 +125,7 @@ def run_mission(
         # too busy to schedule the bridge, not a lost robot; a trip would change the run
         "--watchdog",
         "30",
-    ]
+    )
     started = time.monotonic()
     bridge = subprocess.Popen(
         argv, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, start_new_session=True
@@ -119,13 +141,7 @@ def run_mission(
         robot.close()
         if recorder is not None:
             recorder.close()
-        if bridge.poll() is None:
-            bridge.terminate()
-            try:
-                bridge.wait(timeout=10)
-            except subprocess.TimeoutExpired:
-                bridge.kill()
-                bridge.wait(timeout=10)
+        stop_bridge(bridge)
         stderr = bridge.stderr.read() if bridge.stderr is not None else ""
     if error and stderr:
         error += ": " + stderr.strip().splitlines()[-1][:300]

@@ -12,13 +12,13 @@ message. Where the robot ended is read off the simulator.
 from __future__ import annotations
 
 import os
-import random
 import subprocess
-import sys
 import tempfile
 import time
 from dataclasses import dataclass
 from pathlib import Path
+
+from robocog.experiments.over_ros2 import bridge_argv, random_domain, stop_bridge
 
 #: simulated seconds one run may take (the in-process runs take 65-90)
 SIM_LIMIT = 200.0
@@ -57,7 +57,7 @@ def run_over_ros2(
 
     if "CYCLONEDDS_URI" not in os.environ:
         use_loopback()
-    domain = random.SystemRandom().randrange(1, 231) if domain is None else domain
+    domain = random_domain() if domain is None else domain
     world = MujocoRoom(seed)
     recorder = None
     if record is not None:
@@ -68,22 +68,7 @@ def run_over_ros2(
     robot = QboRoomRobot(
         world, domain, rate=rate, on_message=recorder.write if recorder is not None else None
     )
-    argv = [
-        sys.executable,
-        "-m",
-        "robocog.cli",
-        "bridge",
-        "ros2",
-        "--loopback",
-        "--domain",
-        str(domain),
-        "--mind",
-        "qbo",
-        "--seed",
-        str(seed),
-        "--watchdog",
-        "30",
-    ]
+    argv = bridge_argv(domain, "qbo", seed, "--watchdog", "30")
     started = time.monotonic()
     error = None
     with tempfile.TemporaryFile("w+") as log:
@@ -102,13 +87,7 @@ def run_over_ros2(
             robot.close()
             if recorder is not None:
                 recorder.close()
-            if bridge.poll() is None:
-                bridge.terminate()
-                try:
-                    bridge.wait(timeout=10)
-                except subprocess.TimeoutExpired:
-                    bridge.kill()
-                    bridge.wait(timeout=10)
+            stop_bridge(bridge)
             log.seek(0)
             lines = log.read().strip().splitlines()
     if error and lines:

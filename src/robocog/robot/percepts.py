@@ -31,6 +31,22 @@ class Obstacle:
     distance: float
 
 
+def sonar_obstacle(left: float, right: float, reach: float) -> Obstacle:
+    """The obstacle two ultrasonic sensors, left and right of the heading, report: in
+    ``front`` when both meet something nearer than ``reach``, on the side of the one that
+    does, else ``none``; at the nearer of the two distances. The simulated rooms and the
+    Q.bo bridge read their sensors by this one rule."""
+    if left < reach and right < reach:
+        sector: Sector = "front"
+    elif left < reach:
+        sector = "left"
+    elif right < reach:
+        sector = "right"
+    else:
+        sector = "none"
+    return Obstacle(sector, min(left, right))
+
+
 @dataclass(frozen=True, slots=True)
 class Pose:
     """Where the robot is; ``place`` names a known location (a checkpoint) if it is at one."""

@@ -23,16 +23,14 @@ import time
 from collections.abc import Callable
 from typing import Any
 
-from cyclonedds.core import InstanceState, ReadCondition, SampleState, ViewState, WaitSet
 from cyclonedds.domain import DomainParticipant
 from cyclonedds.pub import DataWriter
-from cyclonedds.sub import DataReader, InvalidSample
+from cyclonedds.sub import DataReader
 from cyclonedds.topic import Topic
-from cyclonedds.util import duration
 
 from robocog.bridges.perception import quaternion_of
 from robocog.bridges.ros2 import messages as m
-from robocog.bridges.ros2.link import RELIABLE, SENSOR, typed
+from robocog.bridges.ros2.link import RELIABLE, SENSOR, serve_readers, typed
 from robocog.worlds.mujoco_room import MujocoRoom
 
 log = logging.getLogger("robocog.sim")
@@ -249,22 +247,7 @@ class QboRoomRobot:
             self._pan = max(-math.radians(95.0), min(math.radians(95.0), pan))
 
     def _listen(self) -> None:
-        waitset = WaitSet(self.dp)
-        mask = SampleState.NotRead | ViewState.Any | InstanceState.Any
-        for r, _handler in self._readers:
-            waitset.attach(ReadCondition(r, mask))
-        while not self._stop.is_set():
-            waitset.wait(duration(milliseconds=50))
-            for r, handler in self._readers:
-                try:
-                    samples = r.take(32)
-                except Exception as exc:  # noqa: BLE001 - a malformed sample
-                    log.warning("could not read %s: %s", r.topic.name, exc)
-                    continue
-                for sample in samples:
-                    if isinstance(sample, InvalidSample):
-                        continue
-                    handler(sample)
+        serve_readers(self.dp, self._readers, self._stop, log)
 
 
 def run_room(args: Any) -> int:

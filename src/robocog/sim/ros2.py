@@ -35,10 +35,9 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
-from cyclonedds.core import InstanceState, ReadCondition, SampleState, ViewState, WaitSet
 from cyclonedds.domain import DomainParticipant
 from cyclonedds.pub import DataWriter
-from cyclonedds.sub import DataReader, InvalidSample
+from cyclonedds.sub import DataReader
 from cyclonedds.topic import Topic
 from cyclonedds.util import duration
 
@@ -46,7 +45,7 @@ from robocog.bridges.config import Topics
 from robocog.bridges.perception import quaternion_of
 from robocog.bridges.ros2 import messages as m
 from robocog.bridges.ros2.actions import ActionServer, ServerGoal
-from robocog.bridges.ros2.link import RELIABLE, SENSOR, typed
+from robocog.bridges.ros2.link import RELIABLE, SENSOR, serve_readers, typed
 from robocog.robot.commands import Drop, Forward, GoTo, Outcome, Pick, Turn
 from robocog.robot.percepts import Detection, Gripper, Percept, Pose
 from robocog.sim.field import (
@@ -332,25 +331,7 @@ class GarbageRobot:
     # -- commands --------------------------------------------------------------------
 
     def _listen(self) -> None:
-        waitset = WaitSet(self.dp)
-        mask = SampleState.NotRead | ViewState.Any | InstanceState.Any
-        for r, _handler in self._readers:
-            waitset.attach(ReadCondition(r, mask))
-        while not self._stop.is_set():
-            waitset.wait(duration(milliseconds=50))
-            for r, handler in self._readers:
-                try:
-                    samples = r.take(32)
-                except Exception as exc:  # noqa: BLE001 - a malformed sample
-                    log.warning("could not read %s: %s", r.topic.name, exc)
-                    continue
-                for sample in samples:
-                    if isinstance(sample, InvalidSample):
-                        continue  # a writer left or an instance was disposed: no data
-                    try:
-                        handler(sample)
-                    except Exception:  # noqa: BLE001 - a bad request must not stop the sim
-                        log.exception("could not use a message from %s", r.topic.name)
+        serve_readers(self.dp, self._readers, self._stop, log, guard=True)
 
     def _on_ack(self, stamp: m.Time) -> None:
         with self._acked:

@@ -392,36 +392,44 @@ class GarbageField:
         self._advance(distance / c.speed)
         return distance
 
-    def _forward(self, distance: float) -> Outcome:
-        c = self.config
-        margin = 0.3
-        x = self.x + distance * math.cos(self.theta)
-        y = self.y + distance * math.sin(self.theta)
-        cx = min(max(x, margin), c.size - margin)
-        cy = min(max(y, margin), c.size - margin)
-        self._move_to(cx, cy, turn=distance >= 0)
+    #: How close to the fence the robot may come (metres); a subclass with a larger
+    #: body keeps further off.
+    fence_margin = 0.3
+
+    def _fenced_move(self, x: float, y: float, turn: bool = True) -> Outcome:
+        """Drive to (x, y) held inside the fence; reaching the fence instead fails.
+
+        Shared by ``_forward`` and ``drive_to`` here and in every subclass, so that the
+        fence is one rule whatever moves the robot (a subclass overrides ``_move_to``).
+        """
+        m, size = self.fence_margin, self.config.size
+        cx = min(max(x, m), size - m)
+        cy = min(max(y, m), size - m)
+        self._move_to(cx, cy, turn=turn)
         if (cx, cy) != (x, y):
             self._log("blocked", "fence")
             return Outcome.failure("blocked by the fence")
         return Outcome.success()
+
+    def _face(self, heading: float) -> None:
+        """Turn on the spot to ``heading``, spending the time the turn takes."""
+        self._advance(abs(_wrap(heading - self.theta)) / self.config.turn_rate)
+        self.theta = _wrap(heading)
+
+    def _forward(self, distance: float) -> Outcome:
+        x = self.x + distance * math.cos(self.theta)
+        y = self.y + distance * math.sin(self.theta)
+        return self._fenced_move(x, y, turn=distance >= 0)
 
     def drive_to(self, x: float, y: float, heading: float | None = None) -> Outcome:
         """Drive to a point of the field (a navigator's goal that is no checkpoint),
         then face ``heading`` if given; a point beyond the fence fails at the fence."""
         if self.out_of_time:
             return Outcome.failure("battery spent")
-        c = self.config
-        margin = 0.3
-        cx = min(max(x, margin), c.size - margin)
-        cy = min(max(y, margin), c.size - margin)
-        self._move_to(cx, cy)
-        if (cx, cy) != (x, y):
-            self._log("blocked", "fence")
-            return Outcome.failure("blocked by the fence")
-        if heading is not None:
-            self._advance(abs(_wrap(heading - self.theta)) / c.turn_rate)
-            self.theta = _wrap(heading)
-        return Outcome.success()
+        outcome = self._fenced_move(x, y)
+        if outcome.ok and heading is not None:
+            self._face(heading)
+        return outcome
 
     def _turn(self, angle: float) -> Outcome:
         self.theta = _wrap(self.theta + angle)
@@ -446,17 +454,26 @@ class GarbageField:
             self.route_complete = True
             self._log("goto", "start: route complete")
             return Outcome.success()
-        name = self.route[index]
-        self._move_to(*self.checkpoints[name])
+        return self._reach_checkpoint(index)
+
+    def _reach_checkpoint(self, index: int) -> Outcome:
+        """Go to checkpoint ``index`` of the route and face along it (a subclass drives
+        there its own way and books the arrival alike)."""
+        self._move_to(*self.checkpoints[self.route[index]])
         self.theta = self._heading_at(index)
+        self._book_arrival(index)
+        return Outcome.success()
+
+    def _book_arrival(self, index: int, note: str = "") -> None:
+        """The report's bookkeeping of an arrival at checkpoint ``index``."""
+        name = self.route[index]
         self.last_checkpoint = index
         if name not in self.visited:
             self.visited.append(name)
         self.arrivals[name] += 1
         if any(self.detection_probability(t) > 0.0 for t in self.trash):
             self.arrivals_with_trash[name] += 1
-        self._log("goto", name)
-        return Outcome.success()
+        self._log("goto", name + note)
 
     def _target(self, target: str) -> Trash | None:
         """The object the pick procedure aims at: the nearest one it can see that

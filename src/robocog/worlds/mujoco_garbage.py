@@ -106,6 +106,9 @@ class MujocoGarbageField(GarbageField):
     """The garbage field in MuJoCo: a ``Body`` with ``percepts()``, ``execute()``,
     ``time()``, and the 2D field's bookkeeping for the experiment's report."""
 
+    #: The MuJoCo base is larger than the 2D robot's disc: it keeps further off the fence.
+    fence_margin = 0.5
+
     def __init__(
         self,
         config: GarbageConfig | None = None,
@@ -502,16 +505,9 @@ class MujocoGarbageField(GarbageField):
         return zz > math.cos(math.radians(40))
 
     def _book_sighting(self, x: float, y: float) -> None:
-        best = None
-        for t in self.trash:
-            if not t.on_field:
-                continue
-            tx, ty, _ = self._true_xy(t)
-            d = math.hypot(tx - x, ty - y)
-            if d < 0.7 and (best is None or d < best[0]):
-                best = (d, t)
-        if best:
-            best[1].times_seen += 1
+        t = self._nearest_true(x, y)
+        if t is not None:
+            t.times_seen += 1
 
     def _nearest_true(self, x: float, y: float, radius: float = 0.7) -> Trash | None:
         best = None
@@ -550,57 +546,18 @@ class MujocoGarbageField(GarbageField):
         return math.hypot(ex - sx, ey - sy)
 
     def _forward(self, distance: float) -> Outcome:
-        c = self.config
-        margin = 0.5
         ex, ey, et = self.base.estimate
         x, y = ex + distance * math.cos(et), ey + distance * math.sin(et)
-        cx = min(max(x, margin), c.size - margin)
-        cy = min(max(y, margin), c.size - margin)
-        self._move_to(cx, cy, turn=distance >= 0)
-        if (cx, cy) != (x, y):
-            self._log("blocked", "fence")
-            return Outcome.failure("blocked by the fence")
-        return Outcome.success()
-
-    def drive_to(self, x: float, y: float, heading: float | None = None) -> Outcome:
-        """Drive to a point of the field, then face ``heading`` if given."""
-        if self.out_of_time:
-            return Outcome.failure("battery spent")
-        c = self.config
-        margin = 0.5
-        cx = min(max(x, margin), c.size - margin)
-        cy = min(max(y, margin), c.size - margin)
-        self._move_to(cx, cy)
-        if (cx, cy) != (x, y):
-            self._log("blocked", "fence")
-            return Outcome.failure("blocked by the fence")
-        if heading is not None:
-            self._face(heading)
-        return Outcome.success()
+        return self._fenced_move(x, y, turn=distance >= 0)
 
     def _turn(self, angle: float) -> Outcome:
         self._face(wrap(self.base.estimate[2] + angle))
         return Outcome.success()
 
-    def _goto(self, place: str) -> Outcome:
-        index = self._resolve_place(place)
-        if index is None:
-            return Outcome.failure(f"unknown place {place!r}")
-        if index >= len(self.route):
-            self._move_to(*self.start)
-            self.route_complete = True
-            self._log("goto", "start: route complete")
-            return Outcome.success()
-        name = self.route[index]
-        arrived = self._drive_to(*self.checkpoints[name])
+    def _reach_checkpoint(self, index: int) -> Outcome:
+        arrived = self._drive_to(*self.checkpoints[self.route[index]])
         self._face(self._heading_at(index))
-        self.last_checkpoint = index
-        if name not in self.visited:
-            self.visited.append(name)
-        self.arrivals[name] += 1
-        if any(self.detection_probability(t) > 0.0 for t in self.trash):
-            self.arrivals_with_trash[name] += 1
-        self._log("goto", name + ("" if arrived else " (not reached)"))
+        self._book_arrival(index, "" if arrived else " (not reached)")
         if self.out_of_time:
             return Outcome.failure("battery spent")
         return Outcome.success()

@@ -33,11 +33,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from robocog.robot.commands import Command, Forward, Look, Outcome, Turn
-from robocog.robot.percepts import Detection, Obstacle, Percept, Pose, Range
+from robocog.robot.commands import Outcome
+from robocog.robot.percepts import Detection, Pose
 from robocog.worlds.physics.gl import choose_gl
-from robocog.worlds.room import Seen, Target, TrajectoryPoint
-from robocog.worlds.room_geometry import Segment, point_segment_distance, wrap
+from robocog.worlds.room import RoomBody, Seen, Target, TrajectoryPoint
+from robocog.worlds.room_geometry import Segment, wrap
 
 choose_gl()
 
@@ -84,7 +84,7 @@ class MujocoRoomConfig:
     svm_images: int = vision.TRAIN_IMAGES
 
 
-class MujocoRoom:
+class MujocoRoom(RoomBody):
     """The physical room, corridor and Q.bo; implements ``Body``."""
 
     def __init__(
@@ -204,42 +204,10 @@ class MujocoRoom:
         """Simulated seconds since the start."""
         return float(self.data.time)
 
-    def percepts(self) -> list[Percept]:
-        """Odometry, both ultrasonic sensors, the obstacle ahead, the last look's areas."""
-        c = self.config
-        left, right = self.sonars()
-        nearest = min(left, right)
-        if left < c.obstacle_range and right < c.obstacle_range:
-            sector = "front"
-        elif left < c.obstacle_range:
-            sector = "left"
-        elif right < c.obstacle_range:
-            sector = "right"
-        else:
-            sector = "none"
+    def _pose(self) -> Pose:
+        """The odometry's estimate: the physical robot knows only what its wheels tell."""
         x, y, heading = self.base.odometry.pose
-        out: list[Percept] = [
-            Pose(x, y, heading, None),
-            Range("us_left", left),
-            Range("us_right", right),
-            Obstacle(sector, nearest),  # type: ignore[arg-type]
-        ]
-        out.extend(self.detections)
-        return out
-
-    def execute(self, command: Command) -> Outcome:
-        """Carry out a Look, Forward or Turn; any other command is refused."""
-        self.commands += 1
-        if isinstance(command, Look):
-            outcome = self._look(command.direction)
-        elif isinstance(command, Forward):
-            outcome = self._forward(command.distance)
-        elif isinstance(command, Turn):
-            outcome = self._turn(command.angle)
-        else:
-            outcome = Outcome.failure(f"the room robot cannot {type(command).__name__}")
-        self._record()
-        return outcome
+        return Pose(x, y, heading, None)
 
     def image(self) -> np.ndarray:
         """What the head camera sees now (height x width x 3, with the camera's noise)."""
@@ -437,10 +405,6 @@ class MujocoRoom:
     def _record(self) -> None:
         self.trajectory.append(TrajectoryPoint(self.time(), self.x, self.y, self.theta, self.phase))
 
-    def mark(self, kind: str) -> None:
-        """Note an event at the robot's position (drawn as a circle on the route plot)."""
-        self.marks.append((self.x, self.y, kind))
-
     @property
     def door(self) -> Target:
         """The room's door leaf where it stands now (the robot may have pushed it)."""
@@ -467,12 +431,3 @@ class MujocoRoom:
     def exited(self) -> bool:
         """True once the whole body is through the doorway, in the corridor."""
         return self.y > self.plan.depth + BODY_RADIUS + SONAR_OFFSET
-
-    def at_entrance(self, reach: float = 0.5) -> bool:
-        """True when the robot stands in or just before the doorway."""
-        return point_segment_distance(self.x, self.y, self.targets[2].face) < reach
-
-    def in_front_of_door(self, reach: float = 0.8) -> bool:
-        """True when the robot is close to the open leaf and its sensors meet the leaf."""
-        close = point_segment_distance(self.x, self.y, self.door.face) < reach
-        return close and self.facing() == "door"

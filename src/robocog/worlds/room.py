@@ -33,7 +33,7 @@ import random
 from dataclasses import dataclass, field
 
 from robocog.robot.commands import Command, Forward, Look, Outcome, Turn
-from robocog.robot.percepts import Detection, Obstacle, Percept, Pose, Range
+from robocog.robot.percepts import Detection, Percept, Pose, Range, sonar_obstacle
 from robocog.worlds.room_geometry import (
     Segment,
     cast,
@@ -140,7 +140,64 @@ class Area:
     source: dict[str, str] = field(default_factory=dict)
 
 
-class RoomWorld:
+class RoomBody:
+    """The ``Body`` side both rooms share, the 2D one here and the MuJoCo one.
+
+    Both read the same two ultrasonic sensors into the same percepts, take the same three
+    commands, and answer an experiment's questions about the doorway and the door leaf the
+    same way; a room supplies ``config.obstacle_range``, ``sonars()``, ``facing()``,
+    ``_pose()``, the motions ``_look``, ``_forward`` and ``_turn``, ``_record()``, and
+    ``x``, ``y``, ``door``, ``targets``, ``detections``, ``marks`` and ``commands``.
+    """
+
+    def _pose(self) -> Pose:
+        """The pose the robot reports of itself (true or estimated, as the room has it)."""
+        raise NotImplementedError
+
+    def percepts(self) -> list[Percept]:
+        """Pose, both ultrasonic sensors, the obstacle ahead, and the last look's areas."""
+        left, right = self.sonars()  # type: ignore[attr-defined]
+        reach = self.config.obstacle_range  # type: ignore[attr-defined]
+        out: list[Percept] = [
+            self._pose(),
+            Range("us_left", left),
+            Range("us_right", right),
+            sonar_obstacle(left, right, reach),
+        ]
+        out.extend(self.detections)  # type: ignore[attr-defined]
+        return out
+
+    def execute(self, command: Command) -> Outcome:
+        """Carry out a Look, Forward or Turn; any other command is refused."""
+        self.commands += 1  # type: ignore[attr-defined]
+        if isinstance(command, Look):
+            outcome = self._look(command.direction)  # type: ignore[attr-defined]
+        elif isinstance(command, Forward):
+            outcome = self._forward(command.distance)  # type: ignore[attr-defined]
+        elif isinstance(command, Turn):
+            outcome = self._turn(command.angle)  # type: ignore[attr-defined]
+        else:
+            outcome = Outcome.failure(f"the room robot cannot {type(command).__name__}")
+        self._record()  # type: ignore[attr-defined]
+        return outcome
+
+    def mark(self, kind: str) -> None:
+        """Note an event at the robot's position (drawn as a circle on the route plot)."""
+        self.marks.append((self.x, self.y, kind))  # type: ignore[attr-defined]
+
+    def at_entrance(self, reach: float = 0.5) -> bool:
+        """True when the robot stands in or just before the doorway."""
+        doorway = self.targets[2].face  # type: ignore[attr-defined]
+        return point_segment_distance(self.x, self.y, doorway) < reach  # type: ignore[attr-defined]
+
+    def in_front_of_door(self, reach: float = 0.8) -> bool:
+        """True when the robot is close to the open door leaf and its sensors meet the leaf."""
+        leaf = self.door.face  # type: ignore[attr-defined]
+        close = point_segment_distance(self.x, self.y, leaf) < reach  # type: ignore[attr-defined]
+        return close and self.facing() == "door"  # type: ignore[attr-defined]
+
+
+class RoomWorld(RoomBody):
     """The room, the corridor and the Q.bo robot in it; implements ``Body``."""
 
     def __init__(self, seed: int = 0, config: RoomConfig | None = None) -> None:
@@ -228,41 +285,9 @@ class RoomWorld:
         """Simulated seconds since the start."""
         return self.clock
 
-    def percepts(self) -> list[Percept]:
-        """Heading, both ultrasonic sensors, the obstacle ahead, and the last look's areas."""
-        left, right = self.sonars()
-        nearest = min(left, right)
-        c = self.config
-        if left < c.obstacle_range and right < c.obstacle_range:
-            sector = "front"
-        elif left < c.obstacle_range:
-            sector = "left"
-        elif right < c.obstacle_range:
-            sector = "right"
-        else:
-            sector = "none"
-        out: list[Percept] = [
-            Pose(self.x, self.y, self.theta, None),
-            Range("us_left", left),
-            Range("us_right", right),
-            Obstacle(sector, nearest),  # type: ignore[arg-type]
-        ]
-        out.extend(self.detections)
-        return out
-
-    def execute(self, command: Command) -> Outcome:
-        """Carry out a Look, Forward or Turn; any other command is refused."""
-        self.commands += 1
-        if isinstance(command, Look):
-            outcome = self._look(command.direction)
-        elif isinstance(command, Forward):
-            outcome = self._forward(command.distance)
-        elif isinstance(command, Turn):
-            outcome = self._turn(command.angle)
-        else:
-            outcome = Outcome.failure(f"the room robot cannot {type(command).__name__}")
-        self._record()
-        return outcome
+    def _pose(self) -> Pose:
+        """The true pose: the 2D room's robot knows where it is."""
+        return Pose(self.x, self.y, self.theta, None)
 
     # -- motion -------------------------------------------------------------------
 
@@ -445,18 +470,9 @@ class RoomWorld:
     def _record(self) -> None:
         self.trajectory.append(TrajectoryPoint(self.clock, self.x, self.y, self.theta, self.phase))
 
-    def mark(self, kind: str) -> None:
-        """Note an event at the robot's position (drawn as a circle on the route plot)."""
-        self.marks.append((self.x, self.y, kind))
-
     def exited(self) -> bool:
         """True once the whole robot is through the doorway, in the corridor."""
         return self.y > self.config.depth + self.config.robot_radius
-
-    def at_entrance(self, reach: float = 0.5) -> bool:
-        """True when the robot stands in or just before the doorway."""
-        doorway = self.targets[2].face
-        return point_segment_distance(self.x, self.y, doorway) < reach
 
     def distance_to(self, target_id: str) -> float:
         """Distance from the robot to the middle of a target's face."""
@@ -483,8 +499,3 @@ class RoomWorld:
                         else:
                             what = "box"
         return what
-
-    def in_front_of_door(self, reach: float = 0.8) -> bool:
-        """True when the robot is close to the open door leaf and its sensors meet the leaf."""
-        close = point_segment_distance(self.x, self.y, self.door.face) < reach
-        return close and self.facing() == "door"

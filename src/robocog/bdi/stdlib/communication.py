@@ -11,6 +11,7 @@ from robocog.bdi.messages import broadcast, send
 from robocog.bdi.parser import read_source
 from robocog.bdi.signals import DONE
 from robocog.bdi.stdlib.base import LIBRARY, arg_text, bind, internal, need_args
+from robocog.bdi.stdlib.goals import drop_every_intention
 from robocog.bdi.terms import NIL, Literal, Term, make_list, term_str
 from robocog.bdi.unifier import resolve
 
@@ -122,11 +123,7 @@ def _kill_agent(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Any:
     if mas.remove(name) is None:
         return False
     if name == ag.name:
-        for i in ag.C.intentions():
-            ag._drop(i)
-        if ctx:
-            ag._drop(ctx[0])
-            return DONE
+        return drop_every_intention(ag, ctx)
     return True
 
 

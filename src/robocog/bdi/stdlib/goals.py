@@ -103,15 +103,22 @@ def _drop_all_intentions(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any)
     return True
 
 
-@internal("drop_all_desires")
-def _drop_all_desires(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Any:
-    ag.C.keep_events(lambda e: not (e.intention is None and e.trigger.kind == P.ACHIEVE))
+def drop_every_intention(ag: Agent, ctx: Any) -> Any:
+    """Drop every intention, the one running this action (``ctx``) last; ``DONE`` when
+    there was one, so that its body stops, else ``True``. For the actions that end all
+    an agent pursues (``.drop_all_desires``, ``.kill_agent`` of itself)."""
     for i in ag.C.intentions():
         ag._drop(i)
     if ctx:
         ag._drop(ctx[0])
         return DONE
     return True
+
+
+@internal("drop_all_desires")
+def _drop_all_desires(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Any:
+    ag.C.keep_events(lambda e: not (e.intention is None and e.trigger.kind == P.ACHIEVE))
+    return drop_every_intention(ag, ctx)
 
 
 @internal("suspend")

@@ -16,6 +16,7 @@ import logging
 import os
 import threading
 import time
+from collections.abc import Callable
 from typing import Any
 
 from cyclonedds.core import (
@@ -55,6 +56,45 @@ SENSOR = Qos(
     Policy.History.KeepLast(5),
     Policy.DataRepresentation(use_cdrv0_representation=True),
 )
+
+
+def serve_readers(
+    dp: DomainParticipant,
+    readers: list[tuple[DataReader, Callable[[Any], None]]],
+    stop: threading.Event,
+    logger: logging.Logger,
+    *,
+    guard: bool = False,
+) -> None:
+    """Hand every sample of ``readers`` to its handler as it comes, until ``stop`` is set.
+
+    The one reading loop of the robot ends (the simulators and the Q.bo bridge): a sample
+    that cannot be read is logged and skipped, an invalid one (a writer left) is passed
+    over; with ``guard`` a handler's error is logged instead of ending the loop, for a
+    simulator that must outlive one bad request.
+    """
+    waitset = WaitSet(dp)
+    mask = SampleState.NotRead | ViewState.Any | InstanceState.Any
+    for r, _handler in readers:
+        waitset.attach(ReadCondition(r, mask))
+    while not stop.is_set():
+        waitset.wait(duration(milliseconds=50))
+        for r, handler in readers:
+            try:
+                samples = r.take(32)
+            except Exception as exc:  # noqa: BLE001 - a malformed sample
+                logger.warning("could not read %s: %s", r.topic.name, exc)
+                continue
+            for sample in samples:
+                if isinstance(sample, InvalidSample):
+                    continue  # a writer left or an instance was disposed: no data
+                if not guard:
+                    handler(sample)
+                    continue
+                try:
+                    handler(sample)
+                except Exception:  # noqa: BLE001 - a bad request must not stop the sim
+                    logger.exception("could not use a message from %s", r.topic.name)
 
 
 def typed(qos: Qos, kind: type) -> Qos:

@@ -405,6 +405,42 @@ def match_boxes(
     return out, visible
 
 
+@dataclass(frozen=True)
+class FrameScore:
+    """How one frame's detections met its objects: those counted (``wanted``), those a
+    box found (``found``, in ``wanted``'s order), how many of those carry the right
+    label, and the boxes that show no object."""
+
+    wanted: set[int]
+    found: list[int]
+    labelled_right: int
+    false_positives: int
+
+
+def score_frame(
+    boxes: Sequence[Box],
+    frame: Frame,
+    min_pixels: int,
+    counts: Callable[[int, int], bool],
+) -> FrameScore:
+    """Match ``boxes`` to ``frame``'s objects and score them; ``counts(k, pixels)`` says
+    which visible objects the measure asks for. The held-out evaluation here and the
+    experiment's Table I score alike through this one rule."""
+    coords = [(b.u0, b.v0, b.u1, b.v1) for b in boxes]
+    matched, visible = match_boxes(coords, frame, min_pixels)
+    wanted = {k for k, n in visible.items() if counts(k, n)}
+    hit: dict[int, str] = {}
+    false_pos = 0
+    for box, k in zip(boxes, matched, strict=True):
+        if k < 0:
+            false_pos += 1
+        elif k not in hit:
+            hit[k] = box.label
+    found = [k for k in wanted if k in hit]
+    right = sum(hit[k] == frame.labels[k] for k in found)
+    return FrameScore(wanted, found, right, false_pos)
+
+
 def train(
     settings: TrainingSettings | None = None,
     progress: Callable[[str, int, int], None] | None = None,
@@ -485,22 +521,14 @@ def evaluate(detector: TrashDetector, frames: Sequence[Frame], min_pixels: int =
     per_light: dict[str, list[int]] = {}
     for f in frames:
         boxes = detector.detect(f.image)
-        coords = [(b.u0, b.v0, b.u1, b.v1) for b in boxes]
-        matched, visible = match_boxes(coords, f, MIN_PIXELS)
-        wanted = {k for k, n in visible.items() if n >= min_pixels}
-        hit: dict[int, str] = {}
-        for box, k in zip(boxes, matched, strict=True):
-            if k < 0:
-                false_pos += 1
-            elif k not in hit:
-                hit[k] = box.label
-        objects += len(wanted)
-        got = [k for k in wanted if k in hit]
-        found += len(got)
-        correct += sum(hit[k] == f.labels[k] for k in got)
+        score = score_frame(boxes, f, MIN_PIXELS, lambda _k, n: n >= min_pixels)
+        false_pos += score.false_positives
+        objects += len(score.wanted)
+        found += len(score.found)
+        correct += score.labelled_right
         light = per_light.setdefault(f.light, [0, 0])
-        light[0] += len(got)
-        light[1] += len(wanted)
+        light[0] += len(score.found)
+        light[1] += len(score.wanted)
         # the region classifier alone, on every region
         like = detector.likelihood(f.image)
         labels, count = _regions(like)
