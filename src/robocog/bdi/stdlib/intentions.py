@@ -67,7 +67,8 @@ def _label(ag: Agent, im: IntendedMeans) -> Literal:
 
     label = plan_label(ag, im.plan)
     src = ag.url if not im.plan.source or im.plan.source == ag.file else im.plan.source
-    extra = [Literal("code_line", (im.plan.line,))] if im.plan.line else []
+    line = im.plan.code_line
+    extra = [Literal("code_line", (line,))] if line else []
     if src:
         extra.append(Literal("code_src", (src if ":" in src else f"file:{src}",)))
     return label.add_annots(extra)
@@ -86,7 +87,7 @@ def im_term(ag: Agent, im: IntendedMeans) -> Literal:
         if st.term is None or st.term.__class__ is str or st.blocks:
             steps.append(st)
             continue
-        term = _anon(resolve(st.term, s), mapping)
+        term = _anon(st.term, mapping)  # Jason shows the body as written
         steps.append(P.Step(st.kind, term, st.blocks, st.line, st.state))
     pairs = [(k, v) for k, v in s.items() if k.__class__ is Var]
     names = [k.name for k, _v in pairs]
