@@ -132,8 +132,6 @@ KNOWN: dict[str, str] = {
     "demos/hard_deadline": "Jason 3.3 stops the g(9) intention with a NullPointerException "
     "(TransitionSystem.getPLForIM) and never prints the demo's expected last line "
     "'failed, deadline_reached for g(9)'; robocog prints it",
-    "demos/failure": "while the failure plan of -!g3(failure) runs, Jason 3.3 already shows "
-    "g3's X bound to failure in the printed stack; robocog binds it when that plan ends",
 }
 
 #: projects whose lines are compared as a set per agent (their order depends on threads)

@@ -74,8 +74,10 @@ def _label(ag: Agent, im: IntendedMeans) -> Literal:
     return label.add_annots(extra)
 
 
-def im_term(ag: Agent, im: IntendedMeans) -> Literal:
-    """One intended means as Jason's ``im(Label, {Trigger}, {Body}, Unifier)``."""
+def im_term(ag: Agent, im: IntendedMeans, handler: dict | None = None) -> Literal:
+    """One intended means as Jason's ``im(Label, {Trigger}, {Body}, Unifier)``;
+    ``handler``: the substitution of the failure plan handling this goal, whose
+    bindings of the goal's variables Jason shows here already."""
     s = im.s
     trig = im.trigger
     lit = _anon(resolve(trig.literal, s), {})
@@ -91,16 +93,30 @@ def im_term(ag: Agent, im: IntendedMeans) -> Literal:
         steps.append(P.Step(st.kind, term, st.blocks, st.line, st.state))
     pairs = [(k, v) for k, v in s.items() if k.__class__ is Var]
     names = [k.name for k, _v in pairs]
-    unifier = [
-        Literal("map", (Var(f"_{next(_fresh)}"), _anon(resolve(pairs[k][1], s), {})))
-        for k in _java_order(names)
-    ]
+    unifier = []
+    for k in _java_order(names):
+        value = resolve(pairs[k][1], s)
+        if handler is not None:
+            value = resolve(value, handler)
+        unifier.append(Literal("map", (Var(f"_{next(_fresh)}"), _anon(value, {}))))
     return Literal("im", (_label(ag, im), trigger, Body(tuple(steps)), make_list(unifier)))
 
 
 def stack_term(ag: Agent, i: Intention) -> Any:
     """The intended means of ``i``, top first."""
-    return make_list([im_term(ag, im) for im in reversed(i.stack)])
+    out = []
+    failing = None  # (goal, substitution) of a failure plan (``-!g``) above
+    for im in reversed(i.stack):
+        trig = im.trigger
+        handler = None
+        if failing is not None and trig.op == "+" and trig.kind == failing[0].kind:
+            goal = resolve(failing[0].literal, failing[1])
+            if unify(resolve(trig.literal, im.s), goal, {}, []):
+                handler, failing = failing[1], None
+        out.append(im_term(ag, im, handler))
+        if trig.op == "-" and trig.kind != P.BELIEF:
+            failing = (trig, im.s)
+    return make_list(out)
 
 
 def state_term(ag: Agent, i: Intention) -> Literal:
