@@ -88,6 +88,19 @@ NORMALIZE: dict[str, tuple[str, list[tuple[str, str]]]] = {
         "random bids, as in contract-net-protocol",
         CNP_BIDS,
     ),
+    "demos/current-intention": (
+        "each goal waits a random time (math.random), so which intention is inspected "
+        "when, its number, the wait times and the order of the other goals vary in Jason: "
+        "the goals' letters, the numbers and the times are masked, and each agent's "
+        "distinct lines compared",
+        [
+            (r"\b(inspect|start)\([a-d]\)", r"\1(<x>)"),
+            (r"terms are \[[a-d]\]", "terms are [<x>]"),
+            (r"^[a-d]$", "<x>"),
+            (r"number is \d+", "number is <n>"),
+            (r"wait\(\d+\)\[time\(\d+\)\]", "wait(<n>)[time(<ms>)]"),
+        ],
+    ),
     "demos/search": ("the time the searches take (milliseconds)", [(r"\d+ ?ms", "<ms> ms")]),
     "examples/st-claus": (
         "which workers make up each group, which kind Santa serves next and when a group "
@@ -101,7 +114,7 @@ NORMALIZE: dict[str, tuple[str, list[tuple[str, str]]]] = {
 DROP: dict[str, str] = {"examples/st-claus": r"waiting to proceed"}
 
 #: projects compared on the distinct lines of each agent (for the reason NORMALIZE gives)
-DISTINCT = {"examples/st-claus"}
+DISTINCT = {"examples/st-claus", "demos/current-intention"}
 
 #: differences found and explained (docs/bdi.md): the project's state says so
 KNOWN: dict[str, str] = {

@@ -153,6 +153,8 @@ class Agent:
         self._formula_waiters: list[tuple[Term, Intention]] = []
         #: intention id -> (variable for the elapsed time, start) of a running .wait
         self.wait_elapsed: dict[int, tuple[Term, float]] = {}
+        #: why each intention on a ``.wait`` waits, as ``.intention`` reports it
+        self.wait_reasons: dict[int, Term] = {}
         self._percepts: dict[Literal, None] = {}
         self._perceived: dict[Literal, None] = {}
         self._percepts_dirty = False

@@ -165,7 +165,13 @@ class _Builder(Transformer):
         line = getattr(meta, "line", 0) if not getattr(meta, "empty", True) else 0
         if self.namespace is not None:
             trigger, context, body = in_namespace((trigger, context, body), self.namespace)
-        return ("plan", P.Plan(trigger, context, body, label, self.source, line))
+        plan = P.Plan(trigger, context, body, label, self.source, line)
+        # Jason's line for a plan (its ``code_line``): the label's, else where the
+        # context or the body begins, else the plan's end
+        parts = [it[2] for it in items if isinstance(it, tuple) and len(it) == 3 and it[2]]
+        end = getattr(meta, "end_line", line)
+        plan.code_line = line if label is not None else (parts[0] if parts else end)
+        return ("plan", plan)
 
     def label(self, items: list) -> tuple:
         return ("label", items[0])
@@ -173,17 +179,19 @@ class _Builder(Transformer):
     def label_var(self, items: list) -> tuple:
         return ("label", self._var(str(items[0])))
 
-    def context(self, items: list) -> tuple:
+    @v_args(meta=True)
+    def context(self, meta: Meta, items: list) -> tuple:
         ctx = items[0]
         if ctx.__class__ is Literal and ctx.functor == "true" and not ctx.args:
             ctx = None
-        return ("context", ctx)
+        return ("context", ctx, getattr(meta, "line", 0))
 
-    def plan_body(self, items: list) -> tuple:
+    @v_args(meta=True)
+    def plan_body(self, meta: Meta, items: list) -> tuple:
         body = items[0]
         if body is not None and body[0].kind == P.ACTION and _is_true(body[0].term):
             body = body[1]  # a plan body's first ``true`` is no formula, as in Jason
-        return ("body", body)
+        return ("body", body, getattr(meta, "line", 0))
 
     def trigger(self, items: list) -> P.Trigger:
         op = items[0]
@@ -629,7 +637,9 @@ def _ns_chain(chain: P.Chain, ns: str) -> P.Chain:
 
 def _plan_in(plan: P.Plan, ns: str) -> P.Plan:
     trigger, context, body = in_namespace((plan.trigger, plan.context, plan.body), ns)
-    return P.Plan(trigger, context, body, plan.label, plan.source, plan.line)
+    out = P.Plan(trigger, context, body, plan.label, plan.source, plan.line)
+    out.code_line = plan.code_line
+    return out
 
 
 #: how deep includes may nest before the reader refuses (a file including itself, say)

@@ -179,6 +179,7 @@ class Plan:
         "body",
         "source",
         "line",
+        "code_line",
         "order",
         "params",
     )
@@ -202,6 +203,8 @@ class Plan:
         self.body = body
         self.source = source
         self.line = line
+        #: the line Jason gives the plan (``code_line`` of ``.intention``'s labels)
+        self.code_line = line
         self.order = 0
         #: the trigger's arguments when they are distinct variables and there are no
         #: annotations: relevance is then a matter of binding them

@@ -146,6 +146,8 @@ def add_timer(self: Agent, delay_ms: float, i: Intention) -> None:
     self._timer_of[i.id] = self._timer_seq
     heapq.heappush(self._timers, (self.clock + delay_ms, self._timer_seq, i))
     self.C.pending[i.id] = (i, "wait")
+    ms = int(delay_ms)  # Jason keeps the timeout as a whole number (a long)
+    self.wait_reasons[i.id] = Literal("wait", (i.id,), (Literal("time", (ms,)),))
 
 
 def wait_event(self: Agent, trigger: P.Trigger, i: Intention, timeout: float | None) -> None:
@@ -153,6 +155,7 @@ def wait_event(self: Agent, trigger: P.Trigger, i: Intention, timeout: float | N
     deadline = None if timeout is None else self.clock + timeout
     self._event_waiters.append((trigger, i, deadline))
     self.C.pending[i.id] = (i, "wait_event")
+    self.wait_reasons[i.id] = Literal("wait", (i.id,), (trigger.literal,))
     if deadline is not None:
         self._timer_seq += 1
         self._timer_of[i.id] = self._timer_seq
@@ -163,6 +166,7 @@ def wait_formula(self: Agent, f: Term, i: Intention, timeout: float | None) -> N
     """Suspend ``i`` until the formula ``f`` holds (checked at each cycle)."""
     self._formula_waiters.append((f, i))
     self.C.pending[i.id] = (i, "wait_formula")
+    self.wait_reasons[i.id] = Literal("wait", (i.id,), (f,))
     if timeout is not None:
         self._timer_seq += 1
         self._timer_of[i.id] = self._timer_seq

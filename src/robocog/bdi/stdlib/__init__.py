@@ -14,6 +14,7 @@ from robocog.bdi.stdlib import (  # noqa: F401 - importing each family registers
     communication,
     extras,
     goals,
+    intentions,
     lists,
     output,
     plans,
