@@ -280,3 +280,21 @@ def test_the_robots_end_of_mission_ends_the_run_saying_why_with_no_watchdog_alar
     assert any("the robot ended its mission: route complete" in t for _t, t in runner.events)
     assert runner.events[-1][1].startswith("the robot ended its mission")
     assert link.of("twist")[-1] == (0.0, 0.0)  # left stopped, as at any end
+
+
+def test_every_body_the_runner_drives_has_what_it_calls() -> None:
+    """The runner asks its body for these by name; a body without one fails mid-run
+    (the Q.bo's body once lacked ``mission_ended`` and ended every run over ROS 2)."""
+    import re
+    from pathlib import Path
+
+    import robocog.bridges.runner as runner_module
+    from robocog.bridges.body import RobotBody
+    from robocog.bridges.qbo import QboRos2Body
+
+    source = Path(runner_module.__file__).read_text()
+    called = set(re.findall(r"self\.body\.([a-z_]+)\(", source))
+    assert {"mission_ended", "percepts", "execute", "stale"} <= called
+    for body in (RobotBody, QboRos2Body):
+        missing = sorted(name for name in called if not callable(getattr(body, name, None)))
+        assert missing == [], f"{body.__name__} lacks {missing}"

@@ -112,7 +112,8 @@ def _class_ref(kind: str, tree: lark.Tree) -> ClassRef:
                 _class_ref("argument", a) if len(a.children) > 1 else str(a.children[0])
             )
         elif a.type == "NUMBER":
-            ref.args.append(float(a) if "." in a else int(a))
+            # (a whole number of thousands of digits is beyond int(): kept as a float)
+            ref.args.append(float(a) if "." in a or len(a) > 300 else int(a))
         else:
             ref.args.append(_text(a))
     return ref
@@ -190,10 +191,17 @@ def _agent(decl: lark.Tree, path: Path) -> AgentDecl:
                     value.data == "true" if isinstance(value, lark.Tree) else _text(value)
                 )
         elif part.data == "instances":
-            n = int(float(str(part.children[0])))
+            text = str(part.children[0])
+            try:
+                n = int(float(text))
+            except (OverflowError, ValueError):  # 1e999 is infinite, nan no count
+                n = 0
             if not 1 <= n <= MAX_AGENTS:
                 raise ParseError(
-                    f"#{n}: between 1 and {MAX_AGENTS} instances", out.line, out.column, str(path)
+                    f"#{text[:40]}: between 1 and {MAX_AGENTS} instances",
+                    out.line,
+                    out.column,
+                    str(path),
                 )
             out.instances = n
         elif part.data in ("arch", "agent_class", "bb_class"):

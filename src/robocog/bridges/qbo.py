@@ -170,6 +170,11 @@ class QboRos2Body:
         """The Q.bo takes no text input."""
         return []
 
+    def mission_ended(self) -> str | None:
+        """Always None: the room's robot publishes no mission state; its run ends when
+        the Q.bo's plans end (the runner asks every body)."""
+        return None
+
     def stale(self) -> str | None:
         """Why the percepts cannot be trusted yet, or None."""
         if self.pose is None:
