@@ -186,7 +186,7 @@ class Scheme:
         if old_limit < MAX_DEPTH:
             sys.setrecursionlimit(MAX_DEPTH)
         try:
-            return self.eval(form, self.globals)
+            return self.evaluate(form, self.globals)
         except SchemeError as exc:
             if not exc.line and isinstance(form, Form):
                 raise exc.located(form.line, form.col, self.source) from None
@@ -232,8 +232,8 @@ class Scheme:
             env = self._bind(f, args)
             body = f.body
             for x in body[:-1]:
-                self.eval(x, env)
-            return self.eval(body[-1], env)
+                self.evaluate(x, env)
+            return self.evaluate(body[-1], env)
         if callable(f) and not isinstance(f, type):
             return self._call_primitive(Primitive(f, getattr(f, "__name__", "?")), args)
         raise SchemeError("wrong-type-arg", f"Wrong type to apply: {shorten(to_text(f))}")
@@ -278,7 +278,7 @@ class Scheme:
         return Env(d, f.env)
 
     # -- the evaluator
-    def eval(self, x: Any, env: Env) -> Any:  # noqa: C901 - one loop for tail calls
+    def evaluate(self, x: Any, env: Env) -> Any:  # noqa: C901 - one loop for tail calls
         """Evaluate ``x`` in ``env`` (tail positions loop instead of recursing)."""
         while True:
             if self.budget is not None:
@@ -310,7 +310,7 @@ class Scheme:
                         n = len(x)
                         if n not in (3, 4):
                             raise _syntax("if takes a test and one or two branches", x)
-                        if self.eval(x[1], env) is not False:
+                        if self.evaluate(x[1], env) is not False:
                             x = x[2]
                         elif n == 4:
                             x = x[3]
@@ -325,7 +325,7 @@ class Scheme:
                         if len(x) == 1:
                             return UNSPECIFIED
                         for y in x[1:-1]:
-                            self.eval(y, env)
+                            self.evaluate(y, env)
                         x = x[-1]
                         continue
                     if code == _LET:
@@ -341,7 +341,7 @@ class Scheme:
                         if len(x) != 3 or x[1].__class__ is not Sym:
                             raise _syntax("set! takes a name and a value", x)
                         where = env.find(x[1])
-                        where[x[1]] = self.eval(x[2], env)
+                        where[x[1]] = self.evaluate(x[2], env)
                         return UNSPECIFIED
                     if code == _QUOTEF:
                         if len(x) != 2:
@@ -367,7 +367,7 @@ class Scheme:
                         if len(x) == 1:
                             return True
                         for y in x[1:-1]:
-                            if self.eval(y, env) is False:
+                            if self.evaluate(y, env) is False:
                                 return False
                         x = x[-1]
                         continue
@@ -375,7 +375,7 @@ class Scheme:
                         if len(x) == 1:
                             return False
                         for y in x[1:-1]:
-                            v = self.eval(y, env)
+                            v = self.evaluate(y, env)
                             if v is not False:
                                 return v
                         x = x[-1]
@@ -383,11 +383,11 @@ class Scheme:
                     if code == _WHEN or code == _UNLESS:
                         if len(x) < 2:
                             raise _syntax("when/unless take a test", x)
-                        t = self.eval(x[1], env) is not False
+                        t = self.evaluate(x[1], env) is not False
                         if t != (code == _WHEN) or len(x) == 2:
                             return UNSPECIFIED
                         for y in x[2:-1]:
-                            self.eval(y, env)
+                            self.evaluate(y, env)
                         x = x[-1]
                         continue
                     if code == _DO:
@@ -400,13 +400,13 @@ class Scheme:
                         return UNSPECIFIED
                     if code == _DEFINE_SYNTAX:
                         raise SchemeError("syntax-error", "define-syntax is not supported")
-                f = self.eval(head, env)
-                args = [self.eval(a, env) for a in x[1:]]
+                f = self.evaluate(head, env)
+                args = [self.evaluate(a, env) for a in x[1:]]
                 if f.__class__ is Procedure:
                     env = self._bind(f, args)
                     body = f.body
                     for y in body[:-1]:
-                        self.eval(y, env)
+                        self.evaluate(y, env)
                     x = body[-1]
                     continue
                 if f.__class__ is Primitive:
@@ -470,7 +470,7 @@ class Scheme:
             raise _syntax("define needs a name", x)
         target = x[1]
         if target.__class__ is Sym:
-            value = self.eval(x[2], env) if len(x) > 2 else UNSPECIFIED
+            value = self.evaluate(x[2], env) if len(x) > 2 else UNSPECIFIED
             if isinstance(value, Procedure) and value.name == "#f":
                 value.name = str.__str__(target)
             env.vars[target] = value
@@ -508,7 +508,7 @@ class Scheme:
             body = x[2:]
             new = Env(dict(zip(names, values, strict=True)), env)
         for y in body[:-1]:
-            self.eval(y, new)
+            self.evaluate(y, new)
         return body[-1], new
 
     def _bindings(self, bindings: Any, env: Env, x: Any) -> tuple[list, list]:
@@ -519,7 +519,7 @@ class Scheme:
             if not isinstance(b, list) or not b or b[0].__class__ is not Sym or len(b) > 2:
                 raise _syntax("bad let binding", x)
             names.append(b[0])
-            values.append(self.eval(b[1], env) if len(b) == 2 else UNSPECIFIED)
+            values.append(self.evaluate(b[1], env) if len(b) == 2 else UNSPECIFIED)
         return names, values
 
     def _letstar(self, x: list, env: Env) -> tuple[Any, Env]:
@@ -528,10 +528,10 @@ class Scheme:
         for b in x[1]:
             if not isinstance(b, list) or not b or b[0].__class__ is not Sym or len(b) > 2:
                 raise _syntax("bad let* binding", x)
-            env = Env({b[0]: self.eval(b[1], env) if len(b) == 2 else UNSPECIFIED}, env)
+            env = Env({b[0]: self.evaluate(b[1], env) if len(b) == 2 else UNSPECIFIED}, env)
         env = Env({}, env)
         for y in x[2:-1]:
-            self.eval(y, env)
+            self.evaluate(y, env)
         return x[-1], env
 
     def _letrec(self, x: list, env: Env) -> tuple[Any, Env]:
@@ -543,12 +543,12 @@ class Scheme:
                 raise _syntax("bad letrec binding", x)
             new.vars[b[0]] = UNSPECIFIED
         for b in x[1]:
-            v = self.eval(b[1], new)
+            v = self.evaluate(b[1], new)
             if isinstance(v, Procedure) and v.name == "#f":
                 v.name = str.__str__(b[0])
             new.vars[b[0]] = v
         for y in x[2:-1]:
-            self.eval(y, new)
+            self.evaluate(y, new)
         return x[-1], new
 
     def _cond(self, x: list, env: Env) -> Any:
@@ -558,18 +558,18 @@ class Scheme:
             if clause[0] is _ELSE:
                 t: Any = True
             else:
-                t = self.eval(clause[0], env)
+                t = self.evaluate(clause[0], env)
             if t is False:
                 continue
             if len(clause) == 1:
                 self._last = t
                 return _DONE
             if clause[1] is _ARROW and len(clause) == 3:
-                f = self.eval(clause[2], env)
+                f = self.evaluate(clause[2], env)
                 self._last = self.apply(f, [t])
                 return _DONE
             for y in clause[1:-1]:
-                self.eval(y, env)
+                self.evaluate(y, env)
             return clause[-1], env
         self._last = UNSPECIFIED
         return _DONE
@@ -577,14 +577,14 @@ class Scheme:
     def _case(self, x: list, env: Env) -> Any:
         if len(x) < 2:
             raise _syntax("case needs a key", x)
-        key = self.eval(x[1], env)
+        key = self.evaluate(x[1], env)
         for clause in x[2:]:
             if not isinstance(clause, list) or len(clause) < 2:
                 raise _syntax("bad case clause", x)
             data = clause[0]
             if data is _ELSE or (isinstance(data, list) and any(eqv(key, d) for d in data)):
                 for y in clause[1:-1]:
-                    self.eval(y, env)
+                    self.evaluate(y, env)
                 return clause[-1]
         self._last = UNSPECIFIED
         return _DONE
@@ -597,16 +597,16 @@ class Scheme:
         for s in specs:
             if not isinstance(s, list) or len(s) < 2 or s[0].__class__ is not Sym:
                 raise _syntax("bad do binding", x)
-            new.vars[s[0]] = self.eval(s[1], env)
+            new.vars[s[0]] = self.evaluate(s[1], env)
         test = x[2]
-        while self.eval(test[0], new) is False:
+        while self.evaluate(test[0], new) is False:
             for y in x[3:]:
-                self.eval(y, new)
-            steps = {s[0]: self.eval(s[2], new) for s in specs if len(s) == 3}
+                self.evaluate(y, new)
+            steps = {s[0]: self.evaluate(s[2], new) for s in specs if len(s) == 3}
             new = Env({**new.vars, **steps}, env)
         value: Any = UNSPECIFIED
         for y in test[1:]:
-            value = self.eval(y, new)
+            value = self.evaluate(y, new)
         return value
 
     def _quasi(self, x: Any, env: Env, depth: int) -> Any:
@@ -616,14 +616,14 @@ class Scheme:
             return _datum(x)
         if x and x[0] is _UNQ and len(x) == 2:
             if depth == 1:
-                return self.eval(x[1], env)
+                return self.evaluate(x[1], env)
             return [_UNQ, self._quasi(x[1], env, depth - 1)]
         if x and x[0] is _QUASI and len(x) == 2:
             return [_QUASI, self._quasi(x[1], env, depth + 1)]
         out: list = []
         for y in x:
             if isinstance(y, list) and len(y) == 2 and y[0] is _UNQS and depth == 1:
-                v = self.eval(y[1], env)
+                v = self.evaluate(y[1], env)
                 if not isinstance(v, list):
                     raise SchemeError("wrong-type-arg", "unquote-splicing of a non-list")
                 out.extend(v)

@@ -266,7 +266,7 @@ def _force(s: Scheme, p: Any) -> Any:
     if not isinstance(p, Promise):
         return p
     if not p.done:
-        p.value = s.eval(p.expr, p.env)
+        p.value = s.evaluate(p.expr, p.env)
         p.done = True
     return p.value
 
