@@ -8,11 +8,13 @@ demo); Jason's fresh variable numbers (``_44``) are compared as placeholders.
 from __future__ import annotations
 
 import io
+import itertools
 import re
 from pathlib import Path
 
 import pytest
 
+from robocog.bdi import circumstance
 from robocog.bdi.project import run_files
 
 FAILURE = """!test.
@@ -80,6 +82,9 @@ def _placeholders(line: str) -> str:
 def _run(tmp_path: Path, text: str, monkeypatch: pytest.MonkeyPatch) -> list[str]:
     (tmp_path / "a.asl").write_text(text, encoding="utf-8")
     monkeypatch.chdir(tmp_path)  # the file is named as Jason names it: file:a.asl
+    # intention numbers count per process, as Jason's do per JVM: start them as a new
+    # process would, whatever ran before in this test worker
+    monkeypatch.setattr(circumstance, "_intention_ids", itertools.count(1))
     out = io.StringIO()
     run_files([Path("a.asl")], lambda ag, line: out.write(f"[{ag}] {line}\n"), real_time=False)
     return out.getvalue().splitlines()
