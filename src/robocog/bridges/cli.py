@@ -12,7 +12,6 @@ import argparse
 import importlib
 import logging
 import math
-import os
 import signal
 import sys
 from dataclasses import replace
@@ -168,10 +167,10 @@ def run(args: argparse.Namespace) -> int:
 def _qbo_body(args: argparse.Namespace, config: BridgeConfig) -> Any:
     """The Q.bo's own body (camera head, ultrasonic sensors) over ROS 2; its images are
     classified by the physical room's SVMs, loaded by name: the bridges know no world."""
-    if args.loopback and "CYCLONEDDS_URI" not in os.environ:
-        from robocog.bridges.ros2.loopback import use_loopback
+    if args.loopback:
+        from robocog.bridges.ros2.loopback import loopback_unless_configured
 
-        use_loopback()
+        loopback_unless_configured()
     try:
         from robocog.bridges.qbo import QboRos2Body
     except ImportError as exc:
@@ -211,10 +210,9 @@ def _qbo_body(args: argparse.Namespace, config: BridgeConfig) -> Any:
 def _make_link(args: argparse.Namespace, config: BridgeConfig) -> Any:
     if args.middleware == "ros2":
         if args.loopback:
-            from robocog.bridges.ros2.loopback import use_loopback
+            from robocog.bridges.ros2.loopback import loopback_unless_configured
 
-            if "CYCLONEDDS_URI" not in os.environ:
-                use_loopback()
+            loopback_unless_configured()
         try:
             from robocog.bridges.ros2.link import Ros2Link
         except ImportError as exc:

@@ -11,7 +11,6 @@ NavigateToPose and Grasp goals and results).
 
 from __future__ import annotations
 
-import os
 import random
 import subprocess
 import sys
@@ -94,12 +93,11 @@ def run_mission(
 ) -> RemoteRun:
     """One mission of ``mind`` (``nars`` or ``bdi``) on the field of ``seed``, the mind
     in a ``robocog bridge ros2`` process and the field served from this one."""
-    from robocog.bridges.ros2.loopback import use_loopback
+    from robocog.bridges.ros2.loopback import loopback_unless_configured
     from robocog.experiments.garbage import frame_budget
     from robocog.sim.ros2 import GarbageRobot
 
-    if "CYCLONEDDS_URI" not in os.environ:
-        use_loopback()
+    loopback_unless_configured()
     domain = random_domain() if domain is None else domain
     world = GarbageField(config, seed=seed)
     recorder = None

@@ -11,7 +11,6 @@ message. Where the robot ended is read off the simulator.
 
 from __future__ import annotations
 
-import os
 import subprocess
 import tempfile
 import time
@@ -51,12 +50,11 @@ def run_over_ros2(
     domain: int | None = None,
 ) -> RemoteRoomRun:
     """One run of the Q.bo mind on the room of ``seed``, the mind in a bridge process."""
-    from robocog.bridges.ros2.loopback import use_loopback
+    from robocog.bridges.ros2.loopback import loopback_unless_configured
     from robocog.sim.room import QboRoomRobot
     from robocog.worlds.mujoco_room import MujocoRoom
 
-    if "CYCLONEDDS_URI" not in os.environ:
-        use_loopback()
+    loopback_unless_configured()
     domain = random_domain() if domain is None else domain
     world = MujocoRoom(seed)
     recorder = None

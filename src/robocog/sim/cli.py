@@ -128,15 +128,12 @@ def run(args: argparse.Namespace) -> int:
     if args.ros2 == args.ros1:
         print("robocog sim: choose one middleware (--ros2 or --ros1)", file=sys.stderr)
         return 2
-    if args.rate <= 0:
-        print("robocog sim: --rate must be positive", file=sys.stderr)
-        return 2
     if args.ros1:
         return run_ros1(args)
-    if args.loopback and "CYCLONEDDS_URI" not in os.environ:
-        from robocog.bridges.ros2.loopback import use_loopback
+    if args.loopback:
+        from robocog.bridges.ros2.loopback import loopback_unless_configured
 
-        use_loopback()
+        loopback_unless_configured()
     try:
         from robocog.sim.ros2 import GarbageRobot
     except ImportError as exc:

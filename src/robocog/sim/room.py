@@ -266,13 +266,10 @@ def run_room(args: Any) -> int:
     if not args.ros2 or args.ros1:
         print("robocog sim room: served over ROS 2 only (--ros2)", file=sys.stderr)
         return 2
-    if args.rate <= 0:
-        print("robocog sim: --rate must be positive", file=sys.stderr)
-        return 2
-    if args.loopback and "CYCLONEDDS_URI" not in os.environ:
-        from robocog.bridges.ros2.loopback import use_loopback
+    if args.loopback:
+        from robocog.bridges.ros2.loopback import loopback_unless_configured
 
-        use_loopback()
+        loopback_unless_configured()
     domain = args.domain if args.domain is not None else int(os.environ.get("ROS_DOMAIN_ID", "0"))
     world = MujocoRoom(args.seed)
     recorder: Any = None

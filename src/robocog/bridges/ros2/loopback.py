@@ -31,3 +31,10 @@ def use_loopback(env: MutableMapping[str, str] | None = None) -> MutableMapping[
     target = os.environ if env is None else env
     target["CYCLONEDDS_URI"] = LOOPBACK_URI
     return target
+
+
+def loopback_unless_configured() -> None:
+    """Keep this process's DDS on loopback, unless the user's own ``CYCLONEDDS_URI``
+    already says where it runs (theirs wins)."""
+    if "CYCLONEDDS_URI" not in os.environ:
+        use_loopback()
