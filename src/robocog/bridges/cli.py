@@ -194,16 +194,8 @@ def _qbo_body(args: argparse.Namespace, config: BridgeConfig) -> Any:
         config,
         namespace=getattr(args, "namespace", ""),
         vision=vision,
-        on_message=recorder.write if recorder is not None else None,
+        recorder=recorder,
     )
-    if recorder is not None:
-        closing = body.close
-
-        def close() -> None:
-            closing()
-            recorder.close()
-
-        body.close = close  # type: ignore[method-assign]
     return body
 
 

@@ -84,8 +84,13 @@ class QboRos2Body:
         vision: Any = None,
         classifier: Any = None,
         on_message: Callable[[str, str, Any], None] | None = None,
+        recorder: Any = None,
     ) -> None:
         self.config = config or BridgeConfig(pose_source="odom")
+        #: a ``Recorder`` given every message and closed with the body, as ``Ros2Link``'s
+        self.recorder = recorder
+        if on_message is None and recorder is not None:
+            on_message = recorder.write
         #: the image areas' classification (``robocog.worlds.physics.room_vision``)
         self.vision = vision
         self.classifier = classifier
@@ -142,6 +147,8 @@ class QboRos2Body:
             self._lock.notify_all()
         if self._listener.is_alive():
             self._listener.join(timeout=2.0)
+        if self.recorder is not None:
+            self.recorder.close()
 
     def time(self) -> float:
         """The robot's clock (seconds)."""
