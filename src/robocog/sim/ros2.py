@@ -15,6 +15,12 @@ a goal at a checkpoint is the field's GoTo of that checkpoint, at the start corn
 end of the route, elsewhere a drive there) and ``/gripper/grasp``
 (robocog_msgs/action/Grasp, ``interfaces/Grasp.action`` beside the bridge).
 
+The world is driven from one thread, the one that runs :meth:`GarbageRobot.run`: a goal,
+a grasp or a Twist is handed to it as a job, done between frames (a physical field's
+camera renders in a GL context that belongs to that thread).
+:class:`~robocog.sim.field_mujoco.MujocoGarbageRobot` serves the physical field with the
+same topics and actions, its camera images and its ray-cast lidar besides.
+
 The field moves in steps: a goal's drive happens at once in simulated time, and the
 action then plays its duration back at ``rate`` times real time with feedback
 (``distance_remaining``) before it answers. In lock-step mode (``lockstep``) the sim
@@ -31,8 +37,9 @@ import logging
 import math
 import threading
 import time
+from collections import deque
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 from cyclonedds.domain import DomainParticipant
@@ -66,6 +73,16 @@ RESEND = 0.2
 TWIST_PERIOD = 0.1
 GRIPPER_JOINT = "gripper_finger_joint"
 GRIPPER_OPEN = 0.08  # m between the fingers
+
+
+@dataclass
+class _Job:
+    """Work on the world, handed to the thread that runs the world."""
+
+    work: Callable[[], Any]
+    done: threading.Event = field(default_factory=threading.Event)
+    result: Any = None
+    error: BaseException | None = None
 
 
 @dataclass
@@ -106,16 +123,16 @@ class GarbageRobot:
         self._ack = -math.inf
         self._twist = (0.0, 0.0, -math.inf)
         self._busy = 0  # goals playing back their duration (real time)
+        self._jobs: deque[_Job] = deque()
+        self._ended = threading.Event()  # run() is over: no job will be done any more
         self.dp = dp = DomainParticipant(domain_id)
-        ns = "/" + namespace.strip("/") if namespace.strip("/") else ""
+        self._ns = ns = "/" + namespace.strip("/") if namespace.strip("/") else ""
         tp = Topics()
 
         def name(ros: str) -> str:
             return ns + ros
 
-        def writer(ros: str, kind: type, qos: Any = RELIABLE) -> DataWriter:
-            topic = Topic(dp, m.topic_name(name(ros)), kind, qos=RELIABLE)
-            return DataWriter(dp, topic, qos=typed(qos, kind))
+        writer = self._writer
 
         def reader(ros: str, kind: type) -> DataReader:
             topic = Topic(dp, m.topic_name(name(ros)), kind, qos=RELIABLE)
@@ -151,6 +168,11 @@ class GarbageRobot:
         ]
         self._listener = threading.Thread(target=self._listen, daemon=True, name="sim-listen")
 
+    def _writer(self, ros: str, kind: type, qos: Any = RELIABLE) -> DataWriter:
+        """A writer of ``kind`` on the ROS topic ``ros`` (under the namespace)."""
+        topic = Topic(self.dp, m.topic_name(self._ns + ros), kind, qos=RELIABLE)
+        return DataWriter(self.dp, topic, qos=typed(qos, kind))
+
     # -- running -------------------------------------------------------------------
 
     def run(self, until: Callable[[], bool] | None = None) -> None:
@@ -158,7 +180,6 @@ class GarbageRobot:
         ``until()`` holds or ``stop()`` is called."""
         if not self._listener.is_alive():
             self._listener.start()
-        c = self.world.config
         # the mission's clock starts when a controller listens to the scan: a mind that
         # takes a while to start does not find its battery half spent
         waited = False
@@ -167,8 +188,17 @@ class GarbageRobot:
                 log.info("waiting for a controller to subscribe to the scan")
                 waited = True
             if until is not None and until():
+                self._ended.set()
                 return
-            self._stop.wait(0.05)
+            self._pause(0.05)
+        try:
+            self._frames(until)
+        finally:
+            self._ended.set()
+            self._run_jobs()  # those handed over meanwhile end, refused (see _in_world)
+
+    def _frames(self, until: Callable[[], bool] | None) -> None:
+        c = self.world.config
         while not self._stop.is_set():
             if until is not None and until():
                 break
@@ -179,8 +209,7 @@ class GarbageRobot:
                 if self._busy:
                     # a goal plays back a move that already happened: the clock has
                     # moved on, so no camera frame is taken, only the base reports
-                    held = self.world.holding
-                    frame = self._frame([Gripper(held.instance if held else None)])
+                    frame = self._frame([Gripper(self.world.in_gripper())], camera=False)
                 else:
                     self._drive()
                     frame = self._frame(self.world.percepts())
@@ -189,7 +218,53 @@ class GarbageRobot:
             if self.lockstep:
                 self._wait_for_ack(frame)
             else:
-                self._stop.wait(c.frame_seconds / self.rate)
+                self._pause(c.frame_seconds / self.rate)
+
+    # -- the world's thread ------------------------------------------------------------
+
+    def _in_world(self, work: Callable[[], Any]) -> Any:
+        """Run ``work`` on the thread that runs the world, under the lock, and return
+        what it returns; None when the sim stops (or its mission ends) first."""
+        job = _Job(work)
+        with self._acked:
+            self._jobs.append(job)
+            self._acked.notify_all()
+        while not job.done.wait(0.05):
+            if self._stop.is_set() or self._ended.is_set():
+                with self._acked:
+                    if job in self._jobs:
+                        self._jobs.remove(job)
+                        return None
+        if job.error is not None:
+            raise job.error
+        return job.result
+
+    def _run_jobs(self) -> None:
+        """Do the jobs handed over (on the world's thread); after ``run`` they are refused."""
+        while True:
+            with self._acked:
+                if not self._jobs:
+                    return
+                job = self._jobs.popleft()
+            try:
+                if not self._ended.is_set():
+                    with self.lock:
+                        job.result = job.work()
+            except Exception as exc:  # noqa: BLE001 - handed back to the job's own thread
+                job.error = exc
+            finally:
+                job.done.set()
+
+    def _pause(self, seconds: float) -> None:
+        """Let ``seconds`` of wall time pass, doing the jobs that come meanwhile."""
+        end = time.monotonic() + seconds
+        while not self._stop.is_set():
+            self._run_jobs()
+            left = end - time.monotonic()
+            if left <= 0:
+                return
+            with self._acked:
+                self._acked.wait_for(lambda: bool(self._jobs) or self._stop.is_set(), left)
 
     def _end_mission(self) -> None:
         """Tell the controller the mission is over (``ended: WHY`` on the mission topic),
@@ -223,10 +298,16 @@ class GarbageRobot:
 
     def _wait_for_ack(self, frame: Frame) -> None:
         while not self._stop.is_set():
+            self._run_jobs()  # the controller's goal for this frame comes before its ack
             with self._acked:
                 if self._acked.wait_for(
-                    lambda: self._ack >= frame.seconds - 1e-6 or self._stop.is_set(), RESEND
+                    lambda: (
+                        self._ack >= frame.seconds - 1e-6 or self._stop.is_set() or bool(self._jobs)
+                    ),
+                    RESEND,
                 ):
+                    if self._jobs:
+                        continue
                     return
             # the scan again, unchanged: it may have been lost (best effort), and it keeps
             # a slow controller's watchdog fed; the reliable rest of the frame arrived, and
@@ -235,39 +316,19 @@ class GarbageRobot:
 
     # -- frames --------------------------------------------------------------------
 
-    def _frame(self, percepts: list[Percept]) -> Frame:
-        w = self.world
-        c = w.config
-        t = w.time()
+    def _frame(self, percepts: list[Percept], camera: bool = True) -> Frame:
+        """The messages of one frame: the clock, where the base is, the percepts (a
+        camera frame's detections when ``camera``), the joints, and the scan last."""
+        t = self.world.time()
         now = m.stamp_now(t)
         messages: list[tuple[DataWriter, Any]] = [(self.w_clock, m.Clock(now))]
-        qx, qy, qz, qw = quaternion_of(w.theta)
-        pose = m.Pose(m.Point(w.x, w.y, 0.0), m.Quaternion(qx, qy, qz, qw))
-        identity = m.Transform()
-        base = m.Transform(m.Vector3(w.x, w.y, 0.0), m.Quaternion(qx, qy, qz, qw))
-        messages.append(
-            (
-                self.w_tf,
-                m.TFMessage(
-                    [
-                        m.TransformStamped(m.Header(now, "map"), "odom", identity),
-                        m.TransformStamped(m.Header(now, "odom"), "base_link", base),
-                    ]
-                ),
-            )
-        )
-        v, omega, _at = self._twist
-        twist = m.TwistWithCovariance(m.Twist(m.Vector3(x=v), m.Vector3(z=omega)))
-        messages.append(
-            (
-                self.w_odom,
-                m.Odometry(m.Header(now, "odom"), "base_link", m.PoseWithCovariance(pose), twist),
-            )
-        )
+        messages.extend(self._motion(now))
         holding = ""
         boxes: list[m.Detection2D] = []
         for p in percepts:
             if isinstance(p, Pose):
+                qx, qy, qz, qw = quaternion_of(p.theta)
+                pose = m.Pose(m.Point(p.x, p.y, 0.0), m.Quaternion(qx, qy, qz, qw))
                 messages.append(
                     (
                         self.w_amcl,
@@ -279,46 +340,70 @@ class GarbageRobot:
             elif isinstance(p, Gripper):
                 holding = p.holding or ""
             elif isinstance(p, Detection):
-                boxes.append(self._box(p, now, c.camera_fov))
-        opening = 0.0 if holding else GRIPPER_OPEN
-        messages.append(
-            (
-                self.w_joints,
-                m.JointState(
-                    m.Header(now, "base_link"),
-                    [GRIPPER_JOINT],
-                    [opening],
-                    [0.0],
-                    [10.0 if holding else 0.0],
-                ),
-            )
-        )
+                boxes.append(self._box(p, now))
+        messages.append((self.w_joints, self._joints(now, holding)))
         messages.append((self.w_gripper, m.String(holding)))
+        if camera:
+            messages.extend(self._camera(now))
         messages.append((self.w_dets, m.Detection2DArray(m.Header(now, "camera"), boxes)))
-        ranges = fence_ranges(w.x, w.y, w.theta, c.size)
-        scan = m.LaserScan(
+        messages.append((self.w_scan, self._scan(now)))  # last: it closes the frame
+        return Frame(t, messages)
+
+    def _motion(self, now: m.Time) -> list[tuple[DataWriter, Any]]:
+        """``/tf`` (map -> odom -> base_link) and ``/odom``: the field's pose is exact, so
+        odom coincides with the map."""
+        w = self.world
+        qx, qy, qz, qw = quaternion_of(w.theta)
+        pose = m.Pose(m.Point(w.x, w.y, 0.0), m.Quaternion(qx, qy, qz, qw))
+        base = m.Transform(m.Vector3(w.x, w.y, 0.0), m.Quaternion(qx, qy, qz, qw))
+        tf = m.TFMessage(
+            [
+                m.TransformStamped(m.Header(now, "map"), "odom", m.Transform()),
+                m.TransformStamped(m.Header(now, "odom"), "base_link", base),
+            ]
+        )
+        return [(self.w_tf, tf), (self.w_odom, self._odometry(now, pose))]
+
+    def _odometry(self, now: m.Time, pose: m.Pose) -> m.Odometry:
+        """An Odometry at ``pose`` moving at the last commanded velocity."""
+        v, omega, _at = self._twist
+        twist = m.TwistWithCovariance(m.Twist(m.Vector3(x=v), m.Vector3(z=omega)))
+        return m.Odometry(m.Header(now, "odom"), "base_link", m.PoseWithCovariance(pose), twist)
+
+    def _joints(self, now: m.Time, holding: str) -> m.JointState:
+        """The gripper's one joint: open, or closed with effort on what it holds."""
+        return m.JointState(
+            m.Header(now, "base_link"),
+            [GRIPPER_JOINT],
+            [0.0 if holding else GRIPPER_OPEN],
+            [0.0],
+            [10.0 if holding else 0.0],
+        )
+
+    def _camera(self, now: m.Time) -> list[tuple[DataWriter, Any]]:
+        """The camera's own messages of a frame (the field has detections only)."""
+        return []
+
+    def _scan(self, now: m.Time) -> m.LaserScan:
+        """360 beams cast against the fence from the robot's pose."""
+        w = self.world
+        return m.LaserScan(
             m.Header(now, "base_scan"),
             angle_min=-math.pi,
             angle_max=math.pi - 2 * math.pi / BEAMS,
             angle_increment=2 * math.pi / BEAMS,
-            scan_time=c.frame_seconds,
+            scan_time=w.config.frame_seconds,
             range_min=0.05,
             range_max=RANGE_MAX,
-            ranges=ranges,
+            ranges=fence_ranges(w.x, w.y, w.theta, w.config.size),
         )
-        messages.append((self.w_scan, scan))  # last: it closes the frame
-        return Frame(t, messages)
 
-    @staticmethod
-    def _box(d: Detection, now: m.Time, fov: float) -> m.Detection2D:
-        position = m.Point(d.distance * math.cos(d.bearing), d.distance * math.sin(d.bearing), 0.0)
-        hypothesis = m.ObjectHypothesisWithPose(
-            m.ObjectHypothesis(d.label, d.confidence),
-            m.PoseWithCovariance(m.Pose(position)),
-        )
-        column = column_of(d.bearing, fov)
+    def _box(self, d: Detection, now: m.Time) -> m.Detection2D:
+        """A detection as a box in the image: its column from its bearing (a pinhole
+        camera of the field's field of view), its position the object's offset."""
+        column = column_of(d.bearing, self.world.config.camera_fov)
         box = m.BoundingBox2D(m.Pose2D(m.Point2D(column, IMAGE_HEIGHT / 2)), 40.0, 80.0)
-        return m.Detection2D(m.Header(now, "camera"), [hypothesis], box, d.instance or "")
+        return detection_2d(d, now, box)
 
     def _send(self, frame: Frame) -> None:
         for writer, message in frame.messages:
@@ -344,8 +429,7 @@ class GarbageRobot:
             return
         self._twist = (v, omega, time.monotonic())
         if self.lockstep and (v or omega):
-            with self.lock:
-                self._apply_twist(v, omega, TWIST_PERIOD)
+            self._in_world(lambda: self._apply_twist(v, omega, TWIST_PERIOD))
 
     def _drive(self) -> None:
         """Real time: the last Twist, if fresh (0.5 s, as a base controller's time-out),
@@ -376,7 +460,8 @@ class GarbageRobot:
                 server.feedback(goal, m.NavigateToPoseFeedback(distance_remaining=1.0))
             server.finish(goal, m.STATUS_CANCELED, m.NavigateToPoseResult())
             return
-        with self.lock:
+
+        def drive() -> tuple[Outcome, float, float]:
             w = self.world
             x0, y0, began = w.x, w.y, w.time()
             place = target_place(w, x, y)
@@ -384,8 +469,13 @@ class GarbageRobot:
                 outcome = w.execute(GoTo(place))
             else:
                 outcome = w.drive_to(x, y, yaw)
-            took = w.time() - began
-            distance = math.hypot(w.x - x0, w.y - y0)
+            return outcome, w.time() - began, math.hypot(w.x - x0, w.y - y0)
+
+        done = self._in_world(drive)
+        if done is None:
+            server.finish(goal, m.STATUS_ABORTED, m.NavigateToPoseResult(1, "the sim stopped"))
+            return
+        outcome, took, distance = done
         if not self.lockstep:
             self._busy_while(lambda: self._feed_back(goal, server, took, distance))
 
@@ -437,7 +527,8 @@ class GarbageRobot:
     def _grasp(self, goal: ServerGoal, server: ActionServer) -> None:
         self._heard(server, "send_goal", goal)
         command, target = goal.goal.command.strip(), goal.goal.target.strip()
-        with self.lock:
+
+        def act() -> tuple[Outcome, float, str]:
             began = self.world.time()
             if command == "pick":
                 outcome = self.world.execute(Pick(target or "trash"))
@@ -445,8 +536,13 @@ class GarbageRobot:
                 outcome = self.world.execute(Drop())
             else:
                 outcome = Outcome.failure(f"unknown gripper command {command!r}")
-            took = self.world.time() - began
-            holding = self.world.holding.instance if self.world.holding else ""
+            return outcome, self.world.time() - began, self.world.in_gripper() or ""
+
+        done = self._in_world(act)
+        if done is None:
+            server.finish(goal, m.STATUS_ABORTED, m.GraspResult(False, "the sim stopped", ""))
+            return
+        outcome, took, holding = done
         if not self.lockstep:
             self._busy_while(lambda: self._stop.wait(took / self.rate))
         with self.lock:
@@ -454,6 +550,17 @@ class GarbageRobot:
             server.finish(
                 goal, m.STATUS_SUCCEEDED, m.GraspResult(outcome.ok, outcome.reason, holding)
             )
+
+
+def detection_2d(d: Detection, now: m.Time, box: m.BoundingBox2D) -> m.Detection2D:
+    """A Detection2D of ``box``: the class and score, the object's position from the
+    robot (bearing and distance), its track as the id."""
+    position = m.Point(d.distance * math.cos(d.bearing), d.distance * math.sin(d.bearing), 0.0)
+    hypothesis = m.ObjectHypothesisWithPose(
+        m.ObjectHypothesis(d.label, d.confidence),
+        m.PoseWithCovariance(m.Pose(position)),
+    )
+    return m.Detection2D(m.Header(now, "camera"), [hypothesis], box, d.instance or "")
 
 
 @dataclass

@@ -290,11 +290,15 @@ class GarbageField:
                 t.times_seen += 1
                 out.append(detection)
         out.append(self._lidar())
-        out.append(Gripper(self.holding.instance if self.holding else None))
+        out.append(Gripper(self.in_gripper()))
         if self.clock - self._last_pose_time >= c.localisation_period - 1e-9:
             self._last_pose_time = self.clock
             out.append(Pose(self.x, self.y, self.theta, self.place()))
         return out
+
+    def in_gripper(self) -> str | None:
+        """What the gripper reports it holds (the name its percepts give), or None."""
+        return self.holding.instance if self.holding else None
 
     def execute(self, command: Command) -> Outcome:
         """Carry out one command, advancing the clock by the time it takes."""
