@@ -213,20 +213,7 @@ class QboRoomRobot:
 
     def _publish_image(self) -> None:
         w = self.world
-        image = w.image()
-        height, width = int(image.shape[0]), int(image.shape[1])
-        self._send(
-            self.w_image,
-            m.Image(
-                m.Header(m.stamp_now(w.time()), "camera_link"),
-                height,
-                width,
-                "rgb8",
-                0,
-                width * 3,
-                list(image.tobytes()),
-            ),
-        )
+        self._send(self.w_image, m.rgb8(m.Header(m.stamp_now(w.time()), "camera_link"), w.image()))
         self.images += 1
 
     # -- commands ----------------------------------------------------------------------
@@ -258,7 +245,7 @@ def run_room(args: Any) -> int:
 
     from robocog.signals import handling
 
-    if getattr(args, "room_world", "mujoco") != "mujoco":
+    if getattr(args, "world_kind", None) not in (None, "mujoco"):
         print(
             "robocog sim room: only the physical room (--world mujoco) is served", file=sys.stderr
         )

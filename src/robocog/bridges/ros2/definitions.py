@@ -61,6 +61,14 @@ DEFINITIONS: dict[str, str] = {
         "std_msgs/msg/Header header\nuint32 height\nuint32 width\nstring encoding\n"
         "uint8 is_bigendian\nuint32 step\nuint8[] data"
     ),
+    "sensor_msgs/msg/RegionOfInterest": (
+        "uint32 x_offset\nuint32 y_offset\nuint32 height\nuint32 width\nbool do_rectify"
+    ),
+    "sensor_msgs/msg/CameraInfo": (
+        "std_msgs/msg/Header header\nuint32 height\nuint32 width\nstring distortion_model\n"
+        "float64[] d\nfloat64[9] k\nfloat64[9] r\nfloat64[12] p\nuint32 binning_x\n"
+        "uint32 binning_y\nsensor_msgs/msg/RegionOfInterest roi"
+    ),
     "sensor_msgs/msg/Range": (
         "std_msgs/msg/Header header\nuint8 radiation_type\nfloat32 field_of_view\n"
         "float32 min_range\nfloat32 max_range\nfloat32 range\nfloat32 variance"

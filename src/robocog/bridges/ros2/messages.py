@@ -8,6 +8,7 @@ hypothesis nests ``ObjectHypothesis`` and a box centre is ``vision_msgs/Pose2D``
 """
 
 from dataclasses import dataclass, field
+from typing import Any
 
 import cyclonedds.idl.types as t
 from cyclonedds.idl import IdlStruct
@@ -269,6 +270,47 @@ class Image(IdlStruct, typename="sensor_msgs::msg::dds_::Image_"):
     is_bigendian: t.uint8 = 0
     step: t.uint32 = 0
     data: t.sequence[t.uint8] = field(default_factory=list)
+
+
+def rgb8(header: Header, pixels: Any) -> Image:
+    """An ``rgb8`` Image of a height x width x 3 array of bytes (a rendered camera frame);
+    the pixels go as bytes, which serialize as the ``uint8[]`` they are."""
+    height, width = int(pixels.shape[0]), int(pixels.shape[1])
+    return Image(header, height, width, "rgb8", 0, width * 3, pixels.tobytes())
+
+
+@dataclass
+class RegionOfInterest(IdlStruct, typename="sensor_msgs::msg::dds_::RegionOfInterest_"):
+    x_offset: t.uint32 = 0
+    y_offset: t.uint32 = 0
+    height: t.uint32 = 0
+    width: t.uint32 = 0
+    do_rectify: bool = False
+
+
+@dataclass
+class CameraInfo(IdlStruct, typename="sensor_msgs::msg::dds_::CameraInfo_"):
+    header: Header = field(default_factory=Header)
+    height: t.uint32 = 0
+    width: t.uint32 = 0
+    distortion_model: str = ""
+    d: t.sequence[t.float64] = field(default_factory=list)
+    k: t.array[t.float64, 9] = field(default_factory=lambda: [0.0] * 9)
+    r: t.array[t.float64, 9] = field(default_factory=lambda: [0.0] * 9)
+    p: t.array[t.float64, 12] = field(default_factory=lambda: [0.0] * 12)
+    binning_x: t.uint32 = 0
+    binning_y: t.uint32 = 0
+    roi: RegionOfInterest = field(default_factory=RegionOfInterest)
+
+
+def pinhole(header: Header, width: int, height: int, focal: float) -> CameraInfo:
+    """The CameraInfo of an ideal pinhole camera (square pixels of ``focal`` px, the
+    principal point in the middle, no distortion), as a rendered camera is."""
+    cx, cy = width / 2.0, height / 2.0
+    k = [focal, 0.0, cx, 0.0, focal, cy, 0.0, 0.0, 1.0]
+    r = [1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0]
+    p = [focal, 0.0, cx, 0.0, 0.0, focal, cy, 0.0, 0.0, 0.0, 1.0, 0.0]
+    return CameraInfo(header, height, width, "plumb_bob", [0.0] * 5, k, r, p)
 
 
 #: sensor_msgs/Range radiation types (the layout is Jazzy's, with ``variance``)
