@@ -232,24 +232,14 @@ def run_garbage(
     detector = None
     if world == "mujoco":
         from robocog.experiments.garbage_physics import world_factory
-        from robocog.worlds.physics.trash_detector import load_or_train, model_path
+        from robocog.worlds.physics.onnx_detector import camera_detector
 
-        report = None
-        if detector_path is not None:
-            from robocog.worlds.physics.onnx_detector import OnnxDetector
-
-            try:
-                detector = OnnxDetector(detector_path)
-            except ImportError as exc:
-                raise SystemExit(
-                    f"robocog experiment: --detector needs onnxruntime ({exc})"
-                ) from None
-            except Exception as exc:  # a model onnxruntime cannot load: say so in a line
-                raise SystemExit(f"robocog experiment: --detector {detector_path}: {exc}") from None
-        else:
-            if not model_path().exists():
-                console.print("training the detector on rendered frames (once per machine)...")
-            detector, report = load_or_train()
+        try:
+            detector, report = camera_detector(detector_path, console.print)
+        except ImportError as exc:
+            raise SystemExit(f"robocog experiment: --detector needs onnxruntime ({exc})") from None
+        except ValueError as exc:  # a model onnxruntime cannot load: say so in a line
+            raise SystemExit(f"robocog experiment: --detector {exc}") from None
         if report is not None:
             console.print(
                 escape(

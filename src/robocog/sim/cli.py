@@ -2,7 +2,9 @@
 
 ``robocog sim tabletop --physics`` runs the physical tabletop on its own instead (see
 :mod:`robocog.sim.tabletop`); ``robocog sim room --world mujoco --ros2`` serves the
-physical Q.bo room (:mod:`robocog.sim.room`).
+physical Q.bo room (:mod:`robocog.sim.room`), ``robocog sim garbage --world mujoco
+--ros2`` the physical garbage field (:mod:`robocog.sim.field_mujoco`: camera images,
+the learned detector's boxes, the ray-cast lidar, the arm's joints).
 
 Run it in one terminal and ``robocog bridge ros2 --loopback --mind nars`` (or ``bdi``)
 in another; any ROS 2 node on rmw_cyclonedds in the same domain sees the robot too.
@@ -22,6 +24,7 @@ from typing import Any
 
 from robocog.argtypes import (
     DDS_DOMAIN,
+    EXISTING_FILE,
     EXISTING_FILE_STR,
     NEW_DIR_STR,
     NEW_FILE,
@@ -39,6 +42,15 @@ def configure(parser: argparse.ArgumentParser) -> None:
     from robocog.worlds.garbage import LIGHTS
 
     parser.add_argument("world", choices=WORLDS, help="which embedded world to serve")
+    parser.add_argument(
+        "--world",
+        dest="world_kind",
+        choices=("2d", "mujoco"),
+        default=None,
+        help="garbage: 2d, the field of probability tables (default), or mujoco, the "
+        "physical field (camera, learned detector, lidar, arm; the physics extra); "
+        "room: mujoco, the only one served",
+    )
     parser.add_argument("--ros2", action="store_true", help="serve it over ROS 2 (Cyclone DDS)")
     parser.add_argument(
         "--ros1", action="store_true", help="serve it over ROS 1 (rospy, move_base; a roscore)"
@@ -74,13 +86,13 @@ def configure(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--record", type=NEW_FILE, metavar="FILE.mcap", help="record every message")
     parser.add_argument("--max-frames", type=positive_int(), help="end after this many frames")
     parser.add_argument("-v", "--verbose", action="store_true", help="log more")
-    room = parser.add_argument_group("room")
-    room.add_argument(
-        "--world",
-        dest="room_world",
-        choices=("mujoco",),
-        default="mujoco",
-        help="room: the physical Q.bo room (MuJoCo; the only one served)",
+    garbage = parser.add_argument_group("garbage")
+    garbage.add_argument(
+        "--detector",
+        type=EXISTING_FILE,
+        metavar="MODEL.onnx",
+        help="garbage --world mujoco: a YOLO model in ONNX (run by onnxruntime) in place of "
+        "the learned detector",
     )
     tabletop = parser.add_argument_group("tabletop")
     tabletop.add_argument(
@@ -128,7 +140,14 @@ def run(args: argparse.Namespace) -> int:
     if args.ros2 == args.ros1:
         print("robocog sim: choose one middleware (--ros2 or --ros1)", file=sys.stderr)
         return 2
+    physical = args.world_kind == "mujoco"
+    if args.detector is not None and not physical:
+        print("robocog sim: --detector is for the physical field (--world mujoco)", file=sys.stderr)
+        return 2
     if args.ros1:
+        if physical:
+            print("robocog sim: the physical field is served over ROS 2 (--ros2)", file=sys.stderr)
+            return 2
         return run_ros1(args)
     if args.loopback:
         from robocog.bridges.ros2.loopback import loopback_unless_configured
@@ -142,13 +161,21 @@ def run(args: argparse.Namespace) -> int:
     from robocog.worlds.garbage import GarbageConfig, GarbageField
 
     domain = args.domain if args.domain is not None else int(os.environ.get("ROS_DOMAIN_ID", "0"))
-    world = GarbageField(GarbageConfig(light=args.light), seed=args.seed)
+    config = GarbageConfig(light=args.light)
+    if physical:
+        made = _physical_field(args, config)
+        if isinstance(made, str):
+            print(f"robocog sim: {made}", file=sys.stderr)
+            return 2
+        world, serve = made
+    else:
+        world, serve = GarbageField(config, seed=args.seed), GarbageRobot
     recorder: Any = None
     if args.record is not None:
         from robocog.bridges.ros2.record import Recorder
 
         recorder = Recorder(args.record)
-    robot = GarbageRobot(
+    robot = serve(
         world,
         domain,
         rate=args.rate,
@@ -167,8 +194,9 @@ def run(args: argparse.Namespace) -> int:
         if args.lockstep
         else f"about {mission / args.rate:.0f} s of wall time at --rate {args.rate:g}"
     )
+    kind = "the physical garbage field (MuJoCo)" if physical else "garbage field"
     print(
-        f"robocog sim: garbage field (seed {args.seed}, {args.light}) on ROS 2 domain {domain}"
+        f"robocog sim: {kind} (seed {args.seed}, {args.light}) on ROS 2 domain {domain}"
         f"{' (loopback)' if args.loopback else ''}; {len(world.objects())} objects; serving "
         f"until the mission's {mission:.0f} simulated seconds are over ({pace}) or Ctrl-C",
         file=sys.stderr,
@@ -181,6 +209,9 @@ def run(args: argparse.Namespace) -> int:
         pass
     finally:
         robot.close()
+        release = getattr(world, "close", None)
+        if release is not None:
+            release()  # the camera's GL context
         if recorder is not None:
             recorder.close()
     print(
@@ -189,6 +220,29 @@ def run(args: argparse.Namespace) -> int:
         flush=True,
     )
     return 0
+
+
+def _physical_field(args: argparse.Namespace, config: Any) -> tuple[Any, Any] | str:
+    """The physical field of ``args`` and the robot class that serves it, or why not."""
+    try:
+        from robocog.sim.field_mujoco import MujocoGarbageRobot
+        from robocog.worlds.mujoco_garbage import MujocoGarbageField
+        from robocog.worlds.physics.onnx_detector import camera_detector
+    except ImportError as exc:
+        return f"--world mujoco needs the physics extra ({exc})"
+    say = lambda text: print(f"robocog sim: {text}", file=sys.stderr, flush=True)  # noqa: E731
+    try:
+        detector, report = camera_detector(args.detector, say)
+    except ImportError as exc:
+        return f"--detector needs onnxruntime ({exc})"
+    except ValueError as exc:
+        return f"--detector {exc}"
+    if report is not None:
+        say(
+            f"detector: recall {report.recall:.1%}, labels {report.label_accuracy:.1%} on "
+            f"{report.frames} held-out renders"
+        )
+    return MujocoGarbageField(config, args.seed, detector=detector), MujocoGarbageRobot
 
 
 def run_ros1(args: argparse.Namespace) -> int:

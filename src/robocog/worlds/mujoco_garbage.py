@@ -181,6 +181,9 @@ class MujocoGarbageField(GarbageField):
             t.upright = self._upright(t)
         self.last_frame: np.ndarray | None = None
         self.last_boxes: list[Box] = []
+        #: the last frame's detections, each with the box it came from (for a robot
+        #: that publishes the boxes, as a ROS detector node does)
+        self.last_detections: list[tuple[Detection, Box]] = []
         #: called with every camera frame the percepts come from (a recorder's hook)
         self.on_frame: Callable[[np.ndarray], None] | None = None
 
@@ -408,6 +411,7 @@ class MujocoGarbageField(GarbageField):
             self.on_frame(image)
         ex, ey, et = self.base.estimate
         out = []
+        self.last_detections = []
         for box in boxes:
             at = self.locate(box)
             if at is None:
@@ -421,15 +425,15 @@ class MujocoGarbageField(GarbageField):
             wy = ey + bx * math.sin(et) + by * math.cos(et)
             track = self._track(box.label, wx, wy)
             self._book_sighting(wx, wy)
-            out.append(
-                Detection(
-                    label=box.label,
-                    bearing=round(bearing, 4),
-                    distance=round(distance, 3),
-                    confidence=box.confidence,
-                    instance=track.instance,
-                )
+            detection = Detection(
+                label=box.label,
+                bearing=round(bearing, 4),
+                distance=round(distance, 3),
+                confidence=box.confidence,
+                instance=track.instance,
             )
+            out.append(detection)
+            self.last_detections.append((detection, box))
         return out
 
     def _track(self, label: str, x: float, y: float) -> Track:
@@ -455,8 +459,12 @@ class MujocoGarbageField(GarbageField):
         self.tracks.append(t)
         return t
 
+    def lidar_scan(self) -> Scan:
+        """The lidar's latest scan (it scans at its own rate as the physics steps)."""
+        return self._scan or self.base.scan(self.clock)
+
     def _lidar_percept(self) -> Obstacle:
-        scan = self._scan or self.base.scan(self.clock)
+        scan = self.lidar_scan()
         c = self.config
         ok = np.isfinite(scan.ranges) & (scan.ranges <= c.lidar_range)
         if not ok.any():
@@ -477,13 +485,17 @@ class MujocoGarbageField(GarbageField):
         self._settle(c.frame_seconds)
         out: list[Percept] = list(self._detections())
         out.append(self._lidar_percept())
-        holding = self._holding_track.instance if self._holding_track else None
-        out.append(Gripper(holding))
+        out.append(Gripper(self.in_gripper()))
         if self.clock - self._last_pose_time >= c.localisation_period - 1e-9:
             self._last_pose_time = self.clock
             x, y, theta = self.base.estimate
             out.append(Pose(round(x, 3), round(y, 3), round(theta, 4), self.place()))
         return out
+
+    def in_gripper(self) -> str | None:
+        """The track the gripper closed on, as the detections named it (the fingers'
+        sensors said it holds; which object that is, only the simulator knows)."""
+        return self._holding_track.instance if self._holding_track else None
 
     def place(self) -> str | None:
         """The checkpoint the estimated pose is at, if any."""

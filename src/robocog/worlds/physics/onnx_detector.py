@@ -15,7 +15,9 @@ non-maximum suppression.
 from __future__ import annotations
 
 import time
+from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -111,3 +113,26 @@ class OnnxDetector:
         self.seconds += time.perf_counter() - start
         self.frames += 1
         return boxes
+
+
+def camera_detector(
+    onnx_model: Path | None = None, say: Callable[[str], None] | None = None
+) -> tuple[Any, Any]:
+    """The detector a physical field's camera runs, and its training report (None when
+    there is none): the user's ONNX model when one is given, else robocog's learned
+    detector, trained on rendered frames the first time (``say`` is told so before).
+
+    One-line errors: ``ImportError`` when onnxruntime is missing, ``ValueError`` when
+    onnxruntime cannot load the model."""
+    if onnx_model is not None:
+        try:
+            return OnnxDetector(onnx_model), None
+        except ImportError:
+            raise
+        except Exception as exc:  # noqa: BLE001 - onnxruntime refuses a model in many ways
+            raise ValueError(f"{onnx_model}: {exc}") from None
+    from robocog.worlds.physics.trash_detector import load_or_train, model_path
+
+    if say is not None and not model_path().exists():
+        say("training the detector on rendered frames (once per machine)...")
+    return load_or_train()
