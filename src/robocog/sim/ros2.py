@@ -125,6 +125,8 @@ class GarbageRobot:
         self._busy = 0  # goals playing back their duration (real time)
         self._jobs: deque[_Job] = deque()
         self._ended = threading.Event()  # run() is over: no job will be done any more
+        self._sending = threading.Lock()  # a frame, or a scan sent again, goes out whole
+        self._last: Frame | None = None
         self.dp = dp = DomainParticipant(domain_id)
         self._ns = ns = "/" + namespace.strip("/") if namespace.strip("/") else ""
         tp = Topics()
@@ -214,7 +216,7 @@ class GarbageRobot:
                     self._drive()
                     frame = self._frame(self.world.percepts())
                     self.frames += 1
-                self._send(frame)
+                self._publish(frame)
             if self.lockstep:
                 self._wait_for_ack(frame)
             else:
@@ -229,12 +231,18 @@ class GarbageRobot:
         with self._acked:
             self._jobs.append(job)
             self._acked.notify_all()
+        beat = time.monotonic() + RESEND
         while not job.done.wait(0.05):
             if self._stop.is_set() or self._ended.is_set():
                 with self._acked:
                     if job in self._jobs:
                         self._jobs.remove(job)
                         return None
+            if time.monotonic() >= beat:
+                # the world is busy (a physical drive or grasp takes a while): the last
+                # scan again keeps the controller's watchdog fed, as in a lock-step wait
+                self._resend()
+                beat = time.monotonic() + RESEND
         if job.error is not None:
             raise job.error
         return job.result
@@ -312,7 +320,7 @@ class GarbageRobot:
             # the scan again, unchanged: it may have been lost (best effort), and it keeps
             # a slow controller's watchdog fed; the reliable rest of the frame arrived, and
             # sent again after the controller acted it would tell of a world gone by
-            self._send(Frame(frame.seconds, frame.messages[-1:]))
+            self._resend()
 
     # -- frames --------------------------------------------------------------------
 
@@ -404,6 +412,19 @@ class GarbageRobot:
         column = column_of(d.bearing, self.world.config.camera_fov)
         box = m.BoundingBox2D(m.Pose2D(m.Point2D(column, IMAGE_HEIGHT / 2)), 40.0, 80.0)
         return detection_2d(d, now, box)
+
+    def _publish(self, frame: Frame) -> None:
+        """Send a frame; its scan is what ``_resend`` sends again."""
+        with self._sending:
+            self._send(frame)
+            self._last = frame
+
+    def _resend(self) -> None:
+        """The last frame's scan again, unchanged (a controller in lock-step acknowledges
+        it and decides on nothing new)."""
+        with self._sending:
+            if self._last is not None:
+                self._send(Frame(self._last.seconds, self._last.messages[-1:]))
 
     def _send(self, frame: Frame) -> None:
         for writer, message in frame.messages:
