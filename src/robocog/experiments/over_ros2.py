@@ -15,8 +15,10 @@ import random
 import subprocess
 import sys
 import time
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 from robocog.worlds.garbage import GarbageConfig, GarbageField
 
@@ -90,22 +92,29 @@ def run_mission(
     domain: int | None = None,
     record: Path | None = None,
     timeout: float = MISSION_TIMEOUT,
+    make_world: Callable[[GarbageConfig, int], GarbageField] | None = None,
+    serve: Callable[..., Any] | None = None,
 ) -> RemoteRun:
     """One mission of ``mind`` (``nars`` or ``bdi``) on the field of ``seed``, the mind
-    in a ``robocog bridge ros2`` process and the field served from this one."""
+    in a ``robocog bridge ros2`` process and the field served from this one.
+
+    ``make_world`` makes the field (the 2D one by default) and ``serve`` is the robot
+    that serves it (``GarbageRobot``'s signature; the physical field's
+    ``MujocoGarbageRobot``); the field runs on this thread."""
     from robocog.bridges.ros2.loopback import loopback_unless_configured
     from robocog.experiments.garbage import frame_budget
     from robocog.sim.ros2 import GarbageRobot
 
     loopback_unless_configured()
     domain = random_domain() if domain is None else domain
-    world = GarbageField(config, seed=seed)
+    world = (make_world or _field)(config, seed)
+    serve = serve or GarbageRobot
     recorder = None
     if record is not None:
         from robocog.bridges.ros2.record import Recorder
 
         recorder = Recorder(record)
-    robot = GarbageRobot(
+    robot = serve(
         world,
         domain,
         lockstep=True,
@@ -141,6 +150,9 @@ def run_mission(
             recorder.close()
         stop_bridge(bridge)
         stderr = bridge.stderr.read() if bridge.stderr is not None else ""
+        release = getattr(world, "close", None)
+        if release is not None:
+            release()  # a physical field's GL context
     if error and stderr:
         error += ": " + stderr.strip().splitlines()[-1][:300]
     # before the first frame the bridge's watchdog always holds the robot: not counted
@@ -161,6 +173,10 @@ def run_mission(
         error=error,
         watchdog_trips=len(trips),
     )
+
+
+def _field(config: GarbageConfig, seed: int) -> GarbageField:
+    return GarbageField(config, seed=seed)
 
 
 def pooled(runs: list[RemoteRun]) -> float | None:
