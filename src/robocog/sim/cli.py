@@ -137,6 +137,7 @@ def run(args: argparse.Namespace) -> int:
         format="%(asctime)s %(levelname)s %(name)s: %(message)s",
         stream=sys.stderr,
     )
+    logging.getLogger("OpenGL").setLevel(logging.WARNING)  # its INFO line on every start
     if args.ros2 == args.ros1:
         print("robocog sim: choose one middleware (--ros2 or --ros1)", file=sys.stderr)
         return 2
