@@ -142,6 +142,10 @@ def test_a_nars_bridge_collects_on_the_physical_field_over_dds(
     first, last = (got["/odom"][i][1].pose.pose.position for i in (0, -1))
     assert (first.x, first.y) == pytest.approx(world.start, abs=0.05)
     assert math.hypot(last.x - first.x, last.y - first.y) > 3.0
+    imu = got["/imu/data_raw"][-1][1]
+    assert kinds["/imu/data_raw"] == "sensor_msgs/msg/Imu"
+    assert imu.orientation_covariance[0] == -1  # no orientation, as REP 145 marks it
+    assert imu.linear_acceleration.z == pytest.approx(9.81, abs=0.5)  # standing: gravity
     tf = got["/tf"][-1][1]
     assert [t.child_frame_id for t in tf.transforms] == ["odom", "base_link", "base_scan", "camera"]
     joints = got["/joint_states"][-1][1]

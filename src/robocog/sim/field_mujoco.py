@@ -16,6 +16,8 @@ with what the physical robot measures in place of the field's exact geometry:
 * ``/odom`` and ``/tf``: the wheel odometry (which slips) as odom -> base_link, the
   localiser's correction from the lidar as map -> odom, and the lidar and the camera
   (its optical frame) on the base; ``/amcl_pose`` the localiser's estimate;
+* ``/imu/data_raw`` (sensor_msgs/Imu): the gyro and the accelerometer, no orientation
+  (its covariance's first element -1, as REP 145 says of an IMU without one);
 * ``/joint_states``: the arm's joint sensors (shoulder, elbow, wrist, both fingers).
 
 The camera renders in a GL context that belongs to the thread that made it, so the
@@ -41,6 +43,7 @@ from robocog.worlds.physics import field_scene as fs
 #: the camera's topics (those a ROS camera driver offers)
 IMAGE_TOPIC = "/camera/image_raw"
 CAMERA_INFO_TOPIC = "/camera/camera_info"
+IMU_TOPIC = "/imu/data_raw"
 #: an optical frame (x right, y down, z ahead) in a body frame (x ahead, y left, z up)
 OPTICAL = (-0.5, 0.5, -0.5, 0.5)
 
@@ -74,6 +77,7 @@ class MujocoGarbageRobot(GarbageRobot):
         super().__init__(world, domain_id, **options)
         self.w_image = self._writer(IMAGE_TOPIC, m.Image, SENSOR)
         self.w_camera_info = self._writer(CAMERA_INFO_TOPIC, m.CameraInfo)
+        self.w_imu = self._writer(IMU_TOPIC, m.Imu, SENSOR)
         pc = world.physical
         self.focal = (pc.height / 2) / math.tan(math.radians(fs.CAMERA_FOVY) / 2)
         cx, cy, cz = fs.CAMERA_AT
@@ -88,7 +92,7 @@ class MujocoGarbageRobot(GarbageRobot):
 
     def _motion(self, now: m.Time) -> list[tuple[DataWriter, Any]]:
         """The odometry's pose as odom -> base_link, the localiser's correction of it as
-        map -> odom, the sensors on the base."""
+        map -> odom, the sensors on the base; the IMU's reading."""
         w = self.world
         ox, oy, ot = w.base.odometry.pose
         ex, ey, et = w.base.estimate
@@ -106,7 +110,14 @@ class MujocoGarbageRobot(GarbageRobot):
         )
         qx, qy, qz, qw = quaternion_of(ot)
         pose = m.Pose(m.Point(ox, oy, 0.0), m.Quaternion(qx, qy, qz, qw))
-        return [(self.w_tf, tf), (self.w_odom, self._odometry(now, pose))]
+        gyro, accel = w.base.imu()
+        imu = m.Imu(
+            m.Header(now, "base_link"),  # the IMU sits on the base's axes
+            orientation_covariance=[-1.0] + [0.0] * 8,
+            angular_velocity=m.Vector3(*map(float, gyro)),
+            linear_acceleration=m.Vector3(*map(float, accel)),
+        )
+        return [(self.w_tf, tf), (self.w_odom, self._odometry(now, pose)), (self.w_imu, imu)]
 
     def _joints(self, now: m.Time, holding: str) -> m.JointState:
         """The arm's joint sensors (radians; the fingers in metres from the middle)."""

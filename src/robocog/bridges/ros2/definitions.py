@@ -69,6 +69,12 @@ DEFINITIONS: dict[str, str] = {
         "float64[] d\nfloat64[9] k\nfloat64[9] r\nfloat64[12] p\nuint32 binning_x\n"
         "uint32 binning_y\nsensor_msgs/msg/RegionOfInterest roi"
     ),
+    "sensor_msgs/msg/Imu": (
+        "std_msgs/msg/Header header\ngeometry_msgs/msg/Quaternion orientation\n"
+        "float64[9] orientation_covariance\ngeometry_msgs/msg/Vector3 angular_velocity\n"
+        "float64[9] angular_velocity_covariance\ngeometry_msgs/msg/Vector3 linear_acceleration\n"
+        "float64[9] linear_acceleration_covariance"
+    ),
     "sensor_msgs/msg/Range": (
         "std_msgs/msg/Header header\nuint8 radiation_type\nfloat32 field_of_view\n"
         "float32 min_range\nfloat32 max_range\nfloat32 range\nfloat32 variance"

@@ -313,6 +313,21 @@ def pinhole(header: Header, width: int, height: int, focal: float) -> CameraInfo
     return CameraInfo(header, height, width, "plumb_bob", [0.0] * 5, k, r, p)
 
 
+def _zeros9() -> list[float]:
+    return [0.0] * 9
+
+
+@dataclass
+class Imu(IdlStruct, typename="sensor_msgs::msg::dds_::Imu_"):
+    header: Header = field(default_factory=Header)
+    orientation: Quaternion = field(default_factory=Quaternion)
+    orientation_covariance: t.array[t.float64, 9] = field(default_factory=_zeros9)
+    angular_velocity: Vector3 = field(default_factory=Vector3)
+    angular_velocity_covariance: t.array[t.float64, 9] = field(default_factory=_zeros9)
+    linear_acceleration: Vector3 = field(default_factory=Vector3)
+    linear_acceleration_covariance: t.array[t.float64, 9] = field(default_factory=_zeros9)
+
+
 #: sensor_msgs/Range radiation types (the layout is Jazzy's, with ``variance``)
 ULTRASOUND, INFRARED = 0, 1
 
