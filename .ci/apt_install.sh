@@ -86,8 +86,10 @@ for package in "${private[@]}"; do
     # the private path is forced)
     pinned=$(apt-cache show --no-all-versions "$package" | sed -n 's/^Depends: //p' |
         tr ',' '\n' | sed -n 's/^ *\([^ ]*\) (= .*/\1/p')
+    # (never the C library: it must match the system's dynamic loader, and a Debian
+    # release keeps one upstream glibc, so the system's serves)
     debs=$(apt-get install -s --reinstall -q --no-install-recommends "$package" $pinned |
-        sed -n 's/^Inst \([^ ]*\) .*/\1/p' | sort -u)
+        sed -n 's/^Inst \([^ ]*\) .*/\1/p' | grep -vx 'libc6\|libc-bin' | sort -u)
     mkdir -p "$root/.unpacked" "$root/bin"
     download=$(mktemp -d "$root/.download.XXXXXX")
     echo "apt_install.sh: unpacking $package into $root (dpkg's database is not touched):" $debs

@@ -134,7 +134,14 @@ def test_nothing_missing_calls_no_apt(tmp_path: Path) -> None:
 def test_a_package_that_would_upgrade_is_unpacked_privately(tmp_path: Path) -> None:
     machine = Machine(tmp_path)
     machine.installed("libold")
-    machine.dry_run("browser", ["Inst libold [0.9] (1.0 Debian:12 [amd64])", "Inst libnew (1.0)"])
+    machine.dry_run(
+        "browser",
+        [
+            "Inst libold [0.9] (1.0 Debian:12 [amd64])",
+            "Inst libc6 [2.36-9] (2.36-9+deb12u14 Debian:12 [amd64])",
+            "Inst libnew (1.0 Debian:12 [amd64])",
+        ],
+    )
     machine.programs("browser", "browser")
     machine.depends("browser", "libc6 (>= 2.35), browser-common (= 1.0), libold (>= 1.0)")
     out = machine.run("plain", "browser")
@@ -143,7 +150,7 @@ def test_a_package_that_would_upgrade_is_unpacked_privately(tmp_path: Path) -> N
     # apt installs only the package whose dry run upgrades nothing, and never upgrades
     assert len(installs) == 1 and installs[0].split()[-1] == "plain"
     assert "--no-upgrade" in installs[0] and "--no-remove" in installs[0]
-    assert "browser needs newer versions of installed packages (libold )" in out
+    assert "browser needs newer versions of installed packages (libold libc6 )" in out
     # the private root has the package, the one it pins to its version, the newer
     # library and the new one, through apt-get download and dpkg -x only (dpkg's
     # database is not touched)
