@@ -5,7 +5,9 @@
 # display (robocog sets MUJOCO_GL=egl itself); valgrind for the test that the AprilTag
 # library touches no freed memory when a process ends; chromium for the inspector's
 # browser tests (pytest-playwright drives it; Playwright's own browser download is not
-# used). Without apt-get it says so, and the tests that need these skip.
+# used; where Debian's chromium would upgrade installed libraries, it is unpacked into
+# ~/.cache/robocog/deb-root instead). Without apt-get it says so, and the tests that
+# need these skip.
 set -euo pipefail
 here="$(dirname "$0")"
 bash "$here/install_ros.sh"

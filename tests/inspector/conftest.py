@@ -1,5 +1,6 @@
 """Shared pieces of the inspector's tests: a live inspector on a loop in a thread, and
-a browser (Debian's chromium under pytest-playwright) to drive its page."""
+a browser (Debian's chromium under pytest-playwright, installed or unpacked privately by
+.ci/apt_install.sh) to drive its page."""
 
 from __future__ import annotations
 
@@ -19,10 +20,23 @@ RESULTS = Path(
         "ROBOCOG_TEST_RESULTS", Path(__file__).resolve().parents[2] / "tmp" / "test-results"
     )
 )
+
+
+def private_chromium() -> str | None:
+    """Debian's chromium as .ci/apt_install.sh unpacks it where installing it through apt
+    would upgrade installed packages: ROOT/bin/chromium, in the same root as the script's
+    (``ROBOCOG_DEB_ROOT``, by default ~/.cache/robocog/deb-root)."""
+    cache = os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache"
+    root = os.environ.get("ROBOCOG_DEB_ROOT") or Path(cache) / "robocog" / "deb-root"
+    path = Path(root) / "bin" / "chromium"
+    return str(path) if os.access(path, os.X_OK) else None
+
+
 CHROMIUM = (
     os.environ.get("ROBOCOG_CHROMIUM")
     or shutil.which("chromium")
     or shutil.which("chromium-browser")
+    or private_chromium()
 )
 HAVE_PLAYWRIGHT = importlib.util.find_spec("pytest_playwright") is not None
 HAVE_SERVER = (
@@ -32,7 +46,7 @@ HAVE_SERVER = (
 
 _needs_browser = pytest.mark.skipif(
     not (CHROMIUM and HAVE_PLAYWRIGHT and HAVE_SERVER),
-    reason="needs chromium (apt-get install chromium), pytest-playwright and the inspect extra"
+    reason="needs chromium (bash .ci/install_system.sh), pytest-playwright and the inspect extra"
     + f" (chromium: {CHROMIUM or 'absent'}, pytest-playwright: {HAVE_PLAYWRIGHT}, server: {HAVE_SERVER})",
 )
 
