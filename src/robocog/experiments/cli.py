@@ -314,7 +314,7 @@ def run_garbage(
         write_json(json_path, result)
         console.print(escape(f"results: {json_path}"))
     if out is not None:
-        page = write_report(result, out)
+        page = write_report(result, out, lambda line: console.print(escape(line)))
         console.print(escape(f"report: {page}"))
     return result
 

@@ -12,6 +12,7 @@ from __future__ import annotations
 import argparse
 import dataclasses
 import json
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -298,9 +299,18 @@ def markdown(result: ExperimentResult, images: dict[str, str]) -> str:
     return "\n".join(lines) + "\n"
 
 
-def plots(result: ExperimentResult, out: Path) -> dict[str, str]:
-    """PNG plots into ``out``; empty when matplotlib is not installed."""
+def plots(
+    result: ExperimentResult, out: Path, say: Callable[[str], None] | None = None
+) -> dict[str, str]:
+    """PNG plots into ``out``; empty when matplotlib is not installed.
+
+    ``say`` gets a line as each plot is written: importing matplotlib and drawing take
+    a few seconds on a busy machine, which would otherwise be the longest silence of a
+    piped demo.
+    """
+    tell = say or (lambda _line: None)
     try:
+        tell(f"writing the report and its plots into {out}")
         import matplotlib
 
         matplotlib.use("Agg")
@@ -326,6 +336,7 @@ def plots(result: ExperimentResult, out: Path) -> dict[str, str]:
     fig.savefig(out / "success.png", dpi=110)
     plt.close(fig)
     images["success"] = "success.png"
+    tell(f"plot: {out / 'success.png'}")
 
     fig, ax = plt.subplots(figsize=(5.5, 3.2))
     bottom = [0.0] * len(names)
@@ -340,6 +351,7 @@ def plots(result: ExperimentResult, out: Path) -> dict[str, str]:
     fig.savefig(out / "failures.png", dpi=110)
     plt.close(fig)
     images["failures"] = "failures.png"
+    tell(f"plot: {out / 'failures.png'}")
 
     layout = GarbageField(result.config, seed=0).describe()
     for name, m in ran.items():
@@ -379,13 +391,16 @@ def plots(result: ExperimentResult, out: Path) -> dict[str, str]:
         fig.savefig(out / fname, dpi=110)
         plt.close(fig)
         images[f"trajectory_{name}"] = fname
+        tell(f"plot: {out / fname}")
     return images
 
 
-def write_report(result: ExperimentResult, out: Path) -> Path:
+def write_report(
+    result: ExperimentResult, out: Path, say: Callable[[str], None] | None = None
+) -> Path:
     """Write ``report.md`` (and the plots) into ``out``; returns the page's path."""
     out.mkdir(parents=True, exist_ok=True)
-    images = plots(result, out)
+    images = plots(result, out, say)
     page = out / "report.md"
     write_text(page, markdown(result, images))
     return page
