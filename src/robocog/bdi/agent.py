@@ -66,9 +66,12 @@ from robocog.bdi.signals import DONE, SUSPEND
 from robocog.bdi.terms import (
     Literal,
     Term,
+    Var,
     is_ground,
+    term_str,
 )
 from robocog.bdi.unifier import (
+    EvalError,
     resolve,
     undo,
     variables,
@@ -168,6 +171,9 @@ class Agent:
         self.url = f"file:{file}" if file else ""
         #: folders searched for included files after the including file's own
         self.asl_path = tuple(asl_path)
+        #: functions the program defines by a rule (``register_function``): name ->
+        #: (name, arity, predicate)
+        self.functions: dict[str, tuple[str, int, str]] = {}
         if isinstance(source, Program):
             self.load_program(source)
         elif source:
@@ -186,6 +192,7 @@ class Agent:
 
     def load_program(self, prog: Program) -> None:
         """Add a parsed program: beliefs (with ``+b`` events), rules, goals, plans."""
+        self.functions.update(prog.functions)
         for plan in prog.plans:
             self.add_plan(plan)
         # Jason inserts initial beliefs back to front, each at the front of the base
@@ -290,6 +297,22 @@ class Agent:
             n += 1
         undo(s, trail, 0)
         return n
+
+    def function_value(self, name: str, args: list) -> int | float:
+        """The value of ``name(args)``, a function the program registered: the first
+        answer's last argument of its predicate's query, which must be a number (Jason's
+        ``RuleToFunction``); an :class:`EvalError` when there is none."""
+        fn = self.functions.get(name)
+        if fn is None or fn[1] != len(args):
+            raise EvalError(f"unknown function {name}/{len(args)}")
+        result = Var("__RuleToFunctionResult")
+        s: dict = {}
+        for _ in solve(self, Literal(fn[2], (*args, result)), s, []):
+            value = resolve(result, s)
+            if value.__class__ is int or value.__class__ is float:
+                return value
+            raise EvalError(f"The result of {fn[2]} (={term_str(value)}) is not numeric!")
+        raise EvalError(f"No solution was found for rule {fn[2]}")
 
     def add_percept(self, percept: str | Literal) -> None:
         """Perceive ``percept`` from the next cycle on (until removed)."""

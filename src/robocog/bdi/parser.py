@@ -21,6 +21,7 @@ from lark import Token, Transformer, v_args
 from lark.tree import Meta
 
 from robocog.bdi import plans as P
+from robocog.bdi.functions import function_directive
 from robocog.bdi.terms import (
     NIL,
     NS_SEP,
@@ -70,6 +71,7 @@ class Program:
     beliefs: list = field(default_factory=list)  # Literal or Rule, in order
     goals: list[Literal] = field(default_factory=list)
     plans: list[P.Plan] = field(default_factory=list)
+    functions: dict = field(default_factory=dict)  # name -> (name, arity, predicate)
 
 
 def _unescape(s: str) -> str:
@@ -98,6 +100,7 @@ class _Builder(Transformer):
         #: the namespace of the ``{ begin namespace(...) }`` block being read, if any
         self.namespace: str | None = None
         self._local_names = 0
+        self.functions: dict[str, tuple[str, int, str]] = {}  # register_function's
 
     def _clause_done(self) -> None:
         self.vars = {}
@@ -141,6 +144,13 @@ class _Builder(Transformer):
                 raise ValueError("{ end } without { begin namespace(...) }")
             self.namespace = None
             return ("namespace", None)
+        try:
+            fn = function_directive(text)
+        except ValueError as exc:
+            raise ParseError(str(exc), meta.line, meta.column, self.source) from None
+        if fn is not None:
+            self.functions[fn[0]] = fn
+            return ("function", fn)
         return ("directive", (text, meta.line, meta.column))
 
     def directive_body(self, items: list) -> str:
@@ -424,11 +434,13 @@ class _Builder(Transformer):
             elif isinstance(it, tuple) and it and it[0] == "annots":
                 annots = sort_annots(it[1])
         lit = Literal(functor, args, annots, neg)
+        fn = self.functions.get(functor)
         if (
             not neg
             and not annots
             and (
-                functor.startswith("math.")
+                (fn is not None and fn[1] == len(args))
+                or functor.startswith("math.")
                 or (functor in (".length", ".count") and len(args) == 1)
                 or (functor == "system.time" and not args)
             )
@@ -524,6 +536,7 @@ def _run(start: str, text: str, source: str):  # noqa: ANN202 - parse result
         builder.vars = {}
         builder.source = source
         builder.namespace = None
+        builder.functions = {}
         try:
             tree = parser.parse(text, start=start)
             return builder.transform(tree)
@@ -539,6 +552,8 @@ def _run(start: str, text: str, source: str):  # noqa: ANN202 - parse result
             raise ParseError("nesting too deep", 1, 1, source) from None
         except lark.exceptions.VisitError as exc:
             inner = exc.orig_exc
+            if isinstance(inner, ParseError):
+                raise inner from None
             if isinstance(inner, RecursionError):
                 raise ParseError("nesting too deep", 1, 1, source) from None
             raise ParseError(f"malformed input ({inner})", 1, 1, source) from None
@@ -685,6 +700,8 @@ def parse_program(
             prog.goals.append(value)
         elif kind == "plan":
             prog.plans.append(value)
+        elif kind == "function":
+            prog.functions[value[0]] = value
         elif kind == "namespace":
             continue
         elif kind == "directive":
@@ -693,6 +710,7 @@ def parse_program(
             prog.beliefs += included.beliefs
             prog.goals += included.goals
             prog.plans += included.plans
+            prog.functions.update(included.functions)
     return prog
 
 

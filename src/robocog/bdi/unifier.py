@@ -18,6 +18,7 @@ import time
 from collections.abc import Iterator
 from typing import Any
 
+from robocog.bdi.containers import QueueTerm, SetTerm
 from robocog.bdi.context import running
 from robocog.bdi.terms import (
     NIL,
@@ -588,9 +589,16 @@ def _call(t: Arith, s: dict, fresh: dict | None, strict: bool) -> Term:
                 n += 1
                 v = v.tail
             return n
+        if v.__class__ is SetTerm or v.__class__ is QueueTerm:
+            return len(v)
         raise EvalError(f".length: {v!r} is not a list or a string")
     if lit.functor == "system.time":  # Java's System.currentTimeMillis()
         return int(time.time() * 1000)
+    if not lit.functor.startswith("math."):  # a function of the program's rules
+        agent = running.get()
+        if agent is None:
+            raise EvalError(f"unknown function {lit.functor}/{len(args)}")
+        return agent.function_value(lit.functor, args)
     name = lit.functor[5:]
     if (
         name in ("sum", "average", "mean", "median", "max", "min", "std_dev")

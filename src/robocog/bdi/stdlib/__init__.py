@@ -12,6 +12,7 @@ care of its intention itself.
 from robocog.bdi.stdlib import (  # noqa: F401 - importing each family registers it
     beliefs,
     communication,
+    containers,
     extras,
     goals,
     intentions,
