@@ -12,7 +12,6 @@ from __future__ import annotations
 import re
 import threading
 from collections.abc import Sequence
-from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -21,7 +20,15 @@ from lark import Token, Transformer, v_args
 from lark.tree import Meta
 
 from robocog.bdi import plans as P
+from robocog.bdi.clauses import Program, Rule
 from robocog.bdi.functions import function_directive
+from robocog.bdi.namespaces import (
+    BEGIN_NS,
+    DEFAULT_NS,
+    END_NS,
+    in_namespace,
+    plan_in,
+)
 from robocog.bdi.terms import (
     NIL,
     NS_SEP,
@@ -54,24 +61,6 @@ class ParseError(ValueError):
         self.reason = message = clip(message, MESSAGE_CHARS)
         where = f"{clip(source, 200)}:" if source else ""
         super().__init__(f"{where}{line}:{column}: {message}")
-
-
-@dataclass
-class Rule:
-    """``head :- body``: a belief that holds when its body does."""
-
-    head: Literal
-    body: Term
-
-
-@dataclass
-class Program:
-    """What a source file declares, in program order."""
-
-    beliefs: list = field(default_factory=list)  # Literal or Rule, in order
-    goals: list[Literal] = field(default_factory=list)
-    plans: list[P.Plan] = field(default_factory=list)
-    functions: dict = field(default_factory=dict)  # name -> (name, arity, predicate)
 
 
 def _unescape(s: str) -> str:
@@ -128,7 +117,7 @@ class _Builder(Transformer):
     def directive(self, meta: Meta, items: list) -> tuple:
         self._clause_done()
         text = str(items[0])
-        m = _BEGIN_NS.match(text)
+        m = BEGIN_NS.match(text)
         if m is not None:
             if self.namespace is not None:
                 raise ValueError("a namespace block inside another")
@@ -139,7 +128,7 @@ class _Builder(Transformer):
                 name = f"#{self._local_names}{name}"
             self.namespace = name
             return ("namespace", name)
-        if _END_NS.match(text):
+        if END_NS.match(text):
             if self.namespace is None:
                 raise ValueError("{ end } without { begin namespace(...) }")
             self.namespace = None
@@ -565,98 +554,6 @@ def _run(start: str, text: str, source: str):  # noqa: ANN202 - parse result
             builder.vars = {}
 
 
-#: Jason's default namespace, and what joins a namespace to a functor
-DEFAULT_NS = "default"
-_BEGIN_NS = re.compile(r"\s*begin\s+namespace\s*\(\s*(\w+)\s*(?:,\s*(local|global)\s*)?\)\s*\Z")
-_END_NS = re.compile(r"\s*end\s*\Z")
-
-
-def in_namespace(item: Any, ns: str) -> Any:
-    """``item`` (a belief, rule, goal, or a plan's (trigger, context, body)) as written
-    inside ``{ begin namespace(ns) }``: its beliefs, goals and triggers, and the
-    literals its contexts, rule bodies and belief and goal formulas consult, in ``ns``;
-    internal actions, environment actions and arguments are left as they are; a
-    literal with an explicit namespace keeps it (``default::b`` is plain ``b``)."""
-    if isinstance(item, tuple):
-        trigger, context, body = item
-        if trigger is not None and trigger.literal.__class__ is Literal:
-            trigger = P.Trigger(trigger.op, trigger.kind, _ns_lit(trigger.literal, ns))
-        return trigger, _ns_formula(context, ns), _ns_chain(body, ns)
-    if isinstance(item, Rule):
-        return Rule(_ns_lit(item.head, ns), _ns_formula(item.body, ns))
-    return _ns_lit(item, ns)
-
-
-def _ns_lit(t: Term, ns: str) -> Term:
-    if t.__class__ is not Literal or t.functor.startswith("."):
-        return t
-    f = t.functor
-    if NS_SEP in f:
-        if not f.startswith(DEFAULT_NS + NS_SEP):
-            return t
-        f = f[len(DEFAULT_NS) + len(NS_SEP) :]
-    else:
-        f = f"{ns}{NS_SEP}{f}"
-    return Literal(f, t.args, t.annots, t.neg)
-
-
-def _ns_formula(t: Term, ns: str) -> Term:
-    c = t.__class__
-    if c is Literal:
-        if t.functor in ("true", "false") and not t.args:
-            return t
-        return _ns_lit(t, ns)
-    if c is And or c is Or:
-        return c(_ns_formula(t.left, ns), _ns_formula(t.right, ns))
-    if c is Not:
-        return Not(_ns_formula(t.arg, ns))
-    return t
-
-
-#: the body formulas whose literal is a belief or a goal (namespaced in a block)
-_NS_STEPS = frozenset(
-    {
-        P.ACHIEVE_STEP,
-        P.ACHIEVE_NF,
-        P.ADD_BEL,
-        P.ADD_BEL_NF,
-        P.ADD_BEL_END,
-        P.DEL_BEL,
-        P.DEL_BEL_NF,
-        P.DEL_ADD_BEL,
-    }
-)
-
-
-def _ns_chain(chain: P.Chain, ns: str) -> P.Chain:
-    steps = []
-    while chain is not None:
-        st = chain[0]
-        if st.kind in _NS_STEPS:
-            st = P.Step(st.kind, _ns_lit(st.term, ns), st.blocks, st.line, st.state)
-        elif st.kind == P.TEST_STEP:
-            st = P.Step(st.kind, _ns_formula(st.term, ns), st.blocks, st.line, st.state)
-        elif st.kind == P.IF:
-            # blocks: (condition, chain) per branch; state: the else chain
-            blocks = tuple((_ns_formula(c, ns), _ns_chain(b, ns)) for c, b in st.blocks)
-            st = P.Step(st.kind, _ns_formula(st.term, ns), blocks, st.line, _ns_chain(st.state, ns))
-        elif st.kind in (P.WHILE, P.FOR):
-            blocks = tuple(_ns_chain(b, ns) for b in st.blocks)  # the body
-            st = P.Step(st.kind, _ns_formula(st.term, ns), blocks, st.line, st.state)
-        elif st.kind == P.FORK:
-            st = P.Step(st.kind, st.term, tuple(_ns_chain(b, ns) for b in st.blocks), st.line)
-        steps.append(st)
-        chain = chain[1]
-    return P.chain(steps)
-
-
-def _plan_in(plan: P.Plan, ns: str) -> P.Plan:
-    trigger, context, body = in_namespace((plan.trigger, plan.context, plan.body), ns)
-    out = P.Plan(trigger, context, body, plan.label, plan.source, plan.line)
-    out.code_line = plan.code_line
-    return out
-
-
 #: how deep includes may nest before the reader refuses (a file including itself, say)
 MAX_INCLUDE_DEPTH = 32
 _INCLUDE = re.compile(r'\s*include\s*\(\s*"((?:[^"\\]|\\.)*)"\s*(?:,\s*(\w+)\s*)?\)\s*\Z')
@@ -742,7 +639,7 @@ def _include(
                 # ``include("f.asl", ns)``: the file as if written inside a block of ns
                 prog.beliefs = [in_namespace(b, ns) for b in prog.beliefs]
                 prog.goals = [in_namespace(g, ns) for g in prog.goals]
-                prog.plans = [_plan_in(p, ns) for p in prog.plans]
+                prog.plans = [plan_in(p, ns) for p in prog.plans]
             return prog
     looked = ", ".join(str(c) for c in candidates)
     raise ParseError(
