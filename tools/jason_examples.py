@@ -85,8 +85,16 @@ NORMALIZE: dict[str, tuple[str, list[tuple[str, str]]]] = {
         CNP_BIDS,
     ),
     "examples/contract-net-protocol-module": (
-        "random bids, as in contract-net-protocol",
-        CNP_BIDS,
+        "random bids, as in contract-net-protocol: the bids, who wins each CNP and the "
+        "order of the participants the directory gives are masked",
+        [
+            *CNP_BIDS,
+            (r"Sending CFP for (\S+) to \[.*\]", r"Sending CFP for \1 to <participants>"),
+            (r"Proposing [\d.]+ for", "Proposing <bid> for"),
+            (r"Winner to fix (\w+) is \w+", r"Winner to fix \1 is <who>"),
+            (r"^My proposal in (\w+) for task (.*) won!$", r"<won or lost> CNP in \1 for \2"),
+            (r"^I lost CNP in (\w+) for task (.*)\.$", r"<won or lost> CNP in \1 for \2"),
+        ],
     ),
     "demos/current-intention": (
         "each goal waits a random time (math.random), so which intention is inspected "

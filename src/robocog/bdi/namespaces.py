@@ -21,6 +21,8 @@ from robocog.bdi.terms import NS_SEP, And, Literal, Not, Or, Term
 DEFAULT_NS = "default"
 BEGIN_NS = re.compile(r"\s*begin\s+namespace\s*\(\s*(\w+)\s*(?:,\s*(local|global)\s*)?\)\s*\Z")
 END_NS = re.compile(r"\s*end\s*\Z")
+#: ``{ namespace(ns, local) }``: a namespace declared (local to the file) before its use
+DECLARE_NS = re.compile(r"\s*namespace\s*\(\s*(\w+)\s*,\s*(local|global)\s*\)\s*\Z")
 
 
 def in_namespace(item: Any, ns: str) -> Any:

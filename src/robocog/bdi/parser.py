@@ -24,11 +24,12 @@ from robocog.bdi.clauses import Program, Rule
 from robocog.bdi.functions import function_directive
 from robocog.bdi.namespaces import (
     BEGIN_NS,
+    DECLARE_NS,
     DEFAULT_NS,
     END_NS,
     in_namespace,
-    plan_in,
 )
+from robocog.bdi.nsterm import NsLiteral
 from robocog.bdi.terms import (
     NIL,
     NS_SEP,
@@ -89,6 +90,13 @@ class _Builder(Transformer):
         #: the namespace of the ``{ begin namespace(...) }`` block being read, if any
         self.namespace: str | None = None
         self._local_names = 0
+        #: the namespace the file is read into (``include(f, ns)``), None for default
+        self.file_ns: str | None = None
+        #: what ``this_ns`` names here (the file's namespace, or the block's, unmapped)
+        self.this_ns: str | None = None
+        self.in_block = False
+        #: the file's local namespaces: the name written -> the name no other file has
+        self.local_ns: dict[str, str] = {}
         self.functions: dict[str, tuple[str, int, str]] = {}  # register_function's
 
     def _clause_done(self) -> None:
@@ -117,21 +125,25 @@ class _Builder(Transformer):
     def directive(self, meta: Meta, items: list) -> tuple:
         self._clause_done()
         text = str(items[0])
-        m = BEGIN_NS.match(text)
+        m = BEGIN_NS.match(text) or DECLARE_NS.match(text)
         if m is not None:
-            if self.namespace is not None:
+            if self.in_block:
                 raise ValueError("a namespace block inside another")
             name, scope = m.group(1), m.group(2) or "global"
             if scope == "local":
                 # a local namespace is the file's own: a name no other file can write
                 self._local_names += 1
-                name = f"#{self._local_names}{name}"
-            self.namespace = name
+                self.local_ns[name] = f"#{self._local_names}{name}"
+            if m.re is DECLARE_NS:  # ``{ namespace(ns, local) }`` declares, opens nothing
+                return ("namespace", None)
+            self.namespace, self.this_ns = self.local_ns.get(name, name), name
+            self.in_block = True
             return ("namespace", name)
         if END_NS.match(text):
-            if self.namespace is None:
+            if not self.in_block:
                 raise ValueError("{ end } without { begin namespace(...) }")
-            self.namespace = None
+            self.namespace = self.this_ns = self.file_ns
+            self.in_block = False
             return ("namespace", None)
         try:
             fn = function_directive(text)
@@ -140,7 +152,7 @@ class _Builder(Transformer):
         if fn is not None:
             self.functions[fn[0]] = fn
             return ("function", fn)
-        return ("directive", (text, meta.line, meta.column))
+        return ("directive", (text, meta.line, meta.column, self.namespace))
 
     def directive_body(self, items: list) -> str:
         return str(items[0])
@@ -164,6 +176,7 @@ class _Builder(Transformer):
         line = getattr(meta, "line", 0) if not getattr(meta, "empty", True) else 0
         if self.namespace is not None:
             trigger, context, body = in_namespace((trigger, context, body), self.namespace)
+            label = in_namespace(label, self.namespace)  # Jason: a label is in one too
         plan = P.Plan(trigger, context, body, label, self.source, line)
         # Jason's line for a plan (its ``code_line``): the label's, else where the
         # context or the body begins, else the plan's end
@@ -228,6 +241,29 @@ class _Builder(Transformer):
     @v_args(meta=True)
     def test(self, meta: Meta, items: list) -> P.Step:
         return self._step(P.TEST_STEP, meta, items[0])
+
+    @v_args(meta=True)
+    def add_plan_step(self, meta: Meta, items: list) -> P.Step:
+        return self._add_plan(meta, items[0], "begin")
+
+    @v_args(meta=True)
+    def add_plan_end(self, meta: Meta, items: list) -> P.Step:
+        return self._add_plan(meta, items[0], "end")
+
+    def _add_plan(self, meta: Meta, plan: PlanTerm, where: str) -> P.Step:
+        # Jason reads ``+{ plan }`` as ``.add_plan(plan, self, begin)``
+        lit = Literal(".add_plan", (plan, Literal("self"), Literal(where)))
+        return self._step(P.INTERNAL, meta, lit)
+
+    @v_args(meta=True)
+    def del_plan_step(self, meta: Meta, items: list) -> P.Step:
+        return self._step(P.INTERNAL, meta, Literal(".remove_plan", (items[0],)))
+
+    def plan_term_add(self, items: list, op: str = "+") -> PlanTerm:
+        return self.plan_term([self.trigger([op, items[0]]), *items[1:]])
+
+    def plan_term_del(self, items: list) -> PlanTerm:
+        return self.plan_term_add(items, "-")
 
     @v_args(meta=True)
     def add_bel(self, meta: Meta, items: list) -> P.Step:
@@ -403,10 +439,17 @@ class _Builder(Transformer):
     def literal(self, items: list) -> Literal:
         neg = False
         i = 0
-        ns = None
-        if isinstance(items[0], Token) and items[0].type == "ATOM":
-            ns = str(items[0]).strip("'")
-            i = 1
+        ns = ns_var = None
+        if isinstance(items[0], Token) and items[0].type in ("ATOM", "VAR", "NSSEP"):
+            if items[0].type == "NSSEP":  # ``::b``: the namespace of the file or block
+                ns = self.this_ns or DEFAULT_NS
+            elif items[0].type == "VAR":
+                ns_var = self._var(str(items[0]))
+            else:
+                ns = str(items[0]).strip("'")
+                ns = (self.this_ns or DEFAULT_NS) if ns == "this_ns" else ns
+            ns = self.local_ns.get(ns, ns) if ns is not None else None
+            i = 1 if items[0].type == "NSSEP" else 2
         if isinstance(items[i], Token) and items[i].type == "NEG":
             neg = True
             i += 1
@@ -423,6 +466,10 @@ class _Builder(Transformer):
             elif isinstance(it, tuple) and it and it[0] == "annots":
                 annots = sort_annots(it[1])
         lit = Literal(functor, args, annots, neg)
+        if ns_var is not None:
+            return NsLiteral(ns_var, lit)
+        if functor == "this_ns" and not args and not annots and not neg and ns is None:
+            return Literal(self.this_ns or DEFAULT_NS)  # Jason: the namespace it is read in
         fn = self.functions.get(functor)
         if (
             not neg
@@ -438,7 +485,8 @@ class _Builder(Transformer):
         return lit
 
     def args(self, items: list) -> tuple:
-        return ("args", tuple(x for x in items if x is not None))
+        # an argument is a term, never moved into a namespace: ``default::k`` is ``k``
+        return ("args", tuple(_plain_default(x) for x in items if x is not None))
 
     def annot_tail(self, items: list) -> AnnotTail:
         name = str(items[0])
@@ -460,6 +508,15 @@ class _Builder(Transformer):
 
     def list_items(self, items: list) -> list:
         return items
+
+
+def _plain_default(t: Term) -> Term:
+    if t.__class__ is Literal and t.functor.startswith(_DEFAULT_PREFIX):
+        return Literal(t.functor[len(_DEFAULT_PREFIX) :], t.args, t.annots, t.neg)
+    return t
+
+
+_DEFAULT_PREFIX = DEFAULT_NS + NS_SEP
 
 
 def _is_true(t: Term) -> bool:
@@ -513,7 +570,7 @@ def _describe(exc: lark.exceptions.UnexpectedInput) -> str:
 MAX_LINE_CHARS = 1024 * 1024
 
 
-def _run(start: str, text: str, source: str):  # noqa: ANN202 - parse result
+def _run(start: str, text: str, source: str, namespace: str | None = None):  # noqa: ANN202 - parse result
     if not isinstance(text, str):
         raise ParseError("source text must be a string", 1, 1, source)
     if len(text) > MAX_LINE_CHARS:
@@ -524,7 +581,9 @@ def _run(start: str, text: str, source: str):  # noqa: ANN202 - parse result
         parser, builder = _parser()
         builder.vars = {}
         builder.source = source
-        builder.namespace = None
+        builder.namespace = builder.file_ns = builder.this_ns = namespace
+        builder.in_block = False
+        builder.local_ns = {}
         builder.functions = {}
         try:
             tree = parser.parse(text, start=start)
@@ -566,7 +625,11 @@ MAX_PROGRAM_CHARS = 64 * 1024
 
 
 def parse_program(
-    text: str, source: str = "", search_path: Sequence[str | Path] = (), _depth: int = 0
+    text: str,
+    source: str = "",
+    search_path: Sequence[str | Path] = (),
+    _depth: int = 0,
+    namespace: str | None = None,
 ) -> Program:
     """Parse a whole ``.asl`` program.
 
@@ -586,7 +649,7 @@ def parse_program(
             1,
             source,
         )
-    items = _run("start", text, source)
+    items = _run("start", text, source, None if namespace == DEFAULT_NS else namespace)
     prog = Program()
     for kind, value in items:
         if kind == "belief":
@@ -602,8 +665,8 @@ def parse_program(
         elif kind == "namespace":
             continue
         elif kind == "directive":
-            body, line, column = value
-            included = _include(body, line, column, source, search_path, _depth)
+            body, line, column, here = value
+            included = _include(body, line, column, source, search_path, _depth, here)
             prog.beliefs += included.beliefs
             prog.goals += included.goals
             prog.plans += included.plans
@@ -612,9 +675,16 @@ def parse_program(
 
 
 def _include(
-    body: str, line: int, column: int, source: str, search_path: Sequence[str | Path], depth: int
+    body: str,
+    line: int,
+    column: int,
+    source: str,
+    search_path: Sequence[str | Path],
+    depth: int,
+    ns_here: str | None = None,
 ) -> Program:
-    """The program an ``include`` directive names."""
+    """The program an ``include`` directive names, read into its namespace (by default
+    the one the directive stands in)."""
     m = _INCLUDE.match(body)
     if m is None:
         text = " ".join(body.split())
@@ -633,14 +703,9 @@ def _include(
         except OSError:  # a name too long for the file system, say: no such file
             found = False
         if found:
-            prog = parse_program(read_source(path), str(path), search_path, depth + 1)
-            ns = m.group(2)
-            if ns and ns != DEFAULT_NS:
-                # ``include("f.asl", ns)``: the file as if written inside a block of ns
-                prog.beliefs = [in_namespace(b, ns) for b in prog.beliefs]
-                prog.goals = [in_namespace(g, ns) for g in prog.goals]
-                prog.plans = [plan_in(p, ns) for p in prog.plans]
-            return prog
+            # ``include("f.asl", ns)``: the file read as if in a block of ns, as Jason does
+            text = read_source(path)
+            return parse_program(text, str(path), search_path, depth + 1, m.group(2) or ns_here)
     looked = ", ".join(str(c) for c in candidates)
     raise ParseError(
         f"include: no file {clip(name)!r} (looked at {clip(looked, 300)})", line, column, source

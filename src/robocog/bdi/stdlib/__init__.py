@@ -17,6 +17,7 @@ from robocog.bdi.stdlib import (  # noqa: F401 - importing each family registers
     goals,
     intentions,
     lists,
+    modules,
     output,
     plans,
     strings,
