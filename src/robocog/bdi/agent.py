@@ -164,6 +164,8 @@ class Agent:
         self._asks: dict[str, tuple[Intention, Term]] = {}
         self._custom_option = type(self).select_option is not Agent.select_option
         self._has_atomic = False
+        #: whether a plan has JasonER sub-plans (their scope is then looked at)
+        self.has_subplans = False
         self._custom_event = type(self).select_event is not Agent.select_event
         self._custom_intention = type(self).select_intention is not Agent.select_intention
         self.file = file
@@ -224,6 +226,8 @@ class Agent:
             a.__class__ is Literal and a.functor == "atomic" for a in plan.label.annots
         ):
             self._has_atomic = True
+        if plan.subplans is not None:
+            self.has_subplans = True
         self.pl.add(plan, at_end)
 
     # ------------------------------------------------------------------ Python API
@@ -429,6 +433,7 @@ class Agent:
             and ev.trigger.kind == BELIEF
             and not self._custom_event
             and not self.pl.has_candidate(ev.trigger)
+            and not self.has_subplans  # (a sub-plan of an intention may take it)
         ):
             return  # it would be discarded when selected, without using a cycle
         self.C.events.append(ev)

@@ -21,6 +21,7 @@ from lark.tree import Meta
 
 from robocog.bdi import plans as P
 from robocog.bdi.clauses import Program, Rule
+from robocog.bdi.er import with_goal_condition, with_subplans
 from robocog.bdi.functions import function_directive
 from robocog.bdi.namespaces import (
     BEGIN_NS,
@@ -163,7 +164,7 @@ class _Builder(Transformer):
         label = None
         context = None
         body = None
-        trigger = None
+        trigger = goal_cond = None
         for it in items:
             if isinstance(it, tuple) and it[0] == "label":
                 label = it[1]
@@ -173,6 +174,8 @@ class _Builder(Transformer):
                 body = it[1]
             elif isinstance(it, P.Trigger):
                 trigger = it
+            elif isinstance(it, tuple) and it[0] == "goal_cond":
+                goal_cond = it[1]
         line = getattr(meta, "line", 0) if not getattr(meta, "empty", True) else 0
         if self.namespace is not None:
             trigger, context, body = in_namespace((trigger, context, body), self.namespace)
@@ -183,7 +186,22 @@ class _Builder(Transformer):
         parts = [it[2] for it in items if isinstance(it, tuple) and len(it) == 3 and it[2]]
         end = getattr(meta, "end_line", line)
         plan.code_line = line if label is not None else (parts[0] if parts else end)
-        return ("plan", plan)
+        return ("plan", plan if goal_cond is None else with_goal_condition(plan, goal_cond))
+
+    def goal_cond(self, items: list) -> tuple:
+        return ("goal_cond", items[0])
+
+    def subplans(self, items: list) -> tuple:
+        # a block of sub-plans belongs to the plan before it
+        plans: list = []
+        for kind, value in items:
+            if kind == "subplans":
+                if not plans:
+                    raise ValueError("sub-plans in braces must follow a plan")
+                plans[-1] = with_subplans(plans[-1], value)
+            else:
+                plans.append(value)
+        return ("subplans", plans)
 
     def label(self, items: list) -> tuple:
         return ("label", items[0])
@@ -664,6 +682,10 @@ def parse_program(
             prog.functions[value[0]] = value
         elif kind == "namespace":
             continue
+        elif kind == "subplans":
+            if not prog.plans:
+                raise ParseError("sub-plans in braces must follow a plan", 1, 1, source)
+            prog.plans[-1] = with_subplans(prog.plans[-1], value)
         elif kind == "directive":
             body, line, column, here = value
             included = _include(body, line, column, source, search_path, _depth, here)

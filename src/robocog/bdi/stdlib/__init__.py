@@ -21,6 +21,7 @@ from robocog.bdi.stdlib import (  # noqa: F401 - importing each family registers
     output,
     plans,
     strings,
+    subplans,
     timing,
     typetests,
 )
