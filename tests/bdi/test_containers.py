@@ -139,3 +139,8 @@ def test_a_bad_function_directive_names_its_place(directive: str) -> None:
 
 def test_collections_are_ground_terms() -> None:
     assert SetTerm([Literal("a")]).ground and QueueTerm().ground
+
+
+def test_a_function_written_in_java_is_an_error_naming_the_class() -> None:
+    with pytest.raises(ParseError, match="myf.sin is the Java class myf.sin"):
+        Agent('{ register_function("myf.sin") }', "t")

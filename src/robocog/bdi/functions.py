@@ -17,6 +17,7 @@ from __future__ import annotations
 import re
 
 _DIRECTIVE = re.compile(r"\s*register_function\s*\((.*)\)\s*\Z", re.S)
+_JAVA_FORM = re.compile(r'\s*"([A-Za-z_][\w.]*)"\s*\Z')
 _RULE_FORM = re.compile(r'\s*"([^"\\]*)"\s*,\s*(\d+)\s*,\s*"([a-z][A-Za-z0-9_]*)"\s*\Z')
 
 
@@ -28,11 +29,17 @@ def function_directive(text: str) -> tuple[str, int, str] | None:
     if m is None:
         return None
     form = _RULE_FORM.match(m.group(1))
+    java = _JAVA_FORM.match(m.group(1))
+    if java is not None:
+        name = java.group(1)
+        raise ValueError(
+            f"register_function: the function {name} is the Java class {name}, and robocog "
+            f'runs no Java: define it by a rule instead, {{ register_function("{name}", '
+            f'ARITY, "predicate") }}, the predicate giving the value as its last argument'
+        )
     if form is None:
         raise ValueError(
-            "register_function takes a name, an arity and a predicate, "
-            '{ register_function("lib.f", 2, "p") } (the Java class form is not '
-            "supported: define the function by a rule instead)"
+            'register_function takes a name, an arity and a predicate: { register_function("lib.f", 2, "p") }'
         )
     name, arity, pred = form.group(1), int(form.group(2)), form.group(3)
     if "." not in name or name.startswith("."):
