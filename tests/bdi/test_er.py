@@ -82,5 +82,6 @@ def test_sub_plans_nest_and_share_down_the_levels() -> None:
 
 @pytest.mark.parametrize("text", ["{ +!b <- true. }\n", "a.\n{ +!b <- true. }\n"])
 def test_sub_plans_must_follow_a_plan(text: str) -> None:
-    with pytest.raises(ParseError, match="must follow a plan"):
+    with pytest.raises(ParseError, match="must follow a plan") as err:
         parse_program(text)
+    assert (err.value.line, err.value.column) == (text.count("\n"), 1)

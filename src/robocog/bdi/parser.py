@@ -191,17 +191,19 @@ class _Builder(Transformer):
     def goal_cond(self, items: list) -> tuple:
         return ("goal_cond", items[0])
 
-    def subplans(self, items: list) -> tuple:
+    @v_args(meta=True)
+    def subplans(self, meta: Meta, items: list) -> tuple:
         # a block of sub-plans belongs to the plan before it
         plans: list = []
         for kind, value in items:
             if kind == "subplans":
                 if not plans:
-                    raise ValueError("sub-plans in braces must follow a plan")
-                plans[-1] = with_subplans(plans[-1], value)
+                    msg = "sub-plans in braces must follow a plan"
+                    raise ParseError(msg, value[1], value[2], self.source)
+                plans[-1] = with_subplans(plans[-1], value[0])
             else:
                 plans.append(value)
-        return ("subplans", plans)
+        return ("subplans", (plans, meta.line, meta.column))
 
     def label(self, items: list) -> tuple:
         return ("label", items[0])
@@ -683,9 +685,10 @@ def parse_program(
         elif kind == "namespace":
             continue
         elif kind == "subplans":
+            subs, line, column = value
             if not prog.plans:
-                raise ParseError("sub-plans in braces must follow a plan", 1, 1, source)
-            prog.plans[-1] = with_subplans(prog.plans[-1], value)
+                raise ParseError("sub-plans in braces must follow a plan", line, column, source)
+            prog.plans[-1] = with_subplans(prog.plans[-1], subs)
         elif kind == "directive":
             body, line, column, here = value
             included = _include(body, line, column, source, search_path, _depth, here)
