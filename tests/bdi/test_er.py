@@ -42,21 +42,31 @@ CONDITION = """\
    +go(M) : M == N <- .print(got_go, M); .done.
 }
 +!v <: flag <- .print(v_body).
-+!other <- .wait(300); .print(adding_flag); +flag.
++!other <- .wait(300); +flag; .print(flag_added).
 """
 
 
 def test_a_goal_condition_holds_the_goal_until_done_or_until_it_holds() -> None:
     # +go(1) from outside runs the sub-plan in a branch of !w's intention; its .done
-    # achieves !w(1); !v waits for flag after its body
+    # achieves !w(1); !v waits for flag after its body, and goes on a cycle after the
+    # belief is added (the intention that added it first), as in Jason
     assert out(CONDITION) == [
         "waiting1",
         "got_go1",
         "after_w",
         "v_body",
-        "adding_flag",
+        "flag_added",
         "after_v",
     ]
+
+
+def test_a_goal_condition_that_comes_to_hold_ends_the_plan_while_it_runs() -> None:
+    prog = (
+        "!start.\n!other.\n+!start <- !w; .print(after_w).\n"
+        "+!w <: flag <- .print(w1); .wait(1000); .print(w2_never).\n"
+        "+!other <- .wait(200); +flag; .print(flag_added).\n"
+    )
+    assert out(prog) == ["w1", "flag_added", "after_w"]
 
 
 def test_an_update_event_no_sub_plan_takes_goes_to_the_plan_library() -> None:

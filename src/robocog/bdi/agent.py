@@ -43,6 +43,7 @@ from robocog.bdi.circumstance import (
     Event,
     Intention,
 )
+from robocog.bdi.er import clear_satisfied, has_goal_conditions
 from robocog.bdi.formulas import (
     is_atomic,
     with_source,
@@ -166,6 +167,8 @@ class Agent:
         self._has_atomic = False
         #: whether a plan has JasonER sub-plans (their scope is then looked at)
         self.has_subplans = False
+        #: whether a plan has a goal condition to check each cycle (other than false)
+        self.has_goal_conds = False
         self._custom_event = type(self).select_event is not Agent.select_event
         self._custom_intention = type(self).select_intention is not Agent.select_intention
         self.file = file
@@ -228,6 +231,8 @@ class Agent:
             self._has_atomic = True
         if plan.subplans is not None:
             self.has_subplans = True
+        if plan.goal_cond is not None or plan.subplans is not None:
+            self.has_goal_conds = self.has_goal_conds or has_goal_conditions(plan)
         self.pl.add(plan, at_end)
 
     # ------------------------------------------------------------------ Python API
@@ -607,7 +612,9 @@ class Agent:
                 ev = self.select_event(events) if self._custom_event else events.popleft()
                 if ev is None or self._deliberate(ev):
                     break
-        # ---- act
+        # ---- act (first, as Jason, the plans whose goal condition holds are done)
+        if self.has_goal_conds:
+            clear_satisfied(self)
         if self._feedback or self._waiting_actions:
             self._process_feedback()
         if C.atomic_intention is not None:

@@ -140,7 +140,7 @@ def deliberate(self: Agent, ev: Event) -> bool:
         else:
             return self._no_option(ev)
     im = new_im(plan, trig, s, plan.body)
-    if plan.subplans is not None:
+    if plan.subplans is not None or plan.goal_cond is not None:
         im.base = dict(s)
     i = ev.intention
     if trig.kind == ACHIEVE and trig.literal.__class__ is Literal and trig.literal.annots:

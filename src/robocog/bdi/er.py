@@ -17,10 +17,9 @@ plan carry plans of its own, written in braces after it::
   offered to each intention whose plans have a sub-plan applicable for it (with the
   bindings the plan has now): the sub-plan then runs in a *branch*, a copy of that
   intention's stack, which ends when the sub-plan does.
-* ``<: Cond`` is a goal condition: the plan's goal is achieved when ``Cond`` holds, so a
-  plan whose body has ended waits for it (``<: false``: until ``.done`` ends the goal).
-  robocog waits for the condition at the end of the body, as ``.wait(Cond)`` does;
-  Jason also ends the plan when the condition comes to hold while the body still runs.
+* ``<: Cond`` is a goal condition: the plan's goal is achieved as soon as ``Cond``
+  holds, checked each cycle (Jason's ClrSatInt), whether the body still runs or has
+  ended and waits for it (``<: false``: until ``.done`` ends the goal).
 * ``.done`` (the nearest goal) and ``.done(G)`` achieve a goal wherever it is pursued,
   as ``.succeed_goal`` does; a branch pursuing it ends.
 """
@@ -32,6 +31,7 @@ from typing import TYPE_CHECKING, Any
 from robocog.bdi import plans as P
 from robocog.bdi.circumstance import Intention, new_im
 from robocog.bdi.formulas import unifies_under
+from robocog.bdi.logic import holds
 from robocog.bdi.terms import Literal, Var
 from robocog.bdi.unifier import rename, unify, variables
 
@@ -110,8 +110,9 @@ def with_subplans(parent: P.Plan, subs: list[P.Plan]) -> P.Plan:
 
 
 def with_goal_condition(plan: P.Plan, cond: Any) -> P.Plan:
-    """``plan`` with the goal condition ``<: cond``: its body ends waiting for it."""
-    wait = P.Step(P.INTERNAL, Literal(".wait", (cond,)), line=plan.line)
+    """``plan`` with the goal condition ``<: cond``: its body ends waiting until the
+    condition holds (:func:`clear_satisfied`) or ``.done`` ends the goal."""
+    wait = P.Step(P.INTERNAL, Literal(".wait", (Literal("false"),)), line=plan.line)
     out = P.Plan(
         plan.trigger,
         plan.context,
@@ -162,7 +163,7 @@ def _option(ag: Agent, lib: P.PlanLibrary, trig: P.Trigger, base: dict | None) -
 
 def _push(ag: Agent, i: Intention, plan: P.Plan, trig: P.Trigger, s: dict) -> None:
     im = new_im(plan, trig, s, plan.body)
-    if plan.subplans is not None:
+    if plan.subplans is not None or plan.goal_cond is not None:
         im.base = dict(s)
     i.stack.append(im)
     ag._requeue(i)
@@ -243,19 +244,47 @@ def done(ag: Agent, trig: P.Trigger | None, current: Intention | None) -> bool:
         if pos is None:
             continue
         touched = touched or i is current
-        if is_branch(i):
-            ag._drop(i)
-            continue
-        del i.stack[pos:]
-        ag._unschedule(i)
-        if not i.stack:
-            i.dropped = True
-            continue
-        caller = i.stack[-1]
-        if caller.cur is not None:
-            caller.cur = caller.cur[1]
-        if caller.cur is None:
-            ag._clear(i)
-        if i.stack:
-            ag._requeue(i)
+        _achieved(ag, i, pos)
     return touched
+
+
+def _achieved(ag: Agent, i: Intention, pos: int) -> None:
+    """The goal of ``i.stack[pos]`` is achieved: that plan and those above it go, and
+    the intention goes on after the goal (a branch ends)."""
+    if is_branch(i):
+        ag._drop(i)
+        return
+    del i.stack[pos:]
+    ag._unschedule(i)
+    if not i.stack:
+        i.dropped = True
+        return
+    caller = i.stack[-1]
+    if caller.cur is not None:
+        caller.cur = caller.cur[1]
+    if caller.cur is None:
+        ag._clear(i)
+    if i.stack:
+        ag._requeue(i)
+
+
+def has_goal_conditions(plan: P.Plan) -> bool:
+    """Whether ``plan`` or one of its sub-plans has a goal condition other than false."""
+    gc = plan.goal_cond
+    if gc is not None and not (gc.__class__ is Literal and gc.functor == "false" and not gc.args):
+        return True
+    return plan.subplans is not None and any(has_goal_conditions(p) for p in plan.subplans)
+
+
+def clear_satisfied(ag: Agent) -> None:
+    """Jason's ClrSatInt: each intended plan whose goal condition now holds (with the
+    bindings it was chosen with) has achieved its goal, whether its body still runs or
+    has ended waiting for it."""
+    for i in ag.C.intentions():
+        if i.dropped:
+            continue
+        for pos, im in enumerate(i.stack):
+            gc = im.plan.goal_cond
+            if gc is not None and holds(ag, gc, dict(im.base or {}), []):
+                _achieved(ag, i, pos)
+                break
