@@ -81,12 +81,22 @@ NORMALIZE: dict[str, tuple[str, list[tuple[str, str]]]] = {
         CNP_BIDS,
     ),
     "examples/contract-net-protocol-er": (
-        "random bids, as in contract-net-protocol",
-        CNP_BIDS,
+        "random bids, as in contract-net-protocol: the bids, the winners and the order of "
+        "the directory's answer are masked, and the winner's 'Doing my task' and 'Done!' "
+        "lines dropped (who prints them depends on the bids)",
+        [*CNP_BIDS, (r"Winner for (.*) is \w+ with \S+", r"Winner for \1 is <who> with <bid>")],
     ),
     "examples/contract-net-protocol-module": (
-        "random bids, as in contract-net-protocol",
-        CNP_BIDS,
+        "random bids, as in contract-net-protocol: the bids, who wins each CNP and the "
+        "order of the participants the directory gives are masked",
+        [
+            *CNP_BIDS,
+            (r"Sending CFP for (\S+) to \[.*\]", r"Sending CFP for \1 to <participants>"),
+            (r"Proposing [\d.]+ for", "Proposing <bid> for"),
+            (r"Winner to fix (\w+) is \w+", r"Winner to fix \1 is <who>"),
+            (r"^My proposal in (\w+) for task (.*) won!$", r"<won or lost> CNP in \1 for \2"),
+            (r"^I lost CNP in (\w+) for task (.*)\.$", r"<won or lost> CNP in \1 for \2"),
+        ],
     ),
     "demos/current-intention": (
         "each goal waits a random time (math.random), so which intention is inspected "
@@ -111,7 +121,10 @@ NORMALIZE: dict[str, tuple[str, list[tuple[str, str]]]] = {
 }
 
 #: per project, lines left out of the comparison (regex), for the reason NORMALIZE gives
-DROP: dict[str, str] = {"examples/st-claus": r"waiting to proceed"}
+DROP: dict[str, str] = {
+    "examples/st-claus": r"waiting to proceed",
+    "examples/contract-net-protocol-er": r"^(Doing my task|Done!)",
+}
 
 #: projects compared on the distinct lines of each agent (for the reason NORMALIZE gives)
 DISTINCT = {"examples/st-claus", "demos/current-intention"}

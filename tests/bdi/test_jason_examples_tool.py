@@ -48,3 +48,24 @@ def test_java_parts_of_a_project(tmp_path: Path) -> None:
         "environment RoomEnv",
         "internal action jia.dist",
     ]
+
+
+def test_the_module_contract_net_masks_what_varies_in_jason_only() -> None:
+    tool = _tool()
+    name = "examples/contract-net-protocol-module"
+    jason = (
+        "[alice] Sending CFP for fix(tv) to [company_B1,company_A2]\n"
+        "[alice] Winner to fix tv is company_A3\n"
+        "[company_A1] Proposing 12.45 for task fix(tv) from agent alice\n"
+        "[company_A1] I lost CNP in tv for task fix(tv).\n"
+    )
+    other_run = (
+        "[company_A1] My proposal in tv for task fix(tv) won!\n"
+        "[alice] Sending CFP for fix(tv) to [company_A2,company_B1]\n"
+        "[company_A1] Proposing 10.9 for task fix(tv) from agent alice\n"
+        "[alice] Winner to fix tv is company_A1\n"
+    )
+    assert tool.compare(name, jason, other_run, False, False) is None
+    # the task and the namespace are not masked
+    wrong = other_run.replace("in tv for task", "in pc for task")
+    assert tool.compare(name, jason, wrong, False, False) is not None

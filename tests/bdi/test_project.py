@@ -73,9 +73,9 @@ def test_includes_are_read_where_they_stand_and_a_missing_one_is_an_error(
         parse_program('p.\n  { include("gone.asl") }\n', str(tmp_path / "x.asl"))
     assert (err.value.line, err.value.column) == (2, 3)
     with pytest.raises(
-        ParseError, match=r"not supported: directive \{ register_function\(\"f\", 1, \"g\"\) \}"
+        ParseError, match=r"not supported: directive \{ no_such_directive\(\"f\", 1\) \}"
     ):
-        parse_program('{ register_function("f", 1, "g") }\n')
+        parse_program('{ no_such_directive("f", 1) }\n')
     # included into a namespace: its beliefs and plans are that namespace's
     (tmp_path / "lib2.asl").write_text("k(1).\n+!hi <- ?k(X); .print(X).\n")
     prog = parse_program('{ include("lib2.asl", lib) }\n', str(tmp_path / "m.asl"))

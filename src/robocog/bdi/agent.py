@@ -43,6 +43,7 @@ from robocog.bdi.circumstance import (
     Event,
     Intention,
 )
+from robocog.bdi.er import clear_satisfied, has_goal_conditions
 from robocog.bdi.formulas import (
     is_atomic,
     with_source,
@@ -66,9 +67,12 @@ from robocog.bdi.signals import DONE, SUSPEND
 from robocog.bdi.terms import (
     Literal,
     Term,
+    Var,
     is_ground,
+    term_str,
 )
 from robocog.bdi.unifier import (
+    EvalError,
     resolve,
     undo,
     variables,
@@ -161,6 +165,10 @@ class Agent:
         self._asks: dict[str, tuple[Intention, Term]] = {}
         self._custom_option = type(self).select_option is not Agent.select_option
         self._has_atomic = False
+        #: whether a plan has JasonER sub-plans (their scope is then looked at)
+        self.has_subplans = False
+        #: whether a plan has a goal condition to check each cycle (other than false)
+        self.has_goal_conds = False
         self._custom_event = type(self).select_event is not Agent.select_event
         self._custom_intention = type(self).select_intention is not Agent.select_intention
         self.file = file
@@ -168,6 +176,9 @@ class Agent:
         self.url = f"file:{file}" if file else ""
         #: folders searched for included files after the including file's own
         self.asl_path = tuple(asl_path)
+        #: functions the program defines by a rule (``register_function``): name ->
+        #: (name, arity, predicate)
+        self.functions: dict[str, tuple[str, int, str]] = {}
         if isinstance(source, Program):
             self.load_program(source)
         elif source:
@@ -186,6 +197,7 @@ class Agent:
 
     def load_program(self, prog: Program) -> None:
         """Add a parsed program: beliefs (with ``+b`` events), rules, goals, plans."""
+        self.functions.update(prog.functions)
         for plan in prog.plans:
             self.add_plan(plan)
         # Jason inserts initial beliefs back to front, each at the front of the base
@@ -217,6 +229,10 @@ class Agent:
             a.__class__ is Literal and a.functor == "atomic" for a in plan.label.annots
         ):
             self._has_atomic = True
+        if plan.subplans is not None:
+            self.has_subplans = True
+        if plan.goal_cond is not None or plan.subplans is not None:
+            self.has_goal_conds = self.has_goal_conds or has_goal_conditions(plan)
         self.pl.add(plan, at_end)
 
     # ------------------------------------------------------------------ Python API
@@ -290,6 +306,22 @@ class Agent:
             n += 1
         undo(s, trail, 0)
         return n
+
+    def function_value(self, name: str, args: list) -> int | float:
+        """The value of ``name(args)``, a function the program registered: the first
+        answer's last argument of its predicate's query, which must be a number (Jason's
+        ``RuleToFunction``); an :class:`EvalError` when there is none."""
+        fn = self.functions.get(name)
+        if fn is None or fn[1] != len(args):
+            raise EvalError(f"unknown function {name}/{len(args)}")
+        result = Var("__RuleToFunctionResult")
+        s: dict = {}
+        for _ in solve(self, Literal(fn[2], (*args, result)), s, []):
+            value = resolve(result, s)
+            if value.__class__ is int or value.__class__ is float:
+                return value
+            raise EvalError(f"The result of {fn[2]} (={term_str(value)}) is not numeric!")
+        raise EvalError(f"No solution was found for rule {fn[2]}")
 
     def add_percept(self, percept: str | Literal) -> None:
         """Perceive ``percept`` from the next cycle on (until removed)."""
@@ -406,6 +438,7 @@ class Agent:
             and ev.trigger.kind == BELIEF
             and not self._custom_event
             and not self.pl.has_candidate(ev.trigger)
+            and not self.has_subplans  # (a sub-plan of an intention may take it)
         ):
             return  # it would be discarded when selected, without using a cycle
         self.C.events.append(ev)
@@ -579,7 +612,9 @@ class Agent:
                 ev = self.select_event(events) if self._custom_event else events.popleft()
                 if ev is None or self._deliberate(ev):
                     break
-        # ---- act
+        # ---- act (first, as Jason, the plans whose goal condition holds are done)
+        if self.has_goal_conds:
+            clear_satisfied(self)
         if self._feedback or self._waiting_actions:
             self._process_feedback()
         if C.atomic_intention is not None:

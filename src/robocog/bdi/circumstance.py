@@ -35,7 +35,7 @@ class Event:
 class IntendedMeans:
     """A plan being executed for a trigger."""
 
-    __slots__ = ("plan", "trigger", "s", "cur", "ret")
+    __slots__ = ("plan", "trigger", "s", "cur", "ret", "base")
 
     def __init__(self, plan: Plan, trigger: Trigger, s: dict, cur: Chain) -> None:
         self.plan = plan
@@ -43,6 +43,8 @@ class IntendedMeans:
         self.s = s
         self.cur = cur
         self.ret = None
+        #: JasonER: the bindings the plan was chosen with, its sub-plans' starting point
+        self.base: dict | None = None
 
     def __repr__(self) -> str:
         return f"<im {self.trigger!r}>"
@@ -67,6 +69,7 @@ def new_im(plan: Plan, trigger: Trigger, s: dict, cur: Chain) -> IntendedMeans:
     im.s = s
     im.cur = cur
     im.ret = None
+    im.base = None
     return im
 
 

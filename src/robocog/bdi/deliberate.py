@@ -18,6 +18,7 @@ from robocog.bdi.circumstance import (
     Intention,
     new_im,
 )
+from robocog.bdi.er import er_deliberate
 from robocog.bdi.formulas import (
     propagate,
 )
@@ -74,6 +75,8 @@ def context(self: Agent, plan: P.Plan, s: dict, trail: list) -> bool:
 
 def deliberate(self: Agent, ev: Event) -> bool:
     """Handle one event; False when it was discarded without using the cycle."""
+    if self.has_subplans and er_deliberate(self, ev):
+        return True
     trig = ev.trigger
     pl = self.pl
     got = trig.cands
@@ -137,6 +140,8 @@ def deliberate(self: Agent, ev: Event) -> bool:
         else:
             return self._no_option(ev)
     im = new_im(plan, trig, s, plan.body)
+    if plan.subplans is not None or plan.goal_cond is not None:
+        im.base = dict(s)
     i = ev.intention
     if trig.kind == ACHIEVE and trig.literal.__class__ is Literal and trig.literal.annots:
         deadline = _hard_deadline(trig.literal)

@@ -13,6 +13,7 @@ import operator
 from collections.abc import Callable, Iterator
 from typing import TYPE_CHECKING
 
+from robocog.bdi.nsterm import DEFAULT, NsLiteral, split_ns, with_ns
 from robocog.bdi.terms import (
     NS_SEP,
     And,
@@ -85,9 +86,32 @@ def solve(agent: Agent, f: Term, s: dict, trail: list) -> Iterator[None]:
             yield None
         undo(s, trail, mark)
         return
+    if c is NsLiteral:
+        yield from _solve_ns(agent, f, s, trail)
+        return
     if c is Body:
         raise ActionError("a plan body is not a logical formula")
     raise ActionError(f"{term_str(f)} is not a logical formula")
+
+
+def _solve_ns(agent: Agent, f: NsLiteral, s: dict, trail: list) -> Iterator[None]:
+    """A literal whose namespace is a variable: asked in that namespace once it has a
+    value, else in each namespace the agent knows (in the order it met them)."""
+    r = resolve(f, s)
+    if r.__class__ is Literal:
+        yield from solve(agent, r, s, trail)
+        return
+    seen: dict[str, None] = {DEFAULT: None}
+    for b in agent.bb:
+        seen[split_ns(b)[0]] = None
+    for p in agent.pl:
+        if p.trigger is not None and p.trigger.literal.__class__ is Literal:
+            seen[split_ns(p.trigger.literal)[0]] = None
+    for ns in seen:
+        mark = len(trail)
+        if unify(f.ns, Literal(ns), s, trail):
+            yield from solve(agent, with_ns(ns, f.lit), s, trail)
+        undo(s, trail, mark)
 
 
 _TRUTH = ("true", "false")

@@ -56,12 +56,13 @@ class Message:
 
 def _receivers(ag: Agent, to: Term) -> list[str]:
     if to.__class__ is Literal:
-        return [to.functor]  # one receiver, the usual case
+        # one receiver, the usual case; ``self`` is the sender itself, as in Jason
+        return [ag.name if to.functor == "self" else to.functor]
     names = list(iter_list(to)) if is_list(to) else [to]
     out = []
     for n in names:
         if n.__class__ is Literal:
-            out.append(n.functor)
+            out.append(ag.name if n.functor == "self" else n.functor)
         elif n.__class__ is str:
             out.append(n)
         else:

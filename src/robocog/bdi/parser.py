@@ -12,7 +12,6 @@ from __future__ import annotations
 import re
 import threading
 from collections.abc import Sequence
-from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -21,6 +20,17 @@ from lark import Token, Transformer, v_args
 from lark.tree import Meta
 
 from robocog.bdi import plans as P
+from robocog.bdi.clauses import Program, Rule
+from robocog.bdi.er import with_goal_condition, with_subplans
+from robocog.bdi.functions import function_directive
+from robocog.bdi.namespaces import (
+    BEGIN_NS,
+    DECLARE_NS,
+    DEFAULT_NS,
+    END_NS,
+    in_namespace,
+)
+from robocog.bdi.nsterm import NsLiteral
 from robocog.bdi.terms import (
     NIL,
     NS_SEP,
@@ -55,23 +65,6 @@ class ParseError(ValueError):
         super().__init__(f"{where}{line}:{column}: {message}")
 
 
-@dataclass
-class Rule:
-    """``head :- body``: a belief that holds when its body does."""
-
-    head: Literal
-    body: Term
-
-
-@dataclass
-class Program:
-    """What a source file declares, in program order."""
-
-    beliefs: list = field(default_factory=list)  # Literal or Rule, in order
-    goals: list[Literal] = field(default_factory=list)
-    plans: list[P.Plan] = field(default_factory=list)
-
-
 def _unescape(s: str) -> str:
     out = []
     i = 0
@@ -98,6 +91,14 @@ class _Builder(Transformer):
         #: the namespace of the ``{ begin namespace(...) }`` block being read, if any
         self.namespace: str | None = None
         self._local_names = 0
+        #: the namespace the file is read into (``include(f, ns)``), None for default
+        self.file_ns: str | None = None
+        #: what ``this_ns`` names here (the file's namespace, or the block's, unmapped)
+        self.this_ns: str | None = None
+        self.in_block = False
+        #: the file's local namespaces: the name written -> the name no other file has
+        self.local_ns: dict[str, str] = {}
+        self.functions: dict[str, tuple[str, int, str]] = {}  # register_function's
 
     def _clause_done(self) -> None:
         self.vars = {}
@@ -125,23 +126,34 @@ class _Builder(Transformer):
     def directive(self, meta: Meta, items: list) -> tuple:
         self._clause_done()
         text = str(items[0])
-        m = _BEGIN_NS.match(text)
+        m = BEGIN_NS.match(text) or DECLARE_NS.match(text)
         if m is not None:
-            if self.namespace is not None:
+            if self.in_block:
                 raise ValueError("a namespace block inside another")
             name, scope = m.group(1), m.group(2) or "global"
             if scope == "local":
                 # a local namespace is the file's own: a name no other file can write
                 self._local_names += 1
-                name = f"#{self._local_names}{name}"
-            self.namespace = name
+                self.local_ns[name] = f"#{self._local_names}{name}"
+            if m.re is DECLARE_NS:  # ``{ namespace(ns, local) }`` declares, opens nothing
+                return ("namespace", None)
+            self.namespace, self.this_ns = self.local_ns.get(name, name), name
+            self.in_block = True
             return ("namespace", name)
-        if _END_NS.match(text):
-            if self.namespace is None:
+        if END_NS.match(text):
+            if not self.in_block:
                 raise ValueError("{ end } without { begin namespace(...) }")
-            self.namespace = None
+            self.namespace = self.this_ns = self.file_ns
+            self.in_block = False
             return ("namespace", None)
-        return ("directive", (text, meta.line, meta.column))
+        try:
+            fn = function_directive(text)
+        except ValueError as exc:
+            raise ParseError(str(exc), meta.line, meta.column, self.source) from None
+        if fn is not None:
+            self.functions[fn[0]] = fn
+            return ("function", fn)
+        return ("directive", (text, meta.line, meta.column, self.namespace))
 
     def directive_body(self, items: list) -> str:
         return str(items[0])
@@ -152,7 +164,7 @@ class _Builder(Transformer):
         label = None
         context = None
         body = None
-        trigger = None
+        trigger = goal_cond = None
         for it in items:
             if isinstance(it, tuple) and it[0] == "label":
                 label = it[1]
@@ -162,16 +174,36 @@ class _Builder(Transformer):
                 body = it[1]
             elif isinstance(it, P.Trigger):
                 trigger = it
+            elif isinstance(it, tuple) and it[0] == "goal_cond":
+                goal_cond = it[1]
         line = getattr(meta, "line", 0) if not getattr(meta, "empty", True) else 0
         if self.namespace is not None:
             trigger, context, body = in_namespace((trigger, context, body), self.namespace)
+            label = in_namespace(label, self.namespace)  # Jason: a label is in one too
         plan = P.Plan(trigger, context, body, label, self.source, line)
         # Jason's line for a plan (its ``code_line``): the label's, else where the
         # context or the body begins, else the plan's end
         parts = [it[2] for it in items if isinstance(it, tuple) and len(it) == 3 and it[2]]
         end = getattr(meta, "end_line", line)
         plan.code_line = line if label is not None else (parts[0] if parts else end)
-        return ("plan", plan)
+        return ("plan", plan if goal_cond is None else with_goal_condition(plan, goal_cond))
+
+    def goal_cond(self, items: list) -> tuple:
+        return ("goal_cond", items[0])
+
+    @v_args(meta=True)
+    def subplans(self, meta: Meta, items: list) -> tuple:
+        # a block of sub-plans belongs to the plan before it
+        plans: list = []
+        for kind, value in items:
+            if kind == "subplans":
+                if not plans:
+                    msg = "sub-plans in braces must follow a plan"
+                    raise ParseError(msg, value[1], value[2], self.source)
+                plans[-1] = with_subplans(plans[-1], value[0])
+            else:
+                plans.append(value)
+        return ("subplans", (plans, meta.line, meta.column))
 
     def label(self, items: list) -> tuple:
         return ("label", items[0])
@@ -229,6 +261,29 @@ class _Builder(Transformer):
     @v_args(meta=True)
     def test(self, meta: Meta, items: list) -> P.Step:
         return self._step(P.TEST_STEP, meta, items[0])
+
+    @v_args(meta=True)
+    def add_plan_step(self, meta: Meta, items: list) -> P.Step:
+        return self._add_plan(meta, items[0], "begin")
+
+    @v_args(meta=True)
+    def add_plan_end(self, meta: Meta, items: list) -> P.Step:
+        return self._add_plan(meta, items[0], "end")
+
+    def _add_plan(self, meta: Meta, plan: PlanTerm, where: str) -> P.Step:
+        # Jason reads ``+{ plan }`` as ``.add_plan(plan, self, begin)``
+        lit = Literal(".add_plan", (plan, Literal("self"), Literal(where)))
+        return self._step(P.INTERNAL, meta, lit)
+
+    @v_args(meta=True)
+    def del_plan_step(self, meta: Meta, items: list) -> P.Step:
+        return self._step(P.INTERNAL, meta, Literal(".remove_plan", (items[0],)))
+
+    def plan_term_add(self, items: list, op: str = "+") -> PlanTerm:
+        return self.plan_term([self.trigger([op, items[0]]), *items[1:]])
+
+    def plan_term_del(self, items: list) -> PlanTerm:
+        return self.plan_term_add(items, "-")
 
     @v_args(meta=True)
     def add_bel(self, meta: Meta, items: list) -> P.Step:
@@ -404,10 +459,17 @@ class _Builder(Transformer):
     def literal(self, items: list) -> Literal:
         neg = False
         i = 0
-        ns = None
-        if isinstance(items[0], Token) and items[0].type == "ATOM":
-            ns = str(items[0]).strip("'")
-            i = 1
+        ns = ns_var = None
+        if isinstance(items[0], Token) and items[0].type in ("ATOM", "VAR", "NSSEP"):
+            if items[0].type == "NSSEP":  # ``::b``: the namespace of the file or block
+                ns = self.this_ns or DEFAULT_NS
+            elif items[0].type == "VAR":
+                ns_var = self._var(str(items[0]))
+            else:
+                ns = str(items[0]).strip("'")
+                ns = (self.this_ns or DEFAULT_NS) if ns == "this_ns" else ns
+            ns = self.local_ns.get(ns, ns) if ns is not None else None
+            i = 1 if items[0].type == "NSSEP" else 2
         if isinstance(items[i], Token) and items[i].type == "NEG":
             neg = True
             i += 1
@@ -424,11 +486,17 @@ class _Builder(Transformer):
             elif isinstance(it, tuple) and it and it[0] == "annots":
                 annots = sort_annots(it[1])
         lit = Literal(functor, args, annots, neg)
+        if ns_var is not None:
+            return NsLiteral(ns_var, lit)
+        if functor == "this_ns" and not args and not annots and not neg and ns is None:
+            return Literal(self.this_ns or DEFAULT_NS)  # Jason: the namespace it is read in
+        fn = self.functions.get(functor)
         if (
             not neg
             and not annots
             and (
-                functor.startswith("math.")
+                (fn is not None and fn[1] == len(args))
+                or functor.startswith("math.")
                 or (functor in (".length", ".count") and len(args) == 1)
                 or (functor == "system.time" and not args)
             )
@@ -437,7 +505,8 @@ class _Builder(Transformer):
         return lit
 
     def args(self, items: list) -> tuple:
-        return ("args", tuple(x for x in items if x is not None))
+        # an argument is a term, never moved into a namespace: ``default::k`` is ``k``
+        return ("args", tuple(_plain_default(x) for x in items if x is not None))
 
     def annot_tail(self, items: list) -> AnnotTail:
         name = str(items[0])
@@ -459,6 +528,15 @@ class _Builder(Transformer):
 
     def list_items(self, items: list) -> list:
         return items
+
+
+def _plain_default(t: Term) -> Term:
+    if t.__class__ is Literal and t.functor.startswith(_DEFAULT_PREFIX):
+        return Literal(t.functor[len(_DEFAULT_PREFIX) :], t.args, t.annots, t.neg)
+    return t
+
+
+_DEFAULT_PREFIX = DEFAULT_NS + NS_SEP
 
 
 def _is_true(t: Term) -> bool:
@@ -512,7 +590,7 @@ def _describe(exc: lark.exceptions.UnexpectedInput) -> str:
 MAX_LINE_CHARS = 1024 * 1024
 
 
-def _run(start: str, text: str, source: str):  # noqa: ANN202 - parse result
+def _run(start: str, text: str, source: str, namespace: str | None = None):  # noqa: ANN202 - parse result
     if not isinstance(text, str):
         raise ParseError("source text must be a string", 1, 1, source)
     if len(text) > MAX_LINE_CHARS:
@@ -523,7 +601,10 @@ def _run(start: str, text: str, source: str):  # noqa: ANN202 - parse result
         parser, builder = _parser()
         builder.vars = {}
         builder.source = source
-        builder.namespace = None
+        builder.namespace = builder.file_ns = builder.this_ns = namespace
+        builder.in_block = False
+        builder.local_ns = {}
+        builder.functions = {}
         try:
             tree = parser.parse(text, start=start)
             return builder.transform(tree)
@@ -539,6 +620,8 @@ def _run(start: str, text: str, source: str):  # noqa: ANN202 - parse result
             raise ParseError("nesting too deep", 1, 1, source) from None
         except lark.exceptions.VisitError as exc:
             inner = exc.orig_exc
+            if isinstance(inner, ParseError):
+                raise inner from None
             if isinstance(inner, RecursionError):
                 raise ParseError("nesting too deep", 1, 1, source) from None
             raise ParseError(f"malformed input ({inner})", 1, 1, source) from None
@@ -548,98 +631,6 @@ def _run(start: str, text: str, source: str):  # noqa: ANN202 - parse result
             raise ParseError(f"malformed input ({exc})", 1, 1, source) from None
         finally:
             builder.vars = {}
-
-
-#: Jason's default namespace, and what joins a namespace to a functor
-DEFAULT_NS = "default"
-_BEGIN_NS = re.compile(r"\s*begin\s+namespace\s*\(\s*(\w+)\s*(?:,\s*(local|global)\s*)?\)\s*\Z")
-_END_NS = re.compile(r"\s*end\s*\Z")
-
-
-def in_namespace(item: Any, ns: str) -> Any:
-    """``item`` (a belief, rule, goal, or a plan's (trigger, context, body)) as written
-    inside ``{ begin namespace(ns) }``: its beliefs, goals and triggers, and the
-    literals its contexts, rule bodies and belief and goal formulas consult, in ``ns``;
-    internal actions, environment actions and arguments are left as they are; a
-    literal with an explicit namespace keeps it (``default::b`` is plain ``b``)."""
-    if isinstance(item, tuple):
-        trigger, context, body = item
-        if trigger is not None and trigger.literal.__class__ is Literal:
-            trigger = P.Trigger(trigger.op, trigger.kind, _ns_lit(trigger.literal, ns))
-        return trigger, _ns_formula(context, ns), _ns_chain(body, ns)
-    if isinstance(item, Rule):
-        return Rule(_ns_lit(item.head, ns), _ns_formula(item.body, ns))
-    return _ns_lit(item, ns)
-
-
-def _ns_lit(t: Term, ns: str) -> Term:
-    if t.__class__ is not Literal or t.functor.startswith("."):
-        return t
-    f = t.functor
-    if NS_SEP in f:
-        if not f.startswith(DEFAULT_NS + NS_SEP):
-            return t
-        f = f[len(DEFAULT_NS) + len(NS_SEP) :]
-    else:
-        f = f"{ns}{NS_SEP}{f}"
-    return Literal(f, t.args, t.annots, t.neg)
-
-
-def _ns_formula(t: Term, ns: str) -> Term:
-    c = t.__class__
-    if c is Literal:
-        if t.functor in ("true", "false") and not t.args:
-            return t
-        return _ns_lit(t, ns)
-    if c is And or c is Or:
-        return c(_ns_formula(t.left, ns), _ns_formula(t.right, ns))
-    if c is Not:
-        return Not(_ns_formula(t.arg, ns))
-    return t
-
-
-#: the body formulas whose literal is a belief or a goal (namespaced in a block)
-_NS_STEPS = frozenset(
-    {
-        P.ACHIEVE_STEP,
-        P.ACHIEVE_NF,
-        P.ADD_BEL,
-        P.ADD_BEL_NF,
-        P.ADD_BEL_END,
-        P.DEL_BEL,
-        P.DEL_BEL_NF,
-        P.DEL_ADD_BEL,
-    }
-)
-
-
-def _ns_chain(chain: P.Chain, ns: str) -> P.Chain:
-    steps = []
-    while chain is not None:
-        st = chain[0]
-        if st.kind in _NS_STEPS:
-            st = P.Step(st.kind, _ns_lit(st.term, ns), st.blocks, st.line, st.state)
-        elif st.kind == P.TEST_STEP:
-            st = P.Step(st.kind, _ns_formula(st.term, ns), st.blocks, st.line, st.state)
-        elif st.kind == P.IF:
-            # blocks: (condition, chain) per branch; state: the else chain
-            blocks = tuple((_ns_formula(c, ns), _ns_chain(b, ns)) for c, b in st.blocks)
-            st = P.Step(st.kind, _ns_formula(st.term, ns), blocks, st.line, _ns_chain(st.state, ns))
-        elif st.kind in (P.WHILE, P.FOR):
-            blocks = tuple(_ns_chain(b, ns) for b in st.blocks)  # the body
-            st = P.Step(st.kind, _ns_formula(st.term, ns), blocks, st.line, st.state)
-        elif st.kind == P.FORK:
-            st = P.Step(st.kind, st.term, tuple(_ns_chain(b, ns) for b in st.blocks), st.line)
-        steps.append(st)
-        chain = chain[1]
-    return P.chain(steps)
-
-
-def _plan_in(plan: P.Plan, ns: str) -> P.Plan:
-    trigger, context, body = in_namespace((plan.trigger, plan.context, plan.body), ns)
-    out = P.Plan(trigger, context, body, plan.label, plan.source, plan.line)
-    out.code_line = plan.code_line
-    return out
 
 
 #: how deep includes may nest before the reader refuses (a file including itself, say)
@@ -654,7 +645,11 @@ MAX_PROGRAM_CHARS = 64 * 1024
 
 
 def parse_program(
-    text: str, source: str = "", search_path: Sequence[str | Path] = (), _depth: int = 0
+    text: str,
+    source: str = "",
+    search_path: Sequence[str | Path] = (),
+    _depth: int = 0,
+    namespace: str | None = None,
 ) -> Program:
     """Parse a whole ``.asl`` program.
 
@@ -674,7 +669,7 @@ def parse_program(
             1,
             source,
         )
-    items = _run("start", text, source)
+    items = _run("start", text, source, None if namespace == DEFAULT_NS else namespace)
     prog = Program()
     for kind, value in items:
         if kind == "belief":
@@ -685,21 +680,36 @@ def parse_program(
             prog.goals.append(value)
         elif kind == "plan":
             prog.plans.append(value)
+        elif kind == "function":
+            prog.functions[value[0]] = value
         elif kind == "namespace":
             continue
+        elif kind == "subplans":
+            subs, line, column = value
+            if not prog.plans:
+                raise ParseError("sub-plans in braces must follow a plan", line, column, source)
+            prog.plans[-1] = with_subplans(prog.plans[-1], subs)
         elif kind == "directive":
-            body, line, column = value
-            included = _include(body, line, column, source, search_path, _depth)
+            body, line, column, here = value
+            included = _include(body, line, column, source, search_path, _depth, here)
             prog.beliefs += included.beliefs
             prog.goals += included.goals
             prog.plans += included.plans
+            prog.functions.update(included.functions)
     return prog
 
 
 def _include(
-    body: str, line: int, column: int, source: str, search_path: Sequence[str | Path], depth: int
+    body: str,
+    line: int,
+    column: int,
+    source: str,
+    search_path: Sequence[str | Path],
+    depth: int,
+    ns_here: str | None = None,
 ) -> Program:
-    """The program an ``include`` directive names."""
+    """The program an ``include`` directive names, read into its namespace (by default
+    the one the directive stands in)."""
     m = _INCLUDE.match(body)
     if m is None:
         text = " ".join(body.split())
@@ -718,14 +728,9 @@ def _include(
         except OSError:  # a name too long for the file system, say: no such file
             found = False
         if found:
-            prog = parse_program(read_source(path), str(path), search_path, depth + 1)
-            ns = m.group(2)
-            if ns and ns != DEFAULT_NS:
-                # ``include("f.asl", ns)``: the file as if written inside a block of ns
-                prog.beliefs = [in_namespace(b, ns) for b in prog.beliefs]
-                prog.goals = [in_namespace(g, ns) for g in prog.goals]
-                prog.plans = [_plan_in(p, ns) for p in prog.plans]
-            return prog
+            # ``include("f.asl", ns)``: the file read as if in a block of ns, as Jason does
+            text = read_source(path)
+            return parse_program(text, str(path), search_path, depth + 1, m.group(2) or ns_here)
     looked = ", ".join(str(c) for c in candidates)
     raise ParseError(
         f"include: no file {clip(name)!r} (looked at {clip(looked, 300)})", line, column, source

@@ -173,6 +173,9 @@ class Plan:
         "label",
         "trigger",
         "context",
+        "subplans",
+        "scope",
+        "goal_cond",
         "cond",
         "test",
         "bind",
@@ -206,6 +209,11 @@ class Plan:
         #: the line Jason gives the plan (``code_line`` of ``.intention``'s labels)
         self.code_line = line
         self.order = 0
+        #: JasonER: the plan's sub-plans (a PlanLibrary, relevant only while the plan
+        #: is intended), the plan whose sub-plan this is, and its goal condition
+        self.subplans: PlanLibrary | None = None
+        self.scope: Plan | None = None
+        self.goal_cond: Term | None = None
         #: the trigger's arguments when they are distinct variables and there are no
         #: annotations: relevance is then a matter of binding them
         self.params = _simple_params(trigger)

@@ -18,7 +18,9 @@ import time
 from collections.abc import Iterator
 from typing import Any
 
+from robocog.bdi.containers import QueueTerm, SetTerm
 from robocog.bdi.context import running
+from robocog.bdi.nsterm import NsLiteral, ns_rename, ns_resolve, ns_unify
 from robocog.bdi.terms import (
     NIL,
     And,
@@ -91,7 +93,7 @@ def unify(a: Term, b: Term, s: dict, trail: list) -> bool:
             if cb is not Literal:
                 if cb is Arith:
                     return unify(a, evaluate(b, s), s, trail)
-                return False
+                return cb is NsLiteral and ns_unify(b, a, s, trail, unify)
             if a is b:
                 return True
             if a.functor != b.functor or a.neg != b.neg:
@@ -146,6 +148,8 @@ def unify(a: Term, b: Term, s: dict, trail: list) -> bool:
             return cb is Body and unify_bodies(a, b, s, trail)
         if ca is PlanTerm:
             return cb is PlanTerm and (a is b or unify_plans(a, b, s, trail))
+        if ca is NsLiteral:
+            return ns_unify(a, b, s, trail, unify)
         return a == b
 
 
@@ -357,6 +361,8 @@ def resolve(t: Term, s: dict, fresh: dict | None = None) -> Term:
         return Not(resolve(t.arg, s, fresh))
     if c is Body:
         return map_body(t, lambda x: resolve(x, s, fresh))
+    if c is NsLiteral:
+        return ns_resolve(t, s, fresh, resolve)
     return t
 
 
@@ -588,9 +594,16 @@ def _call(t: Arith, s: dict, fresh: dict | None, strict: bool) -> Term:
                 n += 1
                 v = v.tail
             return n
+        if v.__class__ is SetTerm or v.__class__ is QueueTerm:
+            return len(v)
         raise EvalError(f".length: {v!r} is not a list or a string")
     if lit.functor == "system.time":  # Java's System.currentTimeMillis()
         return int(time.time() * 1000)
+    if not lit.functor.startswith("math."):  # a function of the program's rules
+        agent = running.get()
+        if agent is None:
+            raise EvalError(f"unknown function {lit.functor}/{len(args)}")
+        return agent.function_value(lit.functor, args)
     name = lit.functor[5:]
     if (
         name in ("sum", "average", "mean", "median", "max", "min", "std_dev")
@@ -721,32 +734,34 @@ def rename(t: Term, mapping: dict) -> Term:
     if c is Body:
         return map_body(t, lambda x: rename(x, mapping))
     if c is PlanTerm:
-        return _rename_plan(t, mapping)
+        return map_plan(t, lambda x: rename(x, mapping))
+    if c is NsLiteral:
+        return ns_rename(t, lambda x: rename(x, mapping))
     return t
 
 
-def _rename_plan(t: PlanTerm, mapping: dict) -> PlanTerm:
-    """A plan term whose variables are renamed as ``rename`` does (a plan term in a
-    rule's body shares the rule's variables)."""
+def map_plan(t: PlanTerm, fn: Any) -> PlanTerm:
+    """A plan term with ``fn`` applied to its terms: ``rename`` (a plan term in a rule's
+    body shares the rule's variables) or a substitution (``.add_plan``)."""
     p = t.plan
     trig = p.trigger
     if trig is not None:
-        trig = trig.__class__(trig.op, trig.kind, rename(trig.literal, mapping))
+        trig = trig.__class__(trig.op, trig.kind, fn(trig.literal))
     steps = [
         st
         if st.blocks or st.term is None or isinstance(st.term, str)
-        else st.__class__(st.kind, rename(st.term, mapping), st.blocks, st.line, st.state)
+        else st.__class__(st.kind, fn(st.term), st.blocks, st.line, st.state)
         for st in _steps(p.body)
     ]
     plan = p.__class__(
         trig,
-        None if p.context is None else rename(p.context, mapping),
+        None if p.context is None else fn(p.context),
         _chain(steps),
-        None if p.label is None else rename(p.label, mapping),
+        None if p.label is None else fn(p.label),
         p.source,
         p.line,
     )
-    label = None if t.label is None else rename(t.label, mapping)
+    label = None if t.label is None else fn(t.label)
     return PlanTerm(plan, t.text, t.bare, label)
 
 
@@ -778,4 +793,7 @@ def variables(t: Term, out: list | None = None) -> list:
         variables(t.right, out)
     elif c is Not:
         variables(t.arg, out)
+    elif c is NsLiteral:
+        variables(t.ns, out)
+        variables(t.lit, out)
     return out

@@ -12,13 +12,16 @@ care of its intention itself.
 from robocog.bdi.stdlib import (  # noqa: F401 - importing each family registers it
     beliefs,
     communication,
+    containers,
     extras,
     goals,
     intentions,
     lists,
+    modules,
     output,
     plans,
     strings,
+    subplans,
     timing,
     typetests,
 )

@@ -6,6 +6,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING, Any
 
+from robocog.bdi.containers import QueueTerm, SetTerm
 from robocog.bdi.logic import ActionError
 from robocog.bdi.stdlib.base import (
     arg_list,
@@ -23,6 +24,7 @@ from robocog.bdi.terms import (
     Nil,
     Term,
     Var,
+    is_ground,
     is_list,
     iter_list,
     list_items,
@@ -46,6 +48,8 @@ def _length(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
     v = resolve(args[0], s)
     if v.__class__ is str:
         return bind(len(v), args[1], s, trail)
+    if v.__class__ is SetTerm or v.__class__ is QueueTerm:
+        return bind(len(v), args[1], s, trail)
     items = list_items(v)
     if items is None:
         return False  # Jason: neither a list nor a string has no length, and says nothing
@@ -55,7 +59,14 @@ def _length(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
 @internal("member")
 def _member(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> Iterator[None]:
     need_args(args, 2, "member")
-    return bind_each(iter(arg_list(args[1], s, "member")), args[0], s, trail)
+    coll = resolve(args[1], s)
+    if coll.__class__ is SetTerm or coll.__class__ is QueueTerm:
+        # a set or a queue is asked at once for a ground member, as Jason does
+        x = resolve(args[0], s)
+        if is_ground(x):
+            return iter([None] if x in coll else [])
+        return bind_each(iter(coll.members()), args[0], s, trail)
+    return bind_each(iter(arg_list(coll, s, "member")), args[0], s, trail)
 
 
 @internal("concat")

@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING, Any
 from robocog.bdi.logic import ActionError
 from robocog.bdi.stdlib.base import internal, need_args
 from robocog.bdi.terms import Literal, PlanTerm, is_list, iter_list, make_list, term_str
-from robocog.bdi.unifier import resolve, unify
+from robocog.bdi.unifier import map_plan, resolve, unify
 
 if TYPE_CHECKING:
     from robocog.bdi.agent import Agent
@@ -24,7 +24,9 @@ def _add_plan(ag: Agent, args: tuple, s: dict, trail: list, ctx: Any) -> bool:
     texts = list(iter_list(p)) if is_list(p) else [p]
     for t in texts:
         if t.__class__ is PlanTerm:
-            t = t.text  # read again, so each addition is a plan of its own
+            # its variables' values in (as Jason's instance of the term), and read
+            # again, so that each addition is a plan of its own
+            t = repr(map_plan(t, lambda x: resolve(x, s)).plan)
         if t.__class__ is not str:
             raise ActionError(".add_plan expects a plan term or a string")
         from robocog.bdi.parser import ParseError
