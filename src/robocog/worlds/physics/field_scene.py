@@ -374,8 +374,9 @@ def sky_light(spec: Lighting) -> tuple[np.ndarray, np.ndarray]:
     ground's light times the grass's reflectance, so green). MuJoCo's ambient light
     falls on every surface alike, so the sky is drawn as that upright share plus the
     bounce (``everywhere``, the ambient) and the rest as a light from straight overhead
-    without shadows (``overhead``), which a face receives by how much it faces up.
-    Lit by ambient alone, an overcast sky would light the sides of bottles and cups as
+    without shadows (``overhead``), which a face receives by how much it faces up (the
+    ground gets the bounce too, which an ambient light cannot keep off it). Lit by
+    ambient alone, an overcast sky would light the sides of bottles and cups as
     brightly as the grass, and they would stand out brighter than on a sunny day.
     """
     sky = np.array(spec.sky) * spec.ambient
