@@ -10,8 +10,9 @@ closes two sliding fingers (position servos with a force limit, so an object is 
 the friction of the pads).
 
 The lights are the day's: a sun (a directional light with shadows) whose height,
-colour and strength change with :data:`LIGHTING`, and the sky's ambient light. The
-same model is relit by :func:`set_light`, so one scene can be seen under every light.
+colour and strength change with :data:`LIGHTING`, and the sky's light, which reaches a
+surface by how much of the sky it faces (see :func:`sky_light`). The same model is
+relit by :func:`set_light`, so one scene can be seen under every light.
 """
 
 from __future__ import annotations
@@ -49,6 +50,8 @@ CAMERA_AT = (-0.05, -0.17, 0.85)
 CAMERA_PITCH = math.radians(22.0)
 CAMERA_FOVY = 2 * math.degrees(math.atan(math.tan(math.radians(30.0)) * 480 / 640))
 TRAY = (-0.2, 0.0, 0.24)  # centre of the tray's floor
+#: the grass's two colours (its reflectance per channel: the light it sends back up)
+GRASS = ((0.27, 0.46, 0.18), (0.31, 0.5, 0.2))
 
 
 @dataclass(frozen=True)
@@ -66,6 +69,12 @@ class Lighting:
     #: the air's haze: from ``haze[0]`` metres objects fade into the sky's colour,
     #: wholly at ``haze[1]`` (a clear day's is far beyond the camera's range)
     haze: tuple[float, float] = (200.0, 1000.0)
+    #: the sky's light on an upright surface over its light on the ground (the sky's
+    #: part only): 0.5 for a sky of even brightness, as a clear sky away from the sun
+    #: roughly is; 0.396 for the CIE standard overcast sky (Moon and Spencer's), three
+    #: times brighter at the zenith than at the horizon, whose light comes mostly from
+    #: overhead
+    sky_vertical: float = 0.5
 
 
 #: the three lights of the paper's test days: a high bright sun; an overcast sky (no
@@ -73,7 +82,7 @@ class Lighting:
 LIGHTING: dict[str, Lighting] = {
     "sunny": Lighting(58.0, 200.0, (1.0, 0.98, 0.92), 0.75, 0.35, (0.95, 0.97, 1.0)),
     "cloudy": Lighting(
-        70.0, 180.0, (0.85, 0.88, 0.95), 0.08, 0.17, (0.8, 0.83, 0.9), False, (1.0, 14.0)
+        70.0, 180.0, (0.85, 0.88, 0.95), 0.08, 0.17, (0.8, 0.83, 0.9), False, (1.0, 14.0), 0.396
     ),
     "evening": Lighting(
         9.0, 250.0, (1.0, 0.55, 0.28), 0.75, 0.175, (0.55, 0.45, 0.45), True, (4.0, 40.0)
@@ -300,7 +309,7 @@ def field_xml(
     <global offwidth="640" offheight="480"/>
   </visual>
   <asset>
-    <texture name="grass" type="2d" builtin="checker" rgb1="0.27 0.46 0.18" rgb2="0.31 0.5 0.2"
+    <texture name="grass" type="2d" builtin="checker" rgb1="{_f(*GRASS[0])}" rgb2="{_f(*GRASS[1])}"
       width="256" height="256" mark="random" random="0.08" markrgb="0.4 0.55 0.25"/>
     <material name="grass" texture="grass" texrepeat="{size * 2:.4g} {size * 2:.4g}"
       specular="0" shininess="0" reflectance="0"/>
@@ -310,6 +319,8 @@ def field_xml(
   <worldbody>
     <light name="sun" directional="true" castshadow="true" pos="{_f(mid, mid, 30)}"
       dir="0 0 -1" diffuse="0.8 0.8 0.8" specular="0.1 0.1 0.1"/>
+    <light name="sky" directional="true" castshadow="false" pos="{_f(mid, mid, 30)}"
+      dir="0 0 -1" diffuse="0 0 0" specular="0 0 0"/>
     <geom name="ground" type="plane" size="{_f(mid + 8, mid + 8, 0.1)}" pos="{_f(mid, mid, 0)}"
       material="grass" friction="1 0.005 0.0001"/>
     {fence_xml}
@@ -344,12 +355,39 @@ def set_light(model: mujoco.MjModel, light: str, jitter: random.Random | None = 
     model.light_diffuse[sun] = np.array(spec.colour) * spec.strength
     model.light_specular[sun] = np.array(spec.colour) * 0.1 * spec.strength
     model.light_castshadow[sun] = 1 if spec.shadows else 0
-    model.vis.headlight.ambient[:] = np.array(spec.sky) * spec.ambient
+    overhead, everywhere = sky_light(spec)
+    model.light_diffuse[model.light("sky").id] = overhead
+    model.vis.headlight.ambient[:] = everywhere
     # MuJoCo's fog distances are in units of the model's extent
     extent = float(model.stat.extent) or 1.0
     model.vis.map.fogstart = spec.haze[0] / extent
     model.vis.map.fogend = spec.haze[1] / extent
     model.vis.rgba.fog[:] = [*(np.array(spec.sky) * min(1.0, spec.ambient + spec.strength)), 1.0]
+
+
+def sky_light(spec: Lighting) -> tuple[np.ndarray, np.ndarray]:
+    """The sky's light as MuJoCo can draw it: (overhead, everywhere), RGB.
+
+    ``spec.ambient`` is the sky's light on open ground. A surface receives the light of
+    the part of the sky it faces: the ground all of it, an upright side (of a bottle, a
+    cup) ``spec.sky_vertical`` of it, plus the light the grass throws back (half the
+    ground's light times the grass's reflectance, so green). MuJoCo's ambient light
+    falls on every surface alike, so the sky is drawn as that upright share plus the
+    bounce (``everywhere``, the ambient) and the rest as a light from straight overhead
+    without shadows (``overhead``), which a face receives by how much it faces up (the
+    ground gets the bounce too, which an ambient light cannot keep off it). Lit by
+    ambient alone, an overcast sky would light the sides of bottles and cups as
+    brightly as the grass, and they would stand out brighter than on a sunny day.
+    """
+    sky = np.array(spec.sky) * spec.ambient
+    sun_on_ground = (
+        np.array(spec.colour) * spec.strength * max(0.0, math.sin(math.radians(spec.elevation)))
+    )
+    grass = np.mean(np.array(GRASS), axis=0)
+    bounce = 0.5 * grass * (sky + sun_on_ground)
+    everywhere = sky * spec.sky_vertical + bounce
+    overhead = sky * (1.0 - spec.sky_vertical)
+    return overhead, everywhere
 
 
 def prepare_renderer(renderer: mujoco.Renderer) -> mujoco.Renderer:
