@@ -682,6 +682,7 @@ class Agent:
     _drop = failure.drop
     intentions = failure.intentions
     drop_goal = failure.drop_goal
+    succeed_at = failure.succeed_at
     intentions_for = failure.intentions_for
     suspend = failure.suspend
     suspension = failure.suspension

@@ -254,18 +254,7 @@ def _achieved(ag: Agent, i: Intention, pos: int) -> None:
     if is_branch(i):
         ag._drop(i)
         return
-    del i.stack[pos:]
-    ag._unschedule(i)
-    if not i.stack:
-        i.dropped = True
-        return
-    caller = i.stack[-1]
-    if caller.cur is not None:
-        caller.cur = caller.cur[1]
-    if caller.cur is None:
-        ag._clear(i)
-    if i.stack:
-        ag._requeue(i)
+    ag.succeed_at(i, pos)
 
 
 def has_goal_conditions(plan: P.Plan) -> bool:

@@ -136,6 +136,23 @@ def intentions(self: Agent) -> list[Intention]:
     return self.C.intentions()
 
 
+def succeed_at(self: Agent, i: Intention, pos: int) -> None:
+    """The goal of ``i.stack[pos]`` is achieved: its plan and those above it go, and the
+    caller goes on after the goal (``.succeed_goal``, and a Jason-ER goal condition)."""
+    del i.stack[pos:]
+    self._unschedule(i)
+    if not i.stack:
+        i.dropped = True
+        return
+    caller = i.stack[-1]
+    if caller.cur is not None:
+        caller.cur = caller.cur[1]
+    if caller.cur is None:
+        self._clear(i)
+    if i.stack:
+        self._requeue(i)
+
+
 def drop_goal(self: Agent, goal: Literal, how: str, current: Intention | None = None) -> bool:
     """Jason's ``.succeed_goal``/``.fail_goal``/``.drop_intention`` on every intention
     that has ``goal`` in its stack; returns True if ``current`` was changed."""
@@ -160,19 +177,7 @@ def drop_goal(self: Agent, goal: Literal, how: str, current: Intention | None = 
             self._unschedule(i)
             self.fail_intention(i, "ia_failed", "goal failed by .fail_goal")
             continue
-        # succeed: remove the goal's plan and continue its caller
-        del i.stack[pos:]
-        self._unschedule(i)
-        if not i.stack:
-            i.dropped = True
-            continue
-        caller = i.stack[-1]
-        if caller.cur is not None:
-            caller.cur = caller.cur[1]
-        if caller.cur is None:
-            self._clear(i)
-        if i.stack:
-            self._requeue(i)
+        succeed_at(self, i, pos)
     # events for the goal (not yet intentions) go too
     if how != "fail":
         self.C.keep_events(
