@@ -29,15 +29,16 @@ def note_fresh_belief(s: Reasoner, c: Concept) -> None:
     """``c``'s eternal belief was just made or revised (newest last).
 
     Each fresh concept keeps an entry ``[order, belief, min_confidence, stamp_size,
-    negated, shapes, deductions]``: when it was noted, and what its belief deduced
-    through each link (for the belief and parameters named); it is filed under the
+    negated, shapes, deductions, consequences]``: when it was noted, what its belief
+    deduced through each link (for the belief and parameters named), and each link's
+    consequence for its term; it is filed under the
     shapes of conditions its term may instantiate (``s.fresh_shapes``), so that a
     cycle meets only the fresh beliefs some link's condition may take."""
     fresh = s.fresh_beliefs
     entry = fresh.pop(c, None)
     if entry is None:
         shapes = () if c.term.has_var else _term_shapes(c.term)
-        entry = [0, None, 0.0, 0, False, shapes, None]
+        entry = [0, None, 0.0, 0, False, shapes, None, {}]
         filed = s.fresh_shapes
         for key in shapes:
             d = filed.get(key)
@@ -69,10 +70,15 @@ def forward_eternal(s: Reasoner, on_new_belief: Callable[[Reasoner, Concept], No
     revised within the tolerance meets the strongest ``==>`` beliefs whose
     condition it instantiates; the consequence's eternal belief is revised with
     the deduction (or the stronger kept), and, being fresh, travels on next cycle;
-    ``on_new_belief(s, concept)`` is told of each (open questions may have their answer)."""
+    ``on_new_belief(s, concept)`` is told of each (open questions may have their answer).
+
+    The deduction is as new as the newer of its premises (ONA's DERIVATION_STAMP takes
+    the later creation time of the two, Decision_Anticipate keeps it), so a consequence
+    stays fresh only while what it came from is."""
     cfg = s.config
     now = s.time
     mem = s.memory
+    concepts: dict = mem.concepts
     fresh = s.fresh_beliefs
     oldest = now - cfg.belief_last_used_tolerance
     while fresh:
@@ -89,29 +95,37 @@ def forward_eternal(s: Reasoner, on_new_belief: Callable[[Reasoner, Concept], No
     size = cfg.stamp_size
     least = cfg.min_confidence
     negated = cfg.anticipation_negated_outcomes
+    show = shows(s, 1.0)
     # the fresh beliefs that some link's condition may take, with the links' positions
     # (each fresh belief meets the links in their order, the beliefs in their order)
     filed = s.fresh_shapes
     met: dict[Concept, list[int]] = {}
     for key, positions in by_shape.items():
-        concepts = filed.get(key)
-        if concepts is None:
+        concepts_here = filed.get(key)
+        if concepts_here is None:
             continue
-        for c in concepts:
+        for c in concepts_here:
             m = met.get(c)
             if m is None:
                 met[c] = list(positions)
             else:
                 m += positions
-    derived: list[list] = []
-    for c in sorted(met, key=lambda x: fresh[x][0]):
+    order = sorted([(fresh[x][0], x) for x in met])
+    # each deduction is [term, truth, stamp, the belief it last left as it was], with
+    # the creation time it has this cycle
+    derived: list[tuple[list, int]] = []
+    lb: Event
+    for _, c in order:
         b = c.belief
-        term = c.term
         if b is None or b.creation_time < oldest:
             continue
+        term = c.term
+        bt = b.creation_time
         # a belief stays fresh for several cycles and meets mostly the same links at
         # each: what it deduced through each link is kept in its entry while its
-        # belief, the link's belief and the parameters read here are the same
+        # belief, the link's belief and the parameters read here are the same; what
+        # the link's consequence is for this term (a unification) while the concept is
+        # fresh (its term never changes)
         entry = fresh[c]
         if (
             entry[1] is not b
@@ -126,6 +140,7 @@ def forward_eternal(s: Reasoner, on_new_belief: Callable[[Reasoner, Concept], No
             entry[4] = negated
             entry[6] = {}
         known: dict = entry[6]
+        targets: dict = entry[7]
         positions = met[c]
         positions.sort()
         for i in positions:
@@ -134,40 +149,45 @@ def forward_eternal(s: Reasoner, on_new_belief: Callable[[Reasoner, Concept], No
             if hit is not None and hit[0] is lb:
                 found = hit[1]
             else:
-                found = _deduction(b, term, link, lb, least, size, negated)
+                target = targets.get(link, _UNKNOWN)
+                if target is _UNKNOWN:
+                    target = _consequence(term, link)
+                    targets[link] = target
+                found = None if target is None else _deduction(b, lb, target, least, size, negated)
                 known[link] = (lb, found)
             if found is not None:
-                derived.append(found)
-    # each deduction is [term, truth, stamp, the belief it last left as it was]: the
-    # same belief would be left as it is again (a revision or choice reads only what
-    # an event never changes), so it is not tried again
-    for found in derived:
+                lt = lb.creation_time
+                derived.append((found, bt if bt > lt else lt))
+    # the same belief would be left as it is again (a revision or choice reads only
+    # what an event never changes), so it is not tried again
+    tc: Concept
+    for found, made in derived:
         target = found[0]
-        stamp = found[2]
-        tc = mem.conceptualize(target, now)
+        tc = concepts.get(target)
+        if tc is None:
+            tc = mem.conceptualize(target, now)
         old = tc.belief
-        if old is not None and (old is found[3] or old.stamp == stamp):
+        if old is not None and (old is found[3] or old.stamp == found[2]):
             continue
-        e = Event(target, BELIEF, found[1], stamp, ETERNAL, now)
+        e = Event(target, BELIEF, found[1], found[2], ETERNAL, made)
         new, _ = revised_or_chosen(old, e, size, True)
         if new is old:
             found[3] = old
             continue
-        new.creation_time = now
         tc.belief = new
-        if shows(s, 1.0):
+        if show:
             emit(s, "Derived: " + new.line(1.0))
         note_fresh_belief(s, tc)
         on_new_belief(s, tc)
 
 
-def _deduction(
-    b: Event, term: Term, link: Term, lb: Event, least: float, size: int, negated: bool
-) -> list | None:
-    """What the eternal belief ``b`` of ``term`` deduces through ``link`` (believed as
-    ``lb``): the consequence's term, truth and stamp (and a slot for the belief it
-    last left unchanged), a negated consequence ``(! x)``
-    as ``x`` with the negated truth when ``negated``; None if nothing."""
+#: "not yet worked out": a link's consequence for a term not yet unified
+_UNKNOWN = object()
+
+
+def _consequence(term: Term, link: Term) -> Term | None:
+    """The ground consequence of ``link`` for the ground ``term`` as its condition, or
+    None if the condition does not take it or the consequence keeps a variable."""
     cond, concl = link.args
     if cond.op is not None and cond.op != term.op:
         return None
@@ -177,6 +197,16 @@ def _deduction(
     target = apply(concl, bind)
     if target.has_var:
         return None
+    return target
+
+
+def _deduction(
+    b: Event, lb: Event, target: Term, least: float, size: int, negated: bool
+) -> list | None:
+    """What the eternal belief ``b`` deduces as ``target`` through a link believed as
+    ``lb``: the consequence's term, truth and stamp (and a slot for the belief it
+    last left unchanged), a negated consequence ``(! x)`` as ``x`` with the negated
+    truth when ``negated``; None if too weak."""
     t = tf.deduction(lb.truth, b.truth)
     if t.c < least:
         return None
@@ -254,7 +284,9 @@ def strongest_links(
         if link.op == "==>" and lc is not None and lc.belief is not None:
             current.append((link, lc.belief))
     cached = s.strongest
+    shapes: dict = {}
     if cached is not None:
+        shapes = cached[3]
         seen = cached[0]
         if len(seen) == len(current):
             same = True
@@ -274,10 +306,21 @@ def strongest_links(
     for entries in tables.values():
         entries.sort(key=lambda x: -expectation(x[1].truth))
         links += entries[:k]
+    # (a link's shape is its condition's: kept for the links still in use, as most are
+    # at the next rebuild)
     by_shape: dict[object, list[int]] = {}
+    kept: dict = {}
     for i, (link, _) in enumerate(links):
-        by_shape.setdefault(_condition_shape(link.args[0]), []).append(i)
-    s.strongest = (current, links, by_shape)
+        key = shapes.get(link, _UNKNOWN)
+        if key is _UNKNOWN:
+            key = _condition_shape(link.args[0])
+        kept[link] = key
+        d = by_shape.get(key)
+        if d is None:
+            by_shape[key] = [i]
+        else:
+            d.append(i)
+    s.strongest = (current, links, by_shape, kept)
     return links, by_shape
 
 
