@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING
 
 from . import truth as tf
 from .event import BELIEF, ETERNAL, Event, Implication, revised_or_chosen
+from .memory import Concept
 from .stamp import merge
 from .state import Reasoner, emit, shows
 from .terms import NEGATION, Term
@@ -21,7 +22,6 @@ from .truth import Truth, expectation
 from .unify import apply, unify
 
 if TYPE_CHECKING:
-    from .memory import Concept
     from .table import Table
 
 
@@ -29,26 +29,48 @@ def note_fresh_belief(s: Reasoner, c: Concept) -> None:
     """``c``'s eternal belief was just made or revised (newest last).
 
     Each fresh concept keeps an entry ``[order, belief, min_confidence, stamp_size,
-    negated, shapes, deductions, consequences]``: when it was noted, what its belief
-    deduced through each link (for the belief and parameters named), and each link's
-    consequence for its term; it is filed under the
-    shapes of conditions its term may instantiate (``s.fresh_shapes``), so that a
-    cycle meets only the fresh beliefs some link's condition may take."""
-    fresh = s.fresh_beliefs
+    negated, groups, deductions, consequences]``: when it was noted, the groups it is
+    filed in, what its belief deduced through each link (for the belief and parameters
+    named), and each link's consequence for its term. It is filed under the shapes of
+    conditions its term may instantiate (``s.fresh_shapes``: shape -> group of
+    concepts), so that a cycle meets only the fresh beliefs some link's condition may
+    take; the entry keeps the groups themselves, so that leaving them hashes no shape."""
+    fresh: dict = s.fresh_beliefs
+    filed: dict
+    d: dict
     entry = fresh.pop(c, None)
     if entry is None:
-        shapes = () if c.term.has_var else _term_shapes(c.term)
-        entry = [0, None, 0.0, 0, False, shapes, None, {}]
-        filed = s.fresh_shapes
-        for key in shapes:
-            d = filed.get(key)
-            if d is None:
-                filed[key] = {c: None}
-            else:
+        groups: list = []
+        if not c.term.has_var:
+            filed = s.fresh_shapes
+            for key in _term_shapes(c.term):
+                found = filed.get(key)
+                if found is None:
+                    if len(filed) >= s.fresh_swept + s.fresh_swept + _SWEEP_AT:
+                        filed = _sweep(s)
+                    d = {}
+                    filed[key] = d
+                else:
+                    d = found
                 d[c] = None
+                groups.append(d)
+        entry = [0, None, 0.0, 0, False, groups, None, None]
     s.fresh_order += 1
     entry[0] = s.fresh_order
     fresh[c] = entry
+
+
+#: shapes filed before the groups left empty are swept away
+_SWEEP_AT = 4096
+
+
+def _sweep(s: Reasoner) -> dict:
+    """Drop the empty groups of ``s.fresh_shapes`` (a concept leaving its groups leaves
+    them in place, empty or not; no entry refers to an empty one). Swept when the
+    groups have doubled since the last sweep, so each group costs one look."""
+    s.fresh_shapes = {key: d for key, d in s.fresh_shapes.items() if d}
+    s.fresh_swept = len(s.fresh_shapes)
+    return s.fresh_shapes
 
 
 def drop_fresh(s: Reasoner, c: Concept) -> None:
@@ -56,13 +78,9 @@ def drop_fresh(s: Reasoner, c: Concept) -> None:
     entry = s.fresh_beliefs.pop(c, None)
     if entry is None:
         return
-    filed = s.fresh_shapes
-    for key in entry[5]:
-        d = filed.get(key)
-        if d is not None:
-            d.pop(c, None)
-            if not d:
-                del filed[key]
+    d: dict
+    for d in entry[5]:
+        d.pop(c, None)
 
 
 def forward_eternal(s: Reasoner, on_new_belief: Callable[[Reasoner, Concept], None]) -> None:
@@ -75,18 +93,25 @@ def forward_eternal(s: Reasoner, on_new_belief: Callable[[Reasoner, Concept], No
     The deduction is as new as the newer of its premises (ONA's DERIVATION_STAMP takes
     the later creation time of the two, Decision_Anticipate keeps it), so a consequence
     stays fresh only while what it came from is."""
+    c: Concept
     cfg = s.config
     now = s.time
     mem = s.memory
     concepts: dict = mem.concepts
     fresh = s.fresh_beliefs
     oldest = now - cfg.belief_last_used_tolerance
-    while fresh:
-        c = next(iter(fresh))
+    # the stale ones at the front (older than the tolerance, gone, or evicted) leave;
+    # one walk finds them all (a dict whose front entries were deleted is walked past
+    # their slots by every new iterator, so one iterator per dropped concept cost a
+    # walk of the whole table each)
+    stale: list = []
+    for c in fresh:
         b = c.belief
-        if b is not None and b.creation_time >= oldest and mem.find(c.term) is c:
+        if b is not None and b.creation_time >= oldest and concepts.get(c.term) is c:
             break
-        drop_fresh(s, c)  # (stale: older than the tolerance, gone, or evicted)
+        stale.append(c)
+    for c in stale:
+        drop_fresh(s, c)
     if not fresh:
         return
     links, by_shape = strongest_links(s)
@@ -102,7 +127,7 @@ def forward_eternal(s: Reasoner, on_new_belief: Callable[[Reasoner, Concept], No
     met: dict[Concept, list[int]] = {}
     for key, positions in by_shape.items():
         concepts_here = filed.get(key)
-        if concepts_here is None:
+        if not concepts_here:
             continue
         for c in concepts_here:
             m = met.get(c)
@@ -140,7 +165,7 @@ def forward_eternal(s: Reasoner, on_new_belief: Callable[[Reasoner, Concept], No
             entry[4] = negated
             entry[6] = {}
         known: dict = entry[6]
-        targets: dict = entry[7]
+        targets = entry[7]
         positions = met[c]
         positions.sort()
         for i in positions:
@@ -149,6 +174,8 @@ def forward_eternal(s: Reasoner, on_new_belief: Callable[[Reasoner, Concept], No
             if hit is not None and hit[0] is lb:
                 found = hit[1]
             else:
+                if targets is None:
+                    targets = entry[7] = {}
                 target = targets.get(link, _UNKNOWN)
                 if target is _UNKNOWN:
                     target = _consequence(term, link)
@@ -277,11 +304,18 @@ def strongest_links(
     last time (a belief is never changed in place, only replaced), so that a cycle
     costs a look at each link rather than a sort of them all and a unification of each
     fresh belief with each link."""
-    mem = s.memory
+    concepts: dict = s.memory.concepts
     current: list[tuple[Term, Event]] = []
+    link: Term
+    lc: Concept
     for link in declarative_links(s):
-        lc = mem.find(link)
-        if link.op == "==>" and lc is not None and lc.belief is not None:
+        if link.op != "==>":
+            continue
+        found = concepts.get(link)
+        if found is None:
+            continue
+        lc = found
+        if lc.belief is not None:
             current.append((link, lc.belief))
     cached = s.strongest
     shapes: dict = {}
@@ -303,8 +337,12 @@ def strongest_links(
         tables.setdefault(entry[0].args[1], []).append(entry)
     links: list[tuple[Term, Event]] = []
     k = s.config.top_k_declarative_implications
+    # (each table by expectation, strongest first, equal ones in their order: a sort
+    # of (minus expectation, place) pairs, without a key function called per link)
     for entries in tables.values():
-        entries.sort(key=lambda x: -expectation(x[1].truth))
+        if len(entries) > 1:
+            ranked = sorted([(-expectation(x[1].truth), i) for i, x in enumerate(entries)])
+            entries = [entries[i] for _, i in ranked]
         links += entries[:k]
     # (a link's shape is its condition's: kept for the links still in use, as most are
     # at the next rebuild)
