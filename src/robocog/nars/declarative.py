@@ -273,7 +273,7 @@ def _condition_shape(cond: Term) -> object:
 def _term_shapes(t: Term) -> list[object]:
     """The keys of every condition that may unify with the ground term ``t`` (unify
     is positional: same connector, arity, and each component the same ground term, a
-    variable, or a compound of the same connector and arity)."""
+    variable, or a compound of the same connector and arity), each once."""
     keys: list[object] = [None, t]
     if t.op is None:
         return keys
@@ -287,7 +287,9 @@ def _term_shapes(t: Term) -> list[object]:
         if a.op is not None:
             options.append((a.op, len(a.args)))
         combos = [c + (o,) for c in combos for o in options]
-    for combo in combos:
+    # (the first combination, every component itself, is no condition's key: a
+    # condition whose components are all ground is ground, and keyed by itself)
+    for combo in combos[1:]:
         keys.append((t.op, combo))
     return keys
 
