@@ -275,22 +275,46 @@ def _term_shapes(t: Term) -> list[object]:
     is positional: same connector, arity, and each component the same ground term, a
     variable, or a compound of the same connector and arity), each once."""
     keys: list[object] = [None, t]
-    if t.op is None:
+    op = t.op
+    if op is None:
         return keys
     args = t.args
-    if len(args) > _WIDEST:
-        keys.append((t.op, len(args)))
+    n = len(args)
+    if n > _WIDEST:
+        keys.append((op, n))
         return keys
-    combos: list[tuple[object, ...]] = [()]
+    # what each component may be in a condition: itself, any term, or (for a compound)
+    # a compound of its connector and arity
+    options: list[tuple] = []
     for a in args:
-        options: list[object] = [a, None]
-        if a.op is not None:
-            options.append((a.op, len(a.args)))
-        combos = [c + (o,) for c in combos for o in options]
-    # (the first combination, every component itself, is no condition's key: a
-    # condition whose components are all ground is ground, and keyed by itself)
-    for combo in combos[1:]:
-        keys.append((t.op, combo))
+        if a.op is None:
+            options.append((a, None))
+        else:
+            options.append((a, None, (a.op, len(a.args))))
+    # every combination but the first (every component itself: a condition whose
+    # components are all ground is ground, and keyed by itself), written out for the
+    # arities indexed, in the order of the product
+    if n == 1:
+        for x in options[0][1:]:
+            keys.append((op, (x,)))
+    elif n == 2:
+        first = options[0][0]
+        second = options[1][0]
+        for x in options[0]:
+            for y in options[1]:
+                if x is first and y is second:
+                    continue
+                keys.append((op, (x, y)))
+    elif n == 3:
+        first = options[0][0]
+        second = options[1][0]
+        third = options[2][0]
+        for x in options[0]:
+            for y in options[1]:
+                for z in options[2]:
+                    if x is first and y is second and z is third:
+                        continue
+                    keys.append((op, (x, y, z)))
     return keys
 
 
