@@ -104,10 +104,14 @@ def _plain_pass(s: NAR) -> None:
             t = tf.deduction(lb.truth, b.truth)
             if t.c < cfg.min_confidence:
                 continue
-            derived.append(Event(target, BELIEF, t, merge(b.stamp, lb.stamp, 10), ETERNAL, now))
+            # (as new as the newer premise: ONA's DERIVATION_STAMP)
+            made = max(b.creation_time, lb.creation_time)
+            derived.append(Event(target, BELIEF, t, merge(b.stamp, lb.stamp, 10), ETERNAL, made))
     for e in derived:
         if e.term.op == NEGATION and cfg.anticipation_negated_outcomes:
-            e = Event(e.term.args[0], BELIEF, tf.negation(e.truth), e.stamp, ETERNAL, now)
+            e = Event(
+                e.term.args[0], BELIEF, tf.negation(e.truth), e.stamp, ETERNAL, e.creation_time
+            )
         tc = mem.conceptualize(e.term, now)
         old = tc.belief
         if old is not None and old.stamp == e.stamp:
@@ -115,7 +119,6 @@ def _plain_pass(s: NAR) -> None:
         new, _ = revised_or_chosen(old, e, cfg.stamp_size)
         if new is old:
             continue
-        new.creation_time = now
         tc.belief = new
         s.output(f"Derived: {new.line(1.0)}")
         fresh.pop(tc, None)

@@ -59,9 +59,10 @@ def cycle(s: Reasoner) -> None:
         semantic_inference(s, popped[1], popped[0])
     # 6. Forget a little: the cycling events' priorities decay (Cycle_RelativeForgetting;
     #    a concept's priority decays lazily, see ``Concept.priority_at``)
-    s.memory.belief_events.decay(s.config.event_durability)
+    durability = s.config.event_durability  # (read once for the queues of every layer)
+    s.memory.belief_events.decay(durability)
     for q in s.goal_layers:
-        q.decay(s.config.event_durability)
+        q.decay(durability)
     # 7. The clock advances
     s.time += 1
 

@@ -415,6 +415,10 @@ def _outcomes_acceptable(s: Reasoner, op: Term, opi: int) -> bool:
     cfg = s.config
     now = s.time
     mem = s.memory
+    # (the parameters read once, not for every goal and implication met)
+    age_max = cfg.neg_goal_age_max
+    distance = cfg.event_belief_distance
+    size = cfg.stamp_size
     acc: Event | None = None
     # (declared for the compiled engine: concepts, links and events read as structs)
     gc: Concept
@@ -424,7 +428,7 @@ def _outcomes_acceptable(s: Reasoner, op: Term, opi: int) -> bool:
     spike: Event | None
     for gc in s.recent_goal_concepts:
         gs = gc.goal_spike
-        if gs is None or now - gs.occurrence_time >= cfg.neg_goal_age_max:
+        if gs is None or now - gs.occurrence_time >= age_max:
             continue
         tables = gc.precondition_beliefs
         if tables is None or opi >= len(tables):
@@ -432,16 +436,16 @@ def _outcomes_acceptable(s: Reasoner, op: Term, opi: int) -> bool:
         for imp in tables[opi].items:
             prec = mem.find(imp.source) if imp.source is not None else None
             spike = prec.belief_spike if prec is not None else None
-            if spike is None or now - spike.occurrence_time >= cfg.event_belief_distance:
+            if spike is None or now - spike.occurrence_time >= distance:
                 continue
             pre, op2 = split_precondition(imp.term.args[0])
             if op2 is not op:
                 continue
             ctx = tf.goal_deduction(gs.truth, imp.truth)
             local = tf.goal_deduction(ctx, tf.projection(spike.truth, spike.occurrence_time, now))
-            stamp = merge(spike.stamp, merge(gs.stamp, imp.stamp, cfg.stamp_size), cfg.stamp_size)
+            stamp = merge(spike.stamp, merge(gs.stamp, imp.stamp, size), size)
             ev = Event(pre, GOAL, local, stamp, now, now)
-            acc, _ = revised_or_chosen(acc, ev, cfg.stamp_size)
+            acc, _ = revised_or_chosen(acc, ev, size)
     return acc is None or expectation(acc.truth) >= 0.5
 
 
@@ -449,7 +453,7 @@ def _subgoals(s: Reasoner, g: Event, c: Concept, priority: float, layer: int) ->
     """Pass the goal on: each concept it matches revises its goal event, and every
     implication into it derives its precondition (without the operation) as a
     subgoal one layer down, goal ⊗ implication, priority ``priority`` × E."""
-    cfg = s.config
+    size = s.config.stamp_size  # (read once for every implication below)
     now = s.time
     # (declared for the compiled engine: concepts, links and events read as structs)
     post: Concept
@@ -461,7 +465,7 @@ def _subgoals(s: Reasoner, g: Event, c: Concept, priority: float, layer: int) ->
         ge = g
         if bind:
             ge = Event(apply(g.term, bind), GOAL, g.truth, g.stamp, g.occurrence_time, now)
-        gs, _ = revised_or_chosen(post.goal_spike, ge, cfg.stamp_size)
+        gs, _ = revised_or_chosen(post.goal_spike, ge, size)
         post.goal_spike = gs
         tables = post.precondition_beliefs
         if tables is None:
@@ -474,7 +478,7 @@ def _subgoals(s: Reasoner, g: Event, c: Concept, priority: float, layer: int) ->
                 subj = apply(imp.term.args[0], b2) if b2 else imp.term.args[0]
                 pre, _op = split_precondition(subj)
                 t = tf.goal_deduction(gs.truth, imp.truth)
-                sub = Event(pre, GOAL, t, merge(gs.stamp, imp.stamp, cfg.stamp_size), now, now)
+                sub = Event(pre, GOAL, t, merge(gs.stamp, imp.stamp, size), now, now)
                 _derive_goal(s, sub, priority * expectation(t), layer)
 
 

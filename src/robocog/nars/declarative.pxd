@@ -9,3 +9,4 @@ from robocog.nars.stamp cimport merge
 from robocog.nars.event cimport Event, Implication, revised_or_chosen
 from robocog.nars.unify cimport apply, unify
 from robocog.nars.state cimport Reasoner, emit, shows
+from robocog.nars.memory cimport Concept

@@ -69,5 +69,5 @@ cpdef _anticipate(Reasoner s, Event e, list touched)
 cpdef Event source_spike(Reasoner s, Term source, dict groups=*)
 # the times of the index scans as C integers: every input event's processing compares
 # them against hundreds of index entries
-@cython.locals(now=long, occ=long, window=long, tdiff=long, e_is_op=bint, concurrent=bint)
+@cython.locals(now=long, occ=long, window=long, tdiff=long, e_is_op=bint, concurrent=bint, least=double, longest=long, size=long)
 cpdef void process_belief_event(Reasoner s, Event e, double priority)

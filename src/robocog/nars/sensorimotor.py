@@ -302,6 +302,10 @@ def process_belief_event(s: Reasoner, e: Event, priority: float) -> None:
     tdiff = cfg.max_sequence_timediff
     reach: float = tdiff
     concurrent = cfg.allow_concurrent_implications
+    # (read once for the recent events below, not for each)
+    least = cfg.min_confidence
+    longest = cfg.max_sequence_len
+    size = cfg.stamp_size
     for c in () if e_is_op else list(s.time_index):  # an operation pairs with none
         b = c.belief_spike
         if (
@@ -318,15 +322,15 @@ def process_belief_event(s: Reasoner, e: Event, priority: float) -> None:
         ):
             continue
         t = tf.intersection(tf.projection(b.truth, b.occurrence_time, occ), e.truth)
-        if t.c < cfg.min_confidence:
+        if t.c < least:
             continue
         if c.term is not e.term:
             _induce(s, b, None, e, priority)
             if b.occurrence_time == occ:
                 _induce(s, e, None, b, priority)
-        if _sequence_length(c.term) + 1 <= cfg.max_sequence_len and not _has_op(c.term):
+        if _sequence_length(c.term) + 1 <= longest and not _has_op(c.term):
             seq = compound(SEQUENCE, (c.term, e.term))
-            stamp = merge(b.stamp, e.stamp, cfg.stamp_size)
+            stamp = merge(b.stamp, e.stamp, size)
             _activate_sequence(s, Event(seq, BELIEF, t, stamp, occ, now))
     if priority >= 1.0:  # fresh input: assume failure of what it promises
         anticipate(s, e)

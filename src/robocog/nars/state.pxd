@@ -31,6 +31,7 @@ cdef class Reasoner:
     cdef public dict fresh_beliefs
     cdef public dict fresh_shapes
     cdef public long fresh_order
+    cdef public long fresh_swept
     cdef public object strongest
     cdef public list goal_layers
     cdef public dict recent_goal_concepts

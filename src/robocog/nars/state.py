@@ -75,6 +75,7 @@ class Reasoner:
         "fresh_beliefs",
         "fresh_shapes",
         "fresh_order",
+        "fresh_swept",
         "strongest",
         "goal_layers",
         "recent_goal_concepts",
@@ -131,6 +132,8 @@ class Reasoner:
         #: and a count of the notes so far that orders them (``declarative``)
         self.fresh_shapes: dict[object, dict[Concept, None]]
         self.fresh_order: int
+        #: how many shapes were filed after their last sweep (``declarative._sweep``)
+        self.fresh_swept: int
         #: (a cache) the ``==>`` beliefs that pass last used, its links in order and
         #: their index by condition (``declarative.strongest_links``), or None
         self.strongest: tuple | None
@@ -191,6 +194,7 @@ def clear_caches(s: Reasoner) -> None:
     s.fresh_beliefs = {}
     s.fresh_shapes = {}
     s.fresh_order = 0
+    s.fresh_swept = 0
     s.strongest = None
 
 
