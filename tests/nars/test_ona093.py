@@ -239,3 +239,32 @@ def test_a_conditional_deduction_feeds_the_declarative_pass() -> None:
         "Truth: frequency=1.000000, confidence=0.729000"
     ]
     assert answers(run(lines, "0.9.2")) == ["Answer: None."]
+
+
+def test_two_beliefs_meet_a_conjunctive_condition_through_their_conjunction() -> None:
+    # 0.9.3's rule table concludes ``(A && B)`` from any two premises: the conjunction
+    # of two relations is kept as a belief (not cycled as an event) and, fresh, meets
+    # the transitive rule's condition in the declarative pass. ONA 0.9.3 answers
+    # ``Answer: <(C1 * B1) --> same>. creationTime=4 Stamp=[4,2,3,1,1] Truth:
+    # frequency=1.000000, confidence=0.590490`` (its pass meets the pairs in another
+    # order, so its stamp and time differ); without the row the best is weaker
+    lines = [
+        "<<($1 * $2) --> same> ==> <($2 * $1) --> same>>.",
+        "<(<($1 * #1) --> same> && <(#1 * $2) --> same>) ==> <($1 * $2) --> same>>.",
+        "<(A1 * B1) --> same>.",
+        "<(A1 * C1) --> same>.",
+        "10",
+        "<(C1 * B1) --> same>?",
+    ]
+    nar = NAR(ona="0.9.3")
+    out = run_lines(nar, lines)
+    (answer,) = answers(out)
+    assert answer.startswith("Answer: <(C1 * B1) --> same>.")
+    assert answer.endswith("Truth: frequency=1.000000, confidence=0.590490")
+    # (B1 * A1) at 0.81 (by symmetry) with (A1 * C1) at 0.9: the condition with #1 = A1
+    kept = nar.memory.find(parse_term("(<(B1 * A1) --> same> && <(A1 * C1) --> same>)"))
+    assert kept is not None and kept.belief is not None
+    assert round(kept.belief.truth.c, 6) == 0.729
+    assert not any(line.startswith(("Derived: (", "Selected: (")) for line in out)
+    (weaker,) = answers(run(lines, plain_conjunctions=False))
+    assert weaker.endswith("Truth: frequency=1.000000, confidence=0.379468")

@@ -98,6 +98,13 @@ class Config:
     print_predictions: bool = True
     #: ``<a =/> b>`` for simultaneous ``a`` and ``b`` (dt 0) may be induced
     allow_concurrent_implications: bool = True
+    #: semantic inference concludes the conjunction ``(A && B)`` of its two premises
+    #: (ONA 0.9.3's rule table; the belief of a concept, the stepping stone by which a
+    #: ``==>`` with a conjunction for its condition meets two beliefs)
+    plain_conjunctions: bool = False
+    #: derived conjunctions (not input ones) are cycled as events too (ONA 0.9.3: kept
+    #: as beliefs only)
+    derived_conjunction_events: bool = True
     #: derived beliefs other than temporal implications only enter concepts that exist
     #: (the shell's ``*restrictedconceptcreation``)
     restricted_concept_creation: bool = False
@@ -149,6 +156,8 @@ ONA_VERSIONS: dict[str, dict[str, object]] = {
         "anticipation_projects_precondition": False,
         "anticipation_negated_outcomes": True,
         "print_predictions": False,
+        "plain_conjunctions": True,
+        "derived_conjunction_events": False,
     },
 }
 
@@ -163,6 +172,8 @@ NEWER_PARAMETERS = frozenset(
         "print_predictions",
         "allow_concurrent_implications",
         "restricted_concept_creation",
+        "plain_conjunctions",
+        "derived_conjunction_events",
     }
 )
 

@@ -71,7 +71,7 @@ def semantic_inference(s: Reasoner, e: Event, priority: float) -> None:
     recent event) of each related concept above the adaptive priority threshold, at
     most ``belief_concept_match_target`` of them; conclusions go to ``memorize``."""
     cfg = s.config
-    table = rule_table(cfg.semantic_inference_nal_level)
+    table = rule_table(cfg.semantic_inference_nal_level, cfg.plain_conjunctions)
     now = s.time
     # a stamp counting one input twice refuses every conclusion drawn with it, so
     # such a premise (pair) is skipped whole rather than conclusion by conclusion

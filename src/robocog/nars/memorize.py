@@ -77,9 +77,14 @@ def _store(
     op = e.term.op
     # (connectors by identity: see ``terms.CONNECTORS``)
     if op is not TEMPORAL_IMPLICATION and (
-        is_input or (op is not IMPLICATION and op is not EQUIVALENCE)
+        is_input
+        or (
+            op is not IMPLICATION
+            and op is not EQUIVALENCE
+            and (op is not CONJUNCTION or s.config.derived_conjunction_events)
+        )
     ):
-        added = _queue(s, e, priority)  # only input implications become events
+        added = _queue(s, e, priority)  # only input implications (and conjunctions) cycle
     if added and not is_input:
         s.stats["derived"] += 1
         if shows(s, priority):

@@ -47,7 +47,7 @@ class NAR(Reasoner):
         # the rule table, shared by the process's reasoners, is built here if it is not
         # yet: building it takes tens of milliseconds, which would stall a robot's first
         # reasoning cycle
-        rule_table(self.config.semantic_inference_nal_level)
+        rule_table(self.config.semantic_inference_nal_level, self.config.plain_conjunctions)
 
     # ------------------------------------------------------------------ state
     def reset(self) -> None:
