@@ -54,6 +54,11 @@ class Config:
     compositions_need_concept: bool = False
     # temporal
     max_sequence_len: int = 2
+    #: the most operations a decision runs (ONA's MAX_COMPOUND_OP_LEN, 1 in 0.9.2 and
+    #: 0.9.3): an implication whose precondition ends in more, ``((a &/ ^x) &/ ^y) =/>
+    #: g``, is not decided on (ONA stops with an assertion there); with more room its
+    #: operations run in turn. Sequences of operations are not learned
+    max_compound_op_len: int = 1
     precondition_consequence_distance: int = 20
     max_sequence_timediff: int = 20
     # space
@@ -174,6 +179,7 @@ NEWER_PARAMETERS = frozenset(
         "restricted_concept_creation",
         "plain_conjunctions",
         "derived_conjunction_events",
+        "max_compound_op_len",
     }
 )
 
@@ -199,6 +205,7 @@ RANGES: dict[str, tuple[float, float]] = {
     "event_belief_distance": (0, MAX_TIME),
     "similarity_distance": (0.0, 1e6),
     "max_sequence_len": (1, 16),
+    "max_compound_op_len": (1, 16),
     "precondition_consequence_distance": (0, MAX_TIME),
     "max_sequence_timediff": (0, MAX_TIME),
     "concepts_max": (1, 100_000_000),

@@ -51,8 +51,10 @@ def cycle(s: Reasoner) -> None:
     d = decision.process_goals(s)
     if d is not None:
         executed = decision.execute(s, d)
-        memorize.add_event(s, executed, 1.0, is_input=True)
-        cycles(s, 1)
+        while executed is not None:  # (the operations of a compound one in turn)
+            memorize.add_event(s, executed, 1.0, is_input=True)
+            cycles(s, 1)
+            executed = decision.execute_next(s, d)
         decision.assume_untried_failure(s, d)
     # 5. Infer with the selected event and the related concepts' beliefs (Cycle_Inference)
     if popped is not None:

@@ -39,6 +39,9 @@ class NAR(Reasoner):
     #: asked between slices of a cycles line; true ends the line early (the shell sets
     #: it to stop on SIGINT and SIGTERM, the inspector's console to its stop command)
     stop_requested: Callable[[], bool] | None = None
+    #: the next line of input, None at its end: where an operation marked with
+    #: ``*setopstdin`` reads its result (the shell sets it to the rest of its input)
+    read_input: Callable[[], str | None] | None = None
 
     def __init__(self, seed: int = 666, ona: str = "0.9.2", **config_overrides: object) -> None:
         # ``ona``: whose behaviour to follow, ONA 0.9.2's (the papers') or 0.9.3's
