@@ -14,6 +14,7 @@ from robocog.nars import NAR, memfile
 from robocog.nars.config import NEWER_PARAMETERS, ONA_VERSIONS, Config
 from robocog.nars.goalreasoning import inheritance_subgoal
 from robocog.nars.narsese import parse_term
+from robocog.nars.terms import F_IMAGE
 from tests.nars.test_nar import run_lines
 
 
@@ -268,3 +269,20 @@ def test_two_beliefs_meet_a_conjunctive_condition_through_their_conjunction() ->
     assert not any(line.startswith(("Derived: (", "Selected: (")) for line in out)
     (weaker,) = answers(run(lines, plain_conjunctions=False))
     assert weaker.endswith("Truth: frequency=1.000000, confidence=0.379468")
+
+
+def test_a_conjunction_with_an_image_needs_its_concept() -> None:
+    # ONA 0.9.3's memory lists ``(<c --> r> && <(a * b) --> r>)`` for these lines but
+    # no conjunction with the image ``(r /1 b)`` in it: a derived conjunction or ``==>``
+    # with an image enters only a concept that exists
+    lines = ["<a --> (r /1 b)>.", "<c --> r>.", "5"]
+    with_image = parse_term("(<c --> r> && <a --> (r /1 b)>)")
+    plain = parse_term("(<c --> r> && <(a * b) --> r>)")
+    nar = NAR(ona="0.9.3")
+    run_lines(nar, lines)
+    assert nar.memory.find(plain) is not None
+    assert nar.memory.find(with_image) is None
+    assert not any(c.term.op == "==>" and c.term.flags & F_IMAGE for c in nar.memory)
+    nar = NAR(ona="0.9.3", image_compounds_need_concept=False)
+    run_lines(nar, lines)
+    assert nar.memory.find(with_image) is not None

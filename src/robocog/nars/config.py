@@ -110,6 +110,9 @@ class Config:
     #: derived conjunctions (not input ones) are cycled as events too (ONA 0.9.3: kept
     #: as beliefs only)
     derived_conjunction_events: bool = True
+    #: a derived conjunction or ``==>`` with an image anywhere in it enters only a
+    #: concept that exists (0.9.3's Memory_AddEvent; 0.9.2 makes the concept)
+    image_compounds_need_concept: bool = False
     #: derived beliefs other than temporal implications only enter concepts that exist
     #: (the shell's ``*restrictedconceptcreation``)
     restricted_concept_creation: bool = False
@@ -163,6 +166,7 @@ ONA_VERSIONS: dict[str, dict[str, object]] = {
         "print_predictions": False,
         "plain_conjunctions": True,
         "derived_conjunction_events": False,
+        "image_compounds_need_concept": True,
     },
 }
 
@@ -180,6 +184,7 @@ NEWER_PARAMETERS = frozenset(
         "plain_conjunctions",
         "derived_conjunction_events",
         "max_compound_op_len",
+        "image_compounds_need_concept",
     }
 )
 
