@@ -113,6 +113,12 @@ class Config:
     #: a derived conjunction or ``==>`` with an image anywhere in it enters only a
     #: concept that exists (0.9.3's Memory_AddEvent; 0.9.2 makes the concept)
     image_compounds_need_concept: bool = False
+    #: a ``==>`` or ``<=>`` belief that only derivations made is a second premise of
+    #: semantic inference (ONA 0.9.3, ALLOW_IMPLICATION_EVENTS 1, makes no concept for
+    #: it: a derived ``==>`` lives in its consequence's links, which the declarative
+    #: pass reads; an implication concept counts as input by the uses an eternal input
+    #: adds, ``eternal_input_usage_boost``)
+    derived_links_are_premises: bool = True
     #: derived beliefs other than temporal implications only enter concepts that exist
     #: (the shell's ``*restrictedconceptcreation``)
     restricted_concept_creation: bool = False
@@ -167,6 +173,7 @@ ONA_VERSIONS: dict[str, dict[str, object]] = {
         "plain_conjunctions": True,
         "derived_conjunction_events": False,
         "image_compounds_need_concept": True,
+        "derived_links_are_premises": False,
     },
 }
 
@@ -185,6 +192,7 @@ NEWER_PARAMETERS = frozenset(
         "derived_conjunction_events",
         "max_compound_op_len",
         "image_compounds_need_concept",
+        "derived_links_are_premises",
     }
 )
 

@@ -91,7 +91,12 @@ def semantic_inference(s: Reasoner, e: Event, priority: float) -> None:
         ),
     )
     chosen: list[tuple[Concept, float]] = s.memory.related_above(
-        e.term, now, cfg.concept_durability, s.concept_threshold, cfg.belief_concept_match_target
+        e.term,
+        now,
+        cfg.concept_durability,
+        s.concept_threshold,
+        cfg.belief_concept_match_target,
+        0 if cfg.derived_links_are_premises else cfg.eternal_input_usage_boost,
     )
     s.matched_total += len(chosen)
     spikes_alone = cfg.event_pairs_with_events
