@@ -556,8 +556,9 @@ def _run(s: Reasoner, d: Decision, op: Term) -> Event | None:
     the second component of its arguments ``({SELF} * X)``, when it has variables, is
     unified with: the bindings go into its event and into the operations after it
     (ONA's feedback substitution, which ``*setopstdin`` reads from the input). An
-    operation that returns False failed. None (no event, and the rest of a compound
-    operation is not run) for a failure or a result that does not unify."""
+    operation of a compound one that returns False failed. None (no event, and the
+    rest of a compound operation is not run) for a failure or a result that does not
+    unify."""
     if op.op is None:
         name, arg, shown = op.name, None, ""
     else:
@@ -572,7 +573,7 @@ def _run(s: Reasoner, d: Decision, op: Term) -> Event | None:
         cb(name, arg)
     if d.before:
         d.done += 1
-    if result is False:  # the operation failed (ONA's feedback.failed): no event, no more
+    if result is False and d.before:  # failed (ONA's feedback.failed): no event, no more
         d.done = len(d.before) + 1
         return None
     if (

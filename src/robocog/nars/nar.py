@@ -89,7 +89,12 @@ class NAR(Reasoner):
         self.execution_cbs.append(cb)
 
     def register_operation(self, name: str, fn: Callable[[Term | None], object]) -> None:
-        """Make ``name`` (e.g. ``^pick``) executable, calling ``fn(argument)`` when it is."""
+        """Make ``name`` (e.g. ``^pick``) executable, calling ``fn(argument)`` when it is.
+
+        What ``fn`` returns is ignored, except that a term is the operation's result
+        where its argument ``({SELF} * X)`` has variables (``X`` is unified with it, as
+        ONA's ``*setopstdin`` operations do), and that False, in a compound operation,
+        means it failed and the rest is not run."""
         if not name.startswith("^"):
             raise ValueError(f"operation names start with '^': {name!r}")
         if name not in self.op_names:
