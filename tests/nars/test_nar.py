@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-from robocog.nars import NAR, NarseseError
+from robocog.nars import NAR, NarseseError, parse_term
 
 EXAMPLES = Path(__file__).resolve().parents[3] / "shared" / "nal" / "ona-examples"
 
@@ -315,3 +315,34 @@ def test_a_reasoner_at_the_end_of_its_clock_refuses_sentences_from_text_and_from
         with pytest.raises(NarseseError, match="reached"):
             give()
     assert nar.time == MAX_TIME and nar.stats["inputs"] == 0
+
+
+def test_a_compound_operation_runs_its_operations_in_turn() -> None:
+    # ``((a &/ ^x) &/ ^y) =/> g``: a decision on ``a`` runs ^x, then ^y, each fed back
+    # as an input event with a cycle between them; ^x's result binds ^y's argument
+    lines = [
+        "*motorbabbling=false",
+        "<((a &/ <({SELF} * ($1 * #1)) --> ^locate>) &/ <({SELF} * #1) --> ^go>)"
+        " =/> <$1 --> [held]>>.",
+        "a. :|:",
+        "<cup --> [held]>! :|:",
+    ]
+    # ONA's MAX_COMPOUND_OP_LEN 1 (both versions): such an implication is not decided on
+    assert not any("executed" in line for line in run_lines(NAR(), lines))
+    nar = NAR(max_compound_op_len=2)
+    ran: list[str] = []
+
+    def locate(arg: object) -> object:
+        ran.append(str(arg))
+        return parse_term("(cup * shelf)")
+
+    nar.register_operation("^locate", locate)
+    nar.register_operation("^go", lambda arg: ran.append(str(arg)))
+    out = run_lines(nar, lines)
+    assert ran == ["({SELF} * (cup * #1))", "({SELF} * shelf)"]
+    assert "^go executed with args ({SELF} * shelf)" in out
+    fed = [line.split(" occurrenceTime=")[0] for line in out if line.startswith("Input: <({")]
+    assert fed == [
+        "Input: <({SELF} * (cup * shelf)) --> ^locate>. :|:",
+        "Input: <({SELF} * shelf) --> ^go>. :|:",
+    ]

@@ -14,6 +14,7 @@ from robocog.nars import NAR, memfile
 from robocog.nars.config import NEWER_PARAMETERS, ONA_VERSIONS, Config
 from robocog.nars.goalreasoning import inheritance_subgoal
 from robocog.nars.narsese import parse_term
+from robocog.nars.terms import F_IMAGE
 from tests.nars.test_nar import run_lines
 
 
@@ -239,3 +240,80 @@ def test_a_conditional_deduction_feeds_the_declarative_pass() -> None:
         "Truth: frequency=1.000000, confidence=0.729000"
     ]
     assert answers(run(lines, "0.9.2")) == ["Answer: None."]
+
+
+def test_two_beliefs_meet_a_conjunctive_condition_through_their_conjunction() -> None:
+    # 0.9.3's rule table concludes ``(A && B)`` from any two premises: the conjunction
+    # of two relations is kept as a belief (not cycled as an event) and, fresh, meets
+    # the transitive rule's condition in the declarative pass. ONA 0.9.3 answers
+    # ``Answer: <(C1 * B1) --> same>. creationTime=4 Stamp=[4,2,3,1,1] Truth:
+    # frequency=1.000000, confidence=0.590490`` (its pass meets the pairs in another
+    # order, so its stamp and time differ)
+    lines = [
+        "<<($1 * $2) --> same> ==> <($2 * $1) --> same>>.",
+        "<(<($1 * #1) --> same> && <(#1 * $2) --> same>) ==> <($1 * $2) --> same>>.",
+        "<(A1 * B1) --> same>.",
+        "<(A1 * C1) --> same>.",
+        "10",
+        "<(C1 * B1) --> same>?",
+    ]
+    nar = NAR(ona="0.9.3")
+    out = run_lines(nar, lines)
+    (answer,) = answers(out)
+    assert answer.startswith("Answer: <(C1 * B1) --> same>.")
+    assert answer.endswith("Truth: frequency=1.000000, confidence=0.590490")
+    # (B1 * A1) at 0.81 (by symmetry) with (A1 * C1) at 0.9: the condition with #1 = A1
+    kept = nar.memory.find(parse_term("(<(B1 * A1) --> same> && <(A1 * C1) --> same>)"))
+    assert kept is not None and kept.belief is not None
+    assert round(kept.belief.truth.c, 6) == 0.729
+    assert not any(line.startswith(("Derived: (", "Selected: (")) for line in out)
+    # without the row, nothing in 0.9.3 brings the two relations to the rule in time
+    assert answers(run(lines, plain_conjunctions=False)) == ["Answer: None."]
+
+
+def test_a_conjunction_with_an_image_needs_its_concept() -> None:
+    # ONA 0.9.3's memory lists ``(<c --> r> && <(a * b) --> r>)`` for these lines but
+    # no conjunction with the image ``(r /1 b)`` in it: a derived conjunction or ``==>``
+    # with an image enters only a concept that exists
+    lines = ["<a --> (r /1 b)>.", "<c --> r>.", "5"]
+    with_image = parse_term("(<c --> r> && <a --> (r /1 b)>)")
+    plain = parse_term("(<c --> r> && <(a * b) --> r>)")
+    nar = NAR(ona="0.9.3")
+    run_lines(nar, lines)
+    assert nar.memory.find(plain) is not None
+    assert nar.memory.find(with_image) is None
+    assert not any(c.term.op == "==>" and c.term.flags & F_IMAGE for c in nar.memory)
+    nar = NAR(ona="0.9.3", image_compounds_need_concept=False)
+    run_lines(nar, lines)
+    assert nar.memory.find(with_image) is not None
+
+
+def test_a_derived_implication_is_no_premise_of_semantic_inference() -> None:
+    # ONA 0.9.3 makes no concept for a derived ``==>`` (it lives in its consequence's
+    # links), so Edward's smoking reaches Anna by analogy (Anna and Edward share the
+    # friend Frank) before the friendship rule's ground ``==>`` could detach it. ONA
+    # 0.9.3 answers these two exactly so (creationTime=8 for the first)
+    lines = [
+        "<<$1 --> [smokes]> ==> <$1 --> [cancerous]>>. %0.6%",
+        "<(<#1 --> [smokes]> && <($1 * #1) --> friend>) ==> <$1 --> [smokes]>>.",
+        "<(<#1 --> [smokes]> && <(#1 * $1) --> friend>) ==> <$1 --> [smokes]>>.",
+        "<({Anna} * {Edward}) --> friend>.",
+        "<({Anna} * {Frank}) --> friend>.",
+        "<({Edward} * {Frank}) --> friend>.",
+        "<{Anna} --> [smokes]>.",
+        "<{Edward} --> [smokes]>.",
+        "20",
+        "<{Anna} --> [cancerous]>?",
+        "<{Anna} --> [smokes]>?",
+    ]
+    out = answers(run(lines))
+    got = [a.split(" creationTime")[0] for a in out]
+    stamps = [a.split("Stamp=")[1] for a in out]
+    assert got == ["Answer: <{Anna} --> [cancerous]>.", "Answer: <{Anna} --> [smokes]>."]
+    assert stamps == [
+        "[7,1,8,6,5] Truth: frequency=0.600000, confidence=0.489412",
+        "[7,8,6,5] Truth: frequency=1.000000, confidence=0.906318",
+    ]
+    # as a premise, the ``==>`` detaches first and Anna's smoking is revised with it
+    old = [a.split("Stamp=")[1] for a in answers(run(lines, derived_links_are_premises=True))]
+    assert old[1] == "[7,8,4,2] Truth: frequency=1.000000, confidence=0.921198"

@@ -203,3 +203,43 @@ def test_a_twenty_digit_number_of_cycles_is_too_many_not_a_misspelling() -> None
     assert b"at most" in r.stdout and b"cycles per line" in r.stdout
     assert b"written in digits" not in r.stdout
     assert b"done with 3 additional inference steps" in r.stdout
+
+
+#: a compound operation whose first operation reads where the object is from the input
+_COMPOUND = [
+    "*volume=0",
+    "*motorbabbling=false",
+    "*setopname 1 ^remember",
+    "*setopstdin 1",
+    "*setopname 3 ^goto",
+    "<((tick &/ <({SELF} * ($1 * #1)) --> ^remember>) &/ <({SELF} * #1) --> ^goto>)"
+    " =/> <$1 --> [see]>>.",
+    "tick. :|:",
+    "<fridge --> [see]>! :|:",
+]
+
+
+def test_an_operation_takes_its_result_from_the_input() -> None:
+    # ONA's *setopstdin: after ^remember runs, the shell reads a line 0 and the result,
+    # which binds #1 for ^goto (the lines ONA 0.9.3 prints for it when built with room
+    # for two operations in a decision, MAX_COMPOUND_OP_LEN 2; it stops at 1)
+    data = "\n".join([*_COMPOUND, "0", "(fridge * 10_20)", "<a --> b>?", ""]).encode()
+    out = _nar(["--set", "max_compound_op_len=2"], data).stdout.decode().splitlines()
+    i = out.index("^remember executed with args ({SELF} * (fridge * #1))")
+    assert out[i + 1] == "//Operation result product expected: "
+    assert out[i + 2].startswith(
+        "Input: <({SELF} * (fridge * 10_20)) --> ^remember>. :|: occurrenceTime=3 "
+    )
+    assert out[i + 3] == "^goto executed with args ({SELF} * 10_20)"
+    assert out[i + 4].startswith("Input: <({SELF} * 10_20) --> ^goto>. :|: occurrenceTime=4 ")
+    # the two lines were the operation's, not Narsese: the next line is input again
+    assert "Input: <a --> b>?" in out
+    assert not any(line.startswith("Error:") for line in out)
+
+
+def test_an_operation_whose_result_is_missing_ends_the_compound_operation() -> None:
+    for rest in (["1", "(fridge * 10_20)"], ["0", "(fridge * 10_20"], []):
+        data = "\n".join([*_COMPOUND, *rest, ""]).encode()
+        out = _nar(["--set", "max_compound_op_len=2"], data).stdout.decode().splitlines()
+        assert "//Operation result product expected: " in out
+        assert not any(line.startswith("^goto executed") for line in out)

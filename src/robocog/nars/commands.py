@@ -18,7 +18,7 @@ from typing import TYPE_CHECKING
 
 from .config import MAX_TIME, checked_value
 from .memfile import MemoryFileError, is_operation_name, path_in
-from .narsese import NarseseError
+from .narsese import NarseseError, parse_term
 
 if TYPE_CHECKING:
     from .nar import NAR
@@ -160,6 +160,42 @@ def _run_setopname(nar: NAR, v: object) -> None:
     nar.name_operation(k, name)
 
 
+def _setopstdin(arg: str, nar: NAR) -> int:
+    return parse_int(arg.strip(), 1, nar.config.operations_max, "operation number")
+
+
+def _run_setopstdin(nar: NAR, v: object) -> None:
+    """ONA's ``*setopstdin K``: operation K (by its name now) takes its result from the
+    input. When it runs, it prints ``//Operation result product expected:``, then
+    reads a line ``0`` and a line with a term (e.g. ``(fridge * 10_20)``), which its
+    arguments' second component is unified with (see ``decision``); it fails (the
+    rest of a compound operation is not run) when the input has no such lines."""
+    k: int = v  # type: ignore[assignment]
+    if len(nar.op_names) < k:
+        nar.name_operation(k, f"^op{k}")
+    nar.register_operation(nar.op_names[k - 1], _result_from_input(nar))
+
+
+def _result_from_input(nar: NAR) -> Callable[[object], object]:
+    def read(_arg: object = None) -> object:
+        nar.emit("//Operation result product expected: ")
+        reader = nar.read_input
+        if reader is None:
+            return False
+        sync = reader()
+        if sync is None or sync.strip() != "0":
+            return False
+        line = reader()
+        if line is None:
+            return False
+        try:
+            return parse_term(line.strip())
+        except (NarseseError, RecursionError):
+            return False
+
+    return read
+
+
 def _concepts(nar: NAR, v: object) -> None:
     for c in nar.memory:
         nar.emit(nar.concept_line(c))
@@ -228,6 +264,12 @@ _TABLE: list[Command] = [
     Command("currenttime", _time, _set_time, "set the current time (>= 1)"),
     Command("stampid", _stampid, _set_stampid, "set the next input's stamp id (>= 1)"),
     Command("setopname", _setopname, _run_setopname, "K ^name: name operation K"),
+    Command(
+        "setopstdin",
+        _setopstdin,
+        _run_setopstdin,
+        "K: operation K reads its result from the input (a line 0, then a term)",
+    ),
     Command("concepts", _none, _concepts, "print every concept"),
     Command("stats", _none, _stats, "print the statistics"),
     Command("save", _file, _save, "FILE: save the memory in the memory directory"),
@@ -247,7 +289,6 @@ for _name in (
     "setvalue",
     "space",
     "query",
-    "setopstdin",
     "stampimport",
     "cycling_belief_events",
     "cycling_goal_events",

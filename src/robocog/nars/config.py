@@ -54,6 +54,11 @@ class Config:
     compositions_need_concept: bool = False
     # temporal
     max_sequence_len: int = 2
+    #: the most operations a decision runs (ONA's MAX_COMPOUND_OP_LEN, 1 in 0.9.2 and
+    #: 0.9.3): an implication whose precondition ends in more, ``((a &/ ^x) &/ ^y) =/>
+    #: g``, is not decided on (ONA stops with an assertion there); with more room its
+    #: operations run in turn. Sequences of operations are not learned
+    max_compound_op_len: int = 1
     precondition_consequence_distance: int = 20
     max_sequence_timediff: int = 20
     # space
@@ -98,6 +103,22 @@ class Config:
     print_predictions: bool = True
     #: ``<a =/> b>`` for simultaneous ``a`` and ``b`` (dt 0) may be induced
     allow_concurrent_implications: bool = True
+    #: semantic inference concludes the conjunction ``(A && B)`` of its two premises
+    #: (ONA 0.9.3's rule table; the belief of a concept, the stepping stone by which a
+    #: ``==>`` with a conjunction for its condition meets two beliefs)
+    plain_conjunctions: bool = False
+    #: derived conjunctions (not input ones) are cycled as events too (ONA 0.9.3: kept
+    #: as beliefs only)
+    derived_conjunction_events: bool = True
+    #: a derived conjunction or ``==>`` with an image anywhere in it enters only a
+    #: concept that exists (0.9.3's Memory_AddEvent; 0.9.2 makes the concept)
+    image_compounds_need_concept: bool = False
+    #: a ``==>`` or ``<=>`` belief that only derivations made is a second premise of
+    #: semantic inference (ONA 0.9.3, ALLOW_IMPLICATION_EVENTS 1, makes no concept for
+    #: it: a derived ``==>`` lives in its consequence's links, which the declarative
+    #: pass reads; an implication concept counts as input by the uses an eternal input
+    #: adds, ``eternal_input_usage_boost``)
+    derived_links_are_premises: bool = True
     #: derived beliefs other than temporal implications only enter concepts that exist
     #: (the shell's ``*restrictedconceptcreation``)
     restricted_concept_creation: bool = False
@@ -149,6 +170,10 @@ ONA_VERSIONS: dict[str, dict[str, object]] = {
         "anticipation_projects_precondition": False,
         "anticipation_negated_outcomes": True,
         "print_predictions": False,
+        "plain_conjunctions": True,
+        "derived_conjunction_events": False,
+        "image_compounds_need_concept": True,
+        "derived_links_are_premises": False,
     },
 }
 
@@ -163,6 +188,11 @@ NEWER_PARAMETERS = frozenset(
         "print_predictions",
         "allow_concurrent_implications",
         "restricted_concept_creation",
+        "plain_conjunctions",
+        "derived_conjunction_events",
+        "max_compound_op_len",
+        "image_compounds_need_concept",
+        "derived_links_are_premises",
     }
 )
 
@@ -188,6 +218,7 @@ RANGES: dict[str, tuple[float, float]] = {
     "event_belief_distance": (0, MAX_TIME),
     "similarity_distance": (0.0, 1e6),
     "max_sequence_len": (1, 16),
+    "max_compound_op_len": (1, 16),
     "precondition_consequence_distance": (0, MAX_TIME),
     "max_sequence_timediff": (0, MAX_TIME),
     "concepts_max": (1, 100_000_000),

@@ -51,8 +51,10 @@ def cycle(s: Reasoner) -> None:
     d = decision.process_goals(s)
     if d is not None:
         executed = decision.execute(s, d)
-        memorize.add_event(s, executed, 1.0, is_input=True)
-        cycles(s, 1)
+        while executed is not None:  # (the operations of a compound one in turn)
+            memorize.add_event(s, executed, 1.0, is_input=True)
+            cycles(s, 1)
+            executed = decision.execute_next(s, d)
         decision.assume_untried_failure(s, d)
     # 5. Infer with the selected event and the related concepts' beliefs (Cycle_Inference)
     if popped is not None:
@@ -72,7 +74,7 @@ def semantic_inference(s: Reasoner, e: Event, priority: float) -> None:
     recent event) of each related concept above the adaptive priority threshold, at
     most ``belief_concept_match_target`` of them; conclusions go to ``memorize``."""
     cfg = s.config
-    table = rule_table(cfg.semantic_inference_nal_level)
+    table = rule_table(cfg.semantic_inference_nal_level, cfg.plain_conjunctions)
     now = s.time
     # a stamp counting one input twice refuses every conclusion drawn with it, so
     # such a premise (pair) is skipped whole rather than conclusion by conclusion
@@ -90,7 +92,12 @@ def semantic_inference(s: Reasoner, e: Event, priority: float) -> None:
         ),
     )
     chosen: list[tuple[Concept, float]] = s.memory.related_above(
-        e.term, now, cfg.concept_durability, s.concept_threshold, cfg.belief_concept_match_target
+        e.term,
+        now,
+        cfg.concept_durability,
+        s.concept_threshold,
+        cfg.belief_concept_match_target,
+        0 if cfg.derived_links_are_premises else cfg.eternal_input_usage_boost,
     )
     s.matched_total += len(chosen)
     spikes_alone = cfg.event_pairs_with_events

@@ -40,6 +40,11 @@ class Decision:
     babbled: bool = False
     #: the specialization of a general implication that has no evidence of its own yet
     missing_specific: Term | None = None
+    #: the operations to execute before ``op``, in order, when the implication's
+    #: precondition ends in several, ``((a &/ ^x) &/ ^y)`` (ONA's compound operations)
+    before: tuple[Term, ...] = ()
+    #: how many of ``before`` ran (see :func:`execute_next`)
+    done: int = 0
 
 
 def _measurement(a: Term) -> tuple[str, float] | None:
@@ -112,6 +117,17 @@ def _self_operation(op: Term) -> bool:
 
 def _ground(t: Term) -> bool:
     return not t.has_indep_var and not t.has_dep_var and not t.has_query_var
+
+
+def _strip_operations(pre: Term) -> tuple[Term, tuple[Term, ...]]:
+    """``((a &/ ^x) &/ ^y)`` -> (a, (^x, ^y)): the condition and the operations that
+    end it, in the order they run (ONA's Narsese_GetPreconditionWithoutOp)."""
+    ops: list[Term] = []
+    while pre.op == SEQUENCE and pre.args[1].is_op:
+        ops.append(pre.args[1])
+        pre = pre.args[0]
+    ops.reverse()
+    return pre, tuple(ops)
 
 
 def add_goal(s: Reasoner, g: Event, priority: float, layer: int) -> bool:
@@ -346,6 +362,11 @@ def _best_candidate(s: Reasoner, g: Event, c: Concept) -> Decision | None:
                 pre, op = split_precondition(subj)
                 if op is None:
                     continue
+                before: tuple[Term, ...] = ()
+                if pre.op == SEQUENCE and pre.args[1].is_op:
+                    pre, before = _strip_operations(pre)
+                    if len(before) >= cfg.max_compound_op_len:
+                        continue  # more operations than a decision runs
                 spikes = _preconditions(s, pre)
                 if not spikes:
                     continue  # (most links: nothing to deduce from)
@@ -353,12 +374,19 @@ def _best_candidate(s: Reasoner, g: Event, c: Concept) -> Decision | None:
                 for spike in spikes:
                     b2 = unify(pre, spike.term) or {}
                     op_g = apply(op, b2)
-                    if not _ground(op_g) or not _self_operation(op_g):
+                    first: tuple[Term, ...] = ()
+                    if before:
+                        # a compound operation: a dependent variable of an argument
+                        # may be bound by what an earlier operation returns
+                        first = tuple([apply(x, b2) for x in before])
+                        if not _compound_runs(first + (op_g,)):
+                            continue
+                    elif not _ground(op_g) or not _self_operation(op_g):
                         continue
                     base = apply(imp.term, bind) if bind else imp.term
                     spec = apply(base, b2) if b2 else base
                     missing = None
-                    if imp.term.has_var:
+                    if imp.term.has_var and not (before and not _ground(spec)):
                         if not _ground(spec):
                             continue
                         own = _specific(s, spec, opi)
@@ -379,7 +407,9 @@ def _best_candidate(s: Reasoner, g: Event, c: Concept) -> Decision | None:
                         or desire > best.desire
                         or (desire == best.desire and cx < best_cx)
                     ):
-                        best = Decision(desire, op_g, imp, spike, missing_specific=missing)
+                        best = Decision(
+                            desire, op_g, imp, spike, missing_specific=missing, before=first
+                        )
                         best_cx = cx
     if best is None or best.desire < cfg.decision_threshold:
         return None
@@ -498,13 +528,41 @@ def _derive_goal(s: Reasoner, g: Event, priority: float, layer: int) -> None:
 
 
 # -------------------------------------------------------------- execution
-def execute(s: Reasoner, d: Decision) -> Event:
+def _compound_runs(ops: tuple[Term, ...]) -> bool:
+    """Each operation of a compound one is this system's, with no variable in its
+    arguments but dependent ones (which an earlier operation's result may bind)."""
+    for x in ops:
+        if x.has_indep_var or x.has_query_var or not _self_operation(x):
+            return False
+    return True
+
+
+def execute(s: Reasoner, d: Decision) -> Event | None:
     """Decision_Execute: forget the cycling goals (no residue actions), run the
-    operation and tell who listens; the event of the execution, which the caller feeds
-    back as input, is returned (it takes the next stamp id)."""
+    operation (the first of a compound one) and tell who listens; the event of the
+    execution, which the caller feeds back as input, is returned (it takes the next
+    stamp id). A compound operation's next is run by :func:`execute_next`."""
     for q in s.goal_layers:
         q.clear()
-    op = d.op
+    return _run(s, d, d.before[0] if d.before else d.op)
+
+
+def execute_next(s: Reasoner, d: Decision) -> Event | None:
+    """The next operation of a compound decision, once the event of the last one was
+    fed back (None when all ran, or when one's result did not fit its arguments)."""
+    if d.done == 0 or d.done > len(d.before):
+        return None
+    return _run(s, d, d.before[d.done] if d.done < len(d.before) else d.op)
+
+
+def _run(s: Reasoner, d: Decision, op: Term) -> Event | None:
+    """Run ``op``; an operation that returns a term has that for its result, which
+    the second component of its arguments ``({SELF} * X)``, when it has variables, is
+    unified with: the bindings go into its event and into the operations after it
+    (ONA's feedback substitution, which ``*setopstdin`` reads from the input). An
+    operation of a compound one that returns False failed. None (no event, and the
+    rest of a compound operation is not run) for a failure or a result that does not
+    unify."""
     if op.op is None:
         name, arg, shown = op.name, None, ""
     else:
@@ -512,10 +570,30 @@ def execute(s: Reasoner, d: Decision) -> Event:
         shown = str(arg)
     emit(s, f"{name} executed with args {shown}")
     fn = s.operations.get(name)
+    result = None
     if fn is not None:
-        fn(arg)
+        result = fn(arg)
     for cb in s.execution_cbs:
         cb(name, arg)
+    if d.before:
+        d.done += 1
+    if result is False and d.before:  # failed (ONA's feedback.failed): no event, no more
+        d.done = len(d.before) + 1
+        return None
+    if (
+        isinstance(result, Term)
+        and arg is not None
+        and arg.op == "*"
+        and len(arg.args) == 2
+        and arg.args[1].has_var
+    ):
+        bind = unify(arg.args[1], result)
+        if bind is None:
+            d.done = len(d.before) + 1  # the rest is not run
+            return None
+        op = apply(op, bind)
+        d.before = tuple([apply(x, bind) for x in d.before])
+        d.op = apply(d.op, bind)
     e = Event(
         op,
         BELIEF,
@@ -552,4 +630,11 @@ def assume_untried_failure(s: Reasoner, d: Decision) -> None:
         )
 
 
-__all__ = ["Decision", "add_goal", "assume_untried_failure", "execute", "process_goals"]
+__all__ = [
+    "Decision",
+    "add_goal",
+    "assume_untried_failure",
+    "execute",
+    "execute_next",
+    "process_goals",
+]

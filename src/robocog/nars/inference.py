@@ -22,14 +22,16 @@ from .terms import CONJUNCTION, EQUIVALENCE, IMPLICATION, Term, compound
 from .truth import Truth
 from .unify import apply, unify
 
-_RULE_TABLES: dict[int, RuleTable] = {}
+_RULE_TABLES: dict[tuple[int, bool], RuleTable] = {}
 
 
-def rule_table(level: int) -> RuleTable:
-    """The rule table of NAL level ``level`` (built once, then shared)."""
-    t = _RULE_TABLES.get(level)
+def rule_table(level: int, plain_conjunctions: bool = False) -> RuleTable:
+    """The rule table of NAL level ``level``, with ONA 0.9.3's ``A, B |- (A && B)``
+    when ``plain_conjunctions`` (built once, then shared)."""
+    key = (level, plain_conjunctions)
+    t = _RULE_TABLES.get(key)
     if t is None:
-        t = _RULE_TABLES[level] = RuleTable(level, MATCHERS)
+        t = _RULE_TABLES[key] = RuleTable(level, MATCHERS, plain_conjunctions)
     return t
 
 

@@ -2709,6 +2709,14 @@ def r132(t1: Term, t2: Term, v1: Truth, v2: Truth, emit: Emit) -> None:
 
 
 def r133(t1: Term, t2: Term, v1: Truth, v2: Truth, emit: Emit) -> None:
+    """A, B |- (A && B) (intersection, NAL-6)"""
+    A: Term = t1
+    B: Term = t2
+    k1 = make("&&", (A, B))
+    emit(k1, tf.intersection(v1, v2), False)
+
+
+def r134(t1: Term, t2: Term, v1: Truth, v2: Truth, emit: Emit) -> None:
     """<(A * C) --> M>, (<(A * B) --> R> && <(B * C) --> S>) |- <(<(A * B) --> R> && <(B * C) --> S>) ==> <(A * C) --> M>> (induction, NAL-6)"""
     if t1.op != "-->" or len(t1.args) != 2:
         return
@@ -2895,4 +2903,5 @@ MATCHERS = (
     r131,
     r132,
     r133,
+    r134,
 )

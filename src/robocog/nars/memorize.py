@@ -26,6 +26,7 @@ from .terms import (
     CONJUNCTION,
     EQUIVALENCE,
     F_COMPOSED,
+    F_IMAGE,
     F_IMAGE_ARGUMENT,
     IMPLICATION,
     TEMPORAL_IMPLICATION,
@@ -77,9 +78,14 @@ def _store(
     op = e.term.op
     # (connectors by identity: see ``terms.CONNECTORS``)
     if op is not TEMPORAL_IMPLICATION and (
-        is_input or (op is not IMPLICATION and op is not EQUIVALENCE)
+        is_input
+        or (
+            op is not IMPLICATION
+            and op is not EQUIVALENCE
+            and (op is not CONJUNCTION or s.config.derived_conjunction_events)
+        )
     ):
-        added = _queue(s, e, priority)  # only input implications become events
+        added = _queue(s, e, priority)  # only input implications (and conjunctions) cycle
     if added and not is_input:
         s.stats["derived"] += 1
         if shows(s, priority):
@@ -188,9 +194,16 @@ def add_derived(
         and term not in s.memory.concepts
     ):
         return  # compositions are only kept where their concept already exists
+    op = term.op
+    if (
+        cfg.image_compounds_need_concept
+        and (op is CONJUNCTION or op is IMPLICATION)
+        and term.flags & F_IMAGE
+        and term not in s.memory.concepts
+    ):
+        return  # ONA 0.9.3: a conjunction or ``==>`` with an image in it
     if rejected(term):
         return
-    op = term.op
     if (op is IMPLICATION or op is EQUIVALENCE) and not term.has_indep_var:
         # ONA refuses this only for conclusions with variables introduced: a ground
         # ``==>`` (from a conditional deduction) it keeps, which its 0.9.3 pass uses

@@ -69,5 +69,5 @@ cdef class Memory:
 @cython.locals(chosen=list, seen=set, c=Concept, cp=double, own=Concept, d=dict, a=Term)
 cpdef list _related_above(
     dict concepts, dict atom_index, Term term, long now, double durability,
-    double threshold, Py_ssize_t most
+    double threshold, Py_ssize_t most, long links_least_uses=*
 )

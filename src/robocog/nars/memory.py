@@ -16,7 +16,7 @@ from heapq import heapify, heappop, heapreplace
 from .event import Event
 from .stamp import Size
 from .table import Table
-from .terms import Term
+from .terms import EQUIVALENCE, IMPLICATION, Term
 from .truth import Cycle
 
 #: a number of uses (an alias, so that the compiled engine can declare it a C long)
@@ -467,17 +467,33 @@ class Memory:
                         yield c
 
     def related_above(
-        self, term: Term, now: Cycle, durability: float, threshold: float, most: Size
+        self,
+        term: Term,
+        now: Cycle,
+        durability: float,
+        threshold: float,
+        most: Size,
+        links_least_uses: Count = 0,
     ) -> list[tuple[Concept, float]]:
         """The first ``most`` concepts of :meth:`related` whose priority as of ``now``
         (decayed by ``durability``) is not below ``threshold``, each with that priority:
-        the concepts whose beliefs semantic inference takes as second premises.
+        the concepts whose beliefs semantic inference takes as second premises. With
+        ``links_least_uses``, a ``==>``/``<=>`` concept used fewer times (one that no
+        eternal input made, whose uses count the input boost) is passed over, not
+        counted.
 
         :meth:`related` and a test per concept, in one loop: resuming the generator
         cost more than the test, for the seventy-odd concepts of a cycle.
         """
         return _related_above(
-            self.concepts, self.atom_index, term, now, durability, threshold, most
+            self.concepts,
+            self.atom_index,
+            term,
+            now,
+            durability,
+            threshold,
+            most,
+            links_least_uses,
         )
 
 
@@ -495,6 +511,7 @@ def _related_above(
     durability: float,
     threshold: float,
     most: Size,
+    links_least_uses: Count = 0,
 ) -> list[tuple[Concept, float]]:
     """:meth:`Memory.related_above` over the memory's concepts and atom index (a
     function, so that the compiled engine runs its loop with C types)."""
@@ -517,6 +534,13 @@ def _related_above(
                 if c in seen:
                     continue
                 seen.add(c)
+                if (
+                    links_least_uses
+                    and c.term.n_imp
+                    and c.use_count < links_least_uses
+                    and (c.term.op is IMPLICATION or c.term.op is EQUIVALENCE)
+                ):
+                    continue  # a ``==>``/``<=>`` only derivations made
                 cp = c.priority_at(now, durability)
                 if cp < threshold:
                     continue

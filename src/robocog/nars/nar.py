@@ -39,6 +39,9 @@ class NAR(Reasoner):
     #: asked between slices of a cycles line; true ends the line early (the shell sets
     #: it to stop on SIGINT and SIGTERM, the inspector's console to its stop command)
     stop_requested: Callable[[], bool] | None = None
+    #: the next line of input, None at its end: where an operation marked with
+    #: ``*setopstdin`` reads its result (the shell sets it to the rest of its input)
+    read_input: Callable[[], str | None] | None = None
 
     def __init__(self, seed: int = 666, ona: str = "0.9.2", **config_overrides: object) -> None:
         # ``ona``: whose behaviour to follow, ONA 0.9.2's (the papers') or 0.9.3's
@@ -47,7 +50,7 @@ class NAR(Reasoner):
         # the rule table, shared by the process's reasoners, is built here if it is not
         # yet: building it takes tens of milliseconds, which would stall a robot's first
         # reasoning cycle
-        rule_table(self.config.semantic_inference_nal_level)
+        rule_table(self.config.semantic_inference_nal_level, self.config.plain_conjunctions)
 
     # ------------------------------------------------------------------ state
     def reset(self) -> None:
@@ -86,7 +89,12 @@ class NAR(Reasoner):
         self.execution_cbs.append(cb)
 
     def register_operation(self, name: str, fn: Callable[[Term | None], object]) -> None:
-        """Make ``name`` (e.g. ``^pick``) executable, calling ``fn(argument)`` when it is."""
+        """Make ``name`` (e.g. ``^pick``) executable, calling ``fn(argument)`` when it is.
+
+        What ``fn`` returns is ignored, except that a term is the operation's result
+        where its argument ``({SELF} * X)`` has variables (``X`` is unified with it, as
+        ONA's ``*setopstdin`` operations do), and that False, in a compound operation,
+        means it failed and the rest is not run."""
         if not name.startswith("^"):
             raise ValueError(f"operation names start with '^': {name!r}")
         if name not in self.op_names:

@@ -45,6 +45,19 @@ from .truth import Truth
 
 TruthFn = Callable[[Truth, Truth], Truth]
 
+#: ONA 0.9.3's row ``A, B |- (A && B)``: any two premises give their conjunction, the
+#: stepping stone to transitivity (a ``==>`` whose condition is a conjunction takes it in
+#: 0.9.3's declarative pass). 0.9.2's table has it for two relations only, ``<(A * B) -->
+#: R>, <(B * C) --> S>``; only a table made with ``plain_conjunctions`` has the row.
+PLAIN_CONJUNCTION: tuple[str, str | None, str, str, bool, int] = (
+    "A",
+    "B",
+    "(A && B)",
+    "intersection",
+    False,
+    6,
+)
+
 # (premise1, premise2 or None, conclusion, truth function, introduce variables, min NAL level)
 RULES: list[tuple[str, str | None, str, str, bool, int]] = [
     # NAL-1 syllogisms
@@ -211,8 +224,7 @@ RULES: list[tuple[str, str | None, str, str, bool, int]] = [
         True,
         6,
     ),
-    # ONA also has ``A, B |- (A && B)``, but never queues such plain conjunctions;
-    # they only matter as stepping stones, which the var-intro rules above provide.
+    PLAIN_CONJUNCTION,
     (
         "<(A * C) --> M>",
         "(<(A * B) --> R> && <(B * C) --> S>)",
@@ -356,9 +368,12 @@ class RuleTable:
     conclusions, so its fields are read as C struct members and its methods called in C.
     """
 
-    def __init__(self, level: int, matchers: Sequence[Matcher]) -> None:
+    def __init__(
+        self, level: int, matchers: Sequence[Matcher], plain_conjunctions: bool = False
+    ) -> None:
         """The rules of NAL ``level`` and below, each with its matcher from
-        ``matchers`` (one per row of the table, in order: ``matchers.MATCHERS``)."""
+        ``matchers`` (one per row of the table, in order: ``matchers.MATCHERS``);
+        :data:`PLAIN_CONJUNCTION` only with ``plain_conjunctions``."""
         self.single: dict[str, list[Rule]] = {}
         self.double: dict[tuple[str, str], list[Rule]] = {}
         self._cache: dict[tuple[str | None, str | None], list[Rule]] = {}
@@ -371,8 +386,9 @@ class RuleTable:
         self._singles: dict[Term, tuple[Conclusion, ...]] = {}
         if len(matchers) != len(RULES):
             raise ValueError(f"{len(matchers)} matchers for {len(RULES)} rules")
-        for (p1, p2, c, fn, vi, lvl), matcher in zip(RULES, matchers, strict=True):
-            if lvl > level:
+        for row, matcher in zip(RULES, matchers, strict=True):
+            p1, p2, c, fn, vi, lvl = row
+            if lvl > level or (row is PLAIN_CONJUNCTION and not plain_conjunctions):
                 continue
             r = Rule(
                 parse_pattern(p1),

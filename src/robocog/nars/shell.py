@@ -304,6 +304,17 @@ def _session(nar: NAR, args: argparse.Namespace) -> int:
     signals.install()
     lines = iter(sys.stdin.buffer)
     lineno = 0
+
+    def read_input() -> str | None:
+        # an operation's result (``*setopstdin``): the next lines belong to it
+        nonlocal lineno
+        raw = next(lines, None)
+        if raw is None:
+            return None
+        lineno += 1
+        return _decoded(raw, lineno)[0]
+
+    nar.read_input = read_input
     try:
         while signals.received is None:
             signals.reading = True
@@ -321,6 +332,7 @@ def _session(nar: NAR, args: argparse.Namespace) -> int:
         pass
     signals.ignore()
     nar.stop_requested = None
+    nar.read_input = None
     code = 0 if signals.received is None else 128 + signals.received
     if args.save:
         try:
