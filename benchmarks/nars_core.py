@@ -217,12 +217,14 @@ def main(argv: list[str] | None = None) -> int:
         "--modes",
         default=",".join(ONA_MODES),
         help="robocog's ONA versions to run (`robocog nar --ona V`), comma-separated "
-        "(default: %(default)s; 0.9.3 is the shell's default)",
+        "(default: %(default)s; 0.9.3 is the shell's default); a version may carry "
+        "parameters after a colon, `0.9.3:declarative_pass_disjoint_evidence=true`, "
+        "given to that run as `--set`",
     )
     args = ap.parse_args(argv)
     args.modes = [m.strip() for m in args.modes.split(",") if m.strip()]
     for m in args.modes:
-        if m not in ONA_MODES:
+        if m.split(":")[0] not in ONA_MODES:
             ap.error(f"--modes: {m!r} is not one of {', '.join(ONA_MODES)}")
     if args.stream:
         return stream(args.stream, args.seed, args.capacity)
@@ -236,12 +238,19 @@ def main(argv: list[str] | None = None) -> int:
     text = "\n".join(lines) + "\n"
 
     rows = []
+    marked: list[str] = []  # the legend of the runs given parameters
     for mode in args.modes:
-        ours = [sys.executable, "-m", "robocog", "nar", "--quiet", "--ona", mode]
+        version, *settings = mode.split(":")
+        ours = [sys.executable, "-m", "robocog", "nar", "--quiet", "--ona", version]
+        for setting in settings:
+            ours += ["--set", setting]
         if args.capacity:
             ours += ["--set", f"concepts_max={args.capacity}"]
         w, cpu, rss, out = run(ours, text, args.timeout)
-        rows.append((f"robocog {mode}", w, cpu, rss, answers(out, questions)))
+        if settings:
+            marked.append(f"{'*' * (len(marked) + 1)} --set {' --set '.join(settings)}")
+            version += "*" * len(marked)
+        rows.append((f"robocog {version}", w, cpu, rss, answers(out, questions)))
     ona = shutil.which("NAR")
     if ona and not args.no_ona:
         w, cpu, rss, out = run([ona, "shell"], text, args.timeout)
@@ -260,6 +269,8 @@ def main(argv: list[str] | None = None) -> int:
     print(f"{'system':<16} {'wall s':>8} {'CPU s':>8} {'RSS MB':>8} {'answered':>9}")
     for name, w, cpu, rss, n in rows:
         print(f"{name:<16} {w:8.2f} {cpu:8.2f} {rss:8.1f} {n:5d}/{len(questions)}")
+    for line in marked:
+        print(line)
     ours_rows = [r for r in rows if r[0].startswith("robocog")]
     for peer in rows:
         for mine in ours_rows:

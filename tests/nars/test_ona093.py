@@ -317,3 +317,25 @@ def test_a_derived_implication_is_no_premise_of_semantic_inference() -> None:
     # as a premise, the ``==>`` detaches first and Anna's smoking is revised with it
     old = [a.split("Stamp=")[1] for a in answers(run(lines, derived_links_are_premises=True))]
     assert old[1] == "[7,8,4,2] Truth: frequency=1.000000, confidence=0.921198"
+
+
+def test_the_pass_deduces_from_shared_evidence_unless_told_not_to() -> None:
+    """ONA 0.9.3's declarative pass deduces through a link made from the belief it meets
+    (``<b --> a>`` with a stamp counting inputs 2 and 3 twice); with
+    ``declarative_pass_disjoint_evidence`` it refuses those pairs, as the other
+    inferences do, and only those."""
+    lines = ["*volume=100", "<a --> b>.", "<b --> c>.", "<c --> d>.", "<d --> e>.", "20"]
+
+    def stamps(out: list[str]) -> list[list[str]]:
+        found = []
+        for line in out:
+            if line.startswith("Derived:") and "Stamp=[" in line:
+                found.append(line.split("Stamp=[")[1].split("]")[0].split(","))
+        return found
+
+    faithful = stamps(run(lines))
+    disjoint = stamps(run(lines, declarative_pass_disjoint_evidence=True))
+    assert any(len(set(s)) < len(s) for s in faithful)
+    assert disjoint and all(len(set(s)) == len(s) for s in disjoint)
+    # what does not repeat evidence is derived alike
+    assert [s for s in faithful if len(set(s)) == len(s)][:5] == disjoint[:5]

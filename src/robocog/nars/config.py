@@ -119,6 +119,13 @@ class Config:
     #: pass reads; an implication concept counts as input by the uses an eternal input
     #: adds, ``eternal_input_usage_boost``)
     derived_links_are_premises: bool = True
+    #: the declarative pass deduces only from a belief and a link whose evidence is
+    #: disjoint, as every other inference does (ONA 0.9.3 and 0.9.2 do not check it
+    #: there, marked "TODO STAMP" in Decision_Anticipate: a deduction from shared
+    #: evidence then revises or replaces a belief, input ones too, with a stamp that
+    #: repeats an input, which later inference and answers refuse). Off in both
+    #: presets; on, a large taxonomy keeps its answers in 0.9.3 mode
+    declarative_pass_disjoint_evidence: bool = False
     #: derived beliefs other than temporal implications only enter concepts that exist
     #: (the shell's ``*restrictedconceptcreation``)
     restricted_concept_creation: bool = False
@@ -193,6 +200,7 @@ NEWER_PARAMETERS = frozenset(
         "max_compound_op_len",
         "image_compounds_need_concept",
         "derived_links_are_premises",
+        "declarative_pass_disjoint_evidence",
     }
 )
 

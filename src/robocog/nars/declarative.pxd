@@ -5,7 +5,7 @@
 from robocog.nars.terms cimport Term
 from robocog.nars.truth cimport Truth, expectation
 from robocog.nars cimport truth as tf
-from robocog.nars.stamp cimport merge
+from robocog.nars.stamp cimport merge, overlap
 from robocog.nars.event cimport Event, Implication, revised_or_chosen
 from robocog.nars.unify cimport apply, unify
 from robocog.nars.state cimport Reasoner, emit, shows

@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING
 from . import truth as tf
 from .event import BELIEF, ETERNAL, Event, Implication, revised_or_chosen
 from .memory import Concept
-from .stamp import merge
+from .stamp import merge, overlap
 from .state import Reasoner, emit, shows
 from .terms import NEGATION, Term
 from .truth import Truth, expectation
@@ -120,6 +120,8 @@ def forward_eternal(s: Reasoner, on_new_belief: Callable[[Reasoner, Concept], No
     size = cfg.stamp_size
     least = cfg.min_confidence
     negated = cfg.anticipation_negated_outcomes
+    # (ONA 0.9.3 deduces here from premises that share evidence; opt-in refusal)
+    disjoint = cfg.declarative_pass_disjoint_evidence
     show = shows(s, 1.0)
     # the fresh beliefs that some link's condition may take, with the links' positions
     # (each fresh belief meets the links in their order, the beliefs in their order)
@@ -183,6 +185,8 @@ def forward_eternal(s: Reasoner, on_new_belief: Callable[[Reasoner, Concept], No
                 found = None if target is None else _deduction(b, lb, target, least, size, negated)
                 known[link] = (lb, found)
             if found is not None:
+                if disjoint and overlap(b.stamp, lb.stamp):
+                    continue
                 lt = lb.creation_time
                 derived.append((found, bt if bt > lt else lt))
     # the same belief would be left as it is again (a revision or choice reads only
