@@ -227,7 +227,7 @@ class QboRos2Body:
             return Outcome.failure(f"halted: {self._halted}")
         try:
             if isinstance(command, Look):
-                return self._look(command.direction)
+                return self._look(command)
             if isinstance(command, Forward):
                 return self._forward(command.distance)
             if isinstance(command, Turn):
@@ -344,17 +344,14 @@ class QboRos2Body:
                 self._lock.wait(0.05)
         return None
 
-    def _look(self, direction: str) -> Outcome:
+    def _look(self, look: Look) -> Outcome:
         vision = self.vision
         if vision is None:
             return Outcome.failure("this body was given no image classifier")
         pans = dict(zip(("left", "front", "right"), vision.PANS, strict=True))
-        if direction == "around":
-            names = list(pans)
-        elif direction in pans:
-            names = [direction]
-        else:
-            return Outcome.failure(f"unknown look direction {direction!r}")
+        names = look.views(pans)
+        if names is None:
+            return Outcome.failure(f"unknown look direction {look.direction!r}")
         if self.classifier is None:
             self.classifier = vision.shared_classifier()
         found: list[Detection] = []

@@ -6,6 +6,7 @@ them into events, a BDI agent completes the pending action with them).
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import dataclass
 from enum import Enum
 
@@ -53,6 +54,14 @@ class Look:
     """Point the camera (or the head) in a direction: left, front, right, or an angle name."""
 
     direction: str
+
+    def views(self, names: Iterable[str]) -> list[str] | None:
+        """The views of ``names`` (a head's pans, in order) this look takes: all of them
+        for ``around``, the one named, or None for a direction the head has not."""
+        names = list(names)
+        if self.direction == "around":
+            return names
+        return [self.direction] if self.direction in names else None
 
 
 @dataclass(frozen=True, slots=True)

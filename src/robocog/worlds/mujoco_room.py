@@ -33,7 +33,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from robocog.robot.commands import Outcome
+from robocog.robot.commands import Look, Outcome
 from robocog.robot.percepts import Detection, Pose
 from robocog.worlds.physics.gl import choose_gl
 from robocog.worlds.room import RoomBody, Seen, Target, TrajectoryPoint
@@ -347,14 +347,11 @@ class MujocoRoom(RoomBody):
                         what = "wall"
         return what
 
-    def _look(self, direction: str) -> Outcome:
+    def _look(self, look: Look) -> Outcome:
         pans = dict(zip(("left", "front", "right"), vision.PANS, strict=True))
-        if direction == "around":
-            images = list(pans)
-        elif direction in pans:
-            images = [direction]
-        else:
-            return Outcome.failure(f"unknown look direction {direction!r}")
+        images = look.views(pans)
+        if images is None:
+            return Outcome.failure(f"unknown look direction {look.direction!r}")
         self.looks += 1
         self.detections = []
         self.last_seen = {}

@@ -171,7 +171,7 @@ class RoomBody:
         """Carry out a Look, Forward or Turn; any other command is refused."""
         self.commands += 1  # type: ignore[attr-defined]
         if isinstance(command, Look):
-            outcome = self._look(command.direction)  # type: ignore[attr-defined]
+            outcome = self._look(command)  # type: ignore[attr-defined]
         elif isinstance(command, Forward):
             outcome = self._forward(command.distance)  # type: ignore[attr-defined]
         elif isinstance(command, Turn):
@@ -360,14 +360,11 @@ class RoomWorld(RoomBody):
         axis = self.theta + side * c.sonar_angle
         return [(sx, sy, axis + k * c.sonar_cone) for k in SONAR_SPREAD]
 
-    def _look(self, direction: str) -> Outcome:
+    def _look(self, look: Look) -> Outcome:
         c = self.config
-        if direction == "around":
-            images = list(HEAD_PANS)
-        elif direction in HEAD_PANS:
-            images = [direction]
-        else:
-            return Outcome.failure(f"unknown look direction {direction!r}")
+        images = look.views(HEAD_PANS)
+        if images is None:
+            return Outcome.failure(f"unknown look direction {look.direction!r}")
         self.areas = [area for image in images for area in self._image(image)]
         self.clock += c.look_seconds * len(images)
         self.detections = []
