@@ -13,17 +13,7 @@ import pytest
 from robocog.bdi import Agent, ParseError
 from robocog.bdi.containers import QueueTerm, SetTerm
 from robocog.bdi.terms import Literal
-
-
-def out(body: str, beliefs: str = "") -> list[str]:
-    printed: list[str] = []
-    Agent(
-        f"{beliefs}\n!s.\n+!s <- {body}.\n-!s[error(E)] <- .print(failed, E).",
-        "t",
-        printer=lambda n, t: printed.append(t),
-    ).run(10_000)
-    return printed
-
+from tests.bdi.test_stdlib import out
 
 SET_BODY = (
     '.set.create(S); .set.add(S, b); .set.add_all(S, [c, a, 3, "s", [1], f(x)]); '
