@@ -164,19 +164,36 @@ def run(args: argparse.Namespace) -> int:
     return code
 
 
-def _qbo_body(args: argparse.Namespace, config: BridgeConfig) -> Any:
-    """The Q.bo's own body (camera head, ultrasonic sensors) over ROS 2; its images are
-    classified by the physical room's SVMs, loaded by name: the bridges know no world."""
+def _ros2_setup(args: argparse.Namespace) -> None:
+    """What every ROS 2 body needs first: loopback if asked, and cyclonedds (a one-line
+    error without it)."""
     if args.loopback:
         from robocog.bridges.ros2.loopback import loopback_unless_configured
 
         loopback_unless_configured()
     try:
-        from robocog.bridges.qbo import QboRos2Body
+        importlib.import_module("cyclonedds")
     except ImportError as exc:
         raise ImportError(
             "ROS 2 needs the cyclonedds package: pip install 'robocog[ros2]'"
         ) from exc
+
+
+def _recorder(args: argparse.Namespace) -> Any:
+    """The MCAP recorder of ``--record``, or None."""
+    if args.record is None:
+        return None
+    from robocog.bridges.ros2.record import Recorder
+
+    return Recorder(args.record)
+
+
+def _qbo_body(args: argparse.Namespace, config: BridgeConfig) -> Any:
+    """The Q.bo's own body (camera head, ultrasonic sensors) over ROS 2; its images are
+    classified by the physical room's SVMs, loaded by name: the bridges know no world."""
+    _ros2_setup(args)
+    from robocog.bridges.qbo import QboRos2Body
+
     try:
         importlib.import_module("sklearn")
         vision = importlib.import_module("robocog.worlds.physics.room_vision")
@@ -184,39 +201,22 @@ def _qbo_body(args: argparse.Namespace, config: BridgeConfig) -> Any:
         raise ImportError(
             f"the Q.bo's vision needs the physics extra: pip install 'robocog[physics]' ({exc})"
         ) from exc
-    recorder = None
-    if args.record is not None:
-        from robocog.bridges.ros2.record import Recorder
-
-        recorder = Recorder(args.record)
     body = QboRos2Body(
         args.domain,
         config,
         namespace=getattr(args, "namespace", ""),
         vision=vision,
-        recorder=recorder,
+        recorder=_recorder(args),
     )
     return body
 
 
 def _make_link(args: argparse.Namespace, config: BridgeConfig) -> Any:
     if args.middleware == "ros2":
-        if args.loopback:
-            from robocog.bridges.ros2.loopback import loopback_unless_configured
+        _ros2_setup(args)
+        from robocog.bridges.ros2.link import Ros2Link
 
-            loopback_unless_configured()
-        try:
-            from robocog.bridges.ros2.link import Ros2Link
-        except ImportError as exc:
-            raise ImportError(
-                "ROS 2 needs the cyclonedds package: pip install 'robocog[ros2]'"
-            ) from exc
-        recorder = None
-        if args.record is not None:
-            from robocog.bridges.ros2.record import Recorder
-
-            recorder = Recorder(args.record)
-        return Ros2Link(config, args.domain, recorder=recorder)
+        return Ros2Link(config, args.domain, recorder=_recorder(args))
     from robocog.bridges.ros1.link import Ros1Link
 
     return Ros1Link(config, python=args.ros1_python)
